@@ -1,0 +1,172 @@
+#include "cli/cli.hpp"
+
+#include "evolution/simulation.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <variant>
+
+namespace gbssn1d {
+
+namespace {
+
+/// One run parameter: its flag (without "--"), where it lives in Params, group and help.
+/// The same table drives the CLI11 options and the config file, so they cannot drift apart.
+struct ParamSpec {
+  const char* name;
+  std::variant<int Params::*, double Params::*, std::string Params::*, bool Params::*> member;
+  const char* group;
+  const char* help;
+};
+
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs{
+      {"N", &Params::N, "Grid", "number of cells"},
+      {"rmax", &Params::rmax, "Grid", "outer radius (M)"},
+      {"grid", &Params::grid, "Grid", "radial grid: uniform | sinh"},
+      {"dr-inner", &Params::dr_inner, "Grid", "innermost cell width of the sinh grid (M)"},
+      {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
+      {"M", &Params::M, "Initial data", "black-hole mass"},
+      {"lapse0", &Params::lapse0, "Initial data",
+       "initial lapse of the wormhole: one | precollapsed"},
+      {"eta", &Params::eta, "Gauge", "Gamma-driver damping eta (1/M); default 2/M"},
+      {"advective-shift", &Params::advective_shift, "Gauge",
+       "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
+      {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
+       "1+log without advection: d_t alpha = -2 alpha K"},
+      {"cfl", &Params::cfl, "Numerics", "dt = cfl * smallest spacing, in (0, 1]"},
+      {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
+      {"tmax", &Params::tmax, "Time", "final time (M); 0 writes the initial data only"},
+      {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat (M)"},
+      {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat (M)"},
+      {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms (M)"},
+      {"norm-rmax", &Params::norm_rmax, "Diagnostics",
+       "outer radius of the exterior norms (M); default min(10 M, rmax/2)"},
+      {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
+      {"force", &Params::force, "Output", "write into an existing non-empty --out"},
+  };
+  return specs;
+}
+
+std::string value_text(const Params& p, const ParamSpec& spec) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        using T = std::decay_t<decltype(p.*member)>;
+        if constexpr (std::is_same_v<T, std::string>)
+          return fmt::format("\"{}\"", p.*member);
+        else if constexpr (std::is_same_v<T, bool>)
+          return p.*member ? "true" : "false";
+        else
+          return fmt::format("{}", p.*member); // shortest representation that round-trips
+      },
+      spec.member);
+}
+
+void add_options(CLI::App& app, Params& p) {
+  for (const auto& spec : param_specs()) {
+    const std::string flag = std::string("--") + spec.name;
+    std::visit(
+        [&](auto member) {
+          using T = std::decay_t<decltype(p.*member)>;
+          CLI::Option* opt;
+          if constexpr (std::is_same_v<T, bool>)
+            opt = app.add_flag(flag, p.*member, spec.help);
+          else
+            opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
+          opt->group(spec.group);
+        },
+        spec.member);
+  }
+}
+
+int evolve(Params p, bool print_config) {
+  resolve_defaults(p);
+  validate(p);
+  if (print_config) {
+    fmt::print("{}", config_text(p));
+    return 0;
+  }
+  validate_output_dir(p);
+
+  Simulation sim(p); // initial data are computed before anything is written
+  const std::filesystem::path dir(p.out);
+  std::filesystem::create_directories(dir);
+  const std::string config = config_text(p);
+  {
+    std::ofstream cfg(dir / "config.toml");
+    cfg << header_text("") << config;
+  }
+  Output out(dir, config);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    sim.run(&out);
+  } catch (const NonFiniteError& e) {
+    fmt::print(stderr, "gbssn1d: error: {}; output up to the last finite state kept in {}\n",
+               e.what(), p.out);
+    return 3;
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(stderr, "gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n",
+             sim.time(), wall, sim.schedule().n_steps, sim.rhs().evaluations());
+  return 0;
+}
+
+} // namespace
+
+std::string config_text(const Params& p) {
+  std::string text;
+  for (const auto& spec : param_specs())
+    text += fmt::format("{} = {}\n", spec.name, value_text(p, spec));
+  return text;
+}
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
+               "black hole"};
+  app.set_version_flag("--version", std::string("gbssn1d ") + GBSSN1D_VERSION);
+  app.require_subcommand(1);
+
+  Params params;
+  bool print_config = false;
+  CLI::App* evolve_cmd =
+      app.add_subcommand("evolve", "evolve one black hole and write ASCII output");
+  add_options(*evolve_cmd, params);
+  evolve_cmd->set_config("--config", "", "read parameters from a TOML/INI file (flags override)");
+  evolve_cmd->allow_config_extras(CLI::config_extras_mode::error);
+  evolve_cmd->add_flag("--print-config", print_config,
+                       "print the effective configuration (a valid --config file) and exit");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    fmt::print(stderr, "gbssn1d: error: {}\n", what);
+    return 2;
+  }
+
+  try {
+    if (evolve_cmd->parsed())
+      return evolve(params, print_config);
+  } catch (const ParamError& e) {
+    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,163 @@
+#include "cli/params.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+namespace gbssn1d {
+
+namespace {
+
+/// Largest CFL factor accepted: RK4 with 4th-order centred differences is stable for
+/// c dt/dr < 2.06; the fastest characteristic speeds are the 1+log gauge speed sqrt(2) plus
+/// the shift, so 1 keeps a margin. (dt = cfl * smallest spacing.)
+constexpr double cfl_max = 1.0;
+/// RK4 stability limit of the Gamma-driver damping term, eta dt < 2.78 (Schnetter 2010).
+constexpr double eta_dt_max = 2.78;
+
+std::string num(double v) {
+  return fmt::format("{}", v);
+}
+
+void require_finite(const std::string& flag, double v) {
+  if (!std::isfinite(v))
+    throw ParamError(flag, num(v), "must be a finite number");
+}
+
+void require_positive(const std::string& flag, double v) {
+  require_finite(flag, v);
+  if (!(v > 0.0))
+    throw ParamError(flag, num(v), "must be > 0");
+}
+
+} // namespace
+
+void resolve_defaults(Params& p) {
+  if (p.eta < 0.0 && std::isfinite(p.eta) && p.M > 0.0)
+    p.eta = 2.0 / p.M;
+  if (p.norm_rmax < 0.0 && std::isfinite(p.norm_rmax) && p.rmax > 0.0)
+    p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
+}
+
+void validate(const Params& p) {
+  if (p.N <= 0)
+    throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
+  if (p.N < 16)
+    throw ParamError("--N", std::to_string(p.N), "must be at least 16 cells");
+  require_positive("--M", p.M);
+  require_positive("--rmax", p.rmax);
+  if (p.grid != "uniform" && p.grid != "sinh")
+    throw ParamError("--grid", p.grid, "must be 'uniform' or 'sinh'");
+  if (p.grid == "sinh") {
+    require_positive("--dr-inner", p.dr_inner);
+    const double needed = p.dr_inner * p.N;
+    if (!(p.rmax > needed))
+      throw ParamError("--rmax", num(p.rmax),
+                       fmt::format("too small for the grid: a sinh grid of --N = {} cells with "
+                                   "--dr-inner = {} needs --rmax > {}",
+                                   p.N, p.dr_inner, needed));
+  }
+  if (!(p.rmax >= 4.0 * p.M))
+    throw ParamError("--rmax", num(p.rmax),
+                     fmt::format("too small for the grid: the outer boundary must lie outside "
+                                 "the black hole, --rmax >= 4 M = {}",
+                                 4.0 * p.M));
+  if (p.id != "wormhole" && p.id != "maximal-trumpet" && p.id != "1log-trumpet")
+    throw ParamError("--id", p.id, "must be one of wormhole, maximal-trumpet, 1log-trumpet");
+  if (p.lapse0 != "one" && p.lapse0 != "precollapsed")
+    throw ParamError("--lapse0", p.lapse0, "must be 'one' or 'precollapsed'");
+
+  require_finite("--eta", p.eta);
+  if (p.eta < 0.0)
+    throw ParamError("--eta", num(p.eta), "must be >= 0");
+  require_positive("--cfl", p.cfl);
+  if (p.cfl > cfl_max)
+    throw ParamError("--cfl", num(p.cfl),
+                     fmt::format("outside the stable range (0, {}] of RK4 with 4th-order "
+                                 "differences",
+                                 cfl_max));
+  require_finite("--ko-sigma", p.ko_sigma);
+  if (p.ko_sigma < 0.0 || p.ko_sigma > 1.0)
+    throw ParamError("--ko-sigma", num(p.ko_sigma), "must lie in [0, 1]");
+
+  require_finite("--tmax", p.tmax);
+  if (p.tmax < 0.0)
+    throw ParamError("--tmax", num(p.tmax), "must be >= 0");
+  require_positive("--dt-series", p.dt_series);
+  require_positive("--dt-profiles", p.dt_profiles);
+
+  require_finite("--norm-rmin", p.norm_rmin);
+  require_finite("--norm-rmax", p.norm_rmax);
+  if (p.norm_rmin < 0.0)
+    throw ParamError("--norm-rmin", num(p.norm_rmin), "must be >= 0");
+  if (!(p.norm_rmax > p.norm_rmin))
+    throw ParamError("--norm-rmax", num(p.norm_rmax), "must be > --norm-rmin");
+  if (p.norm_rmax > p.rmax)
+    throw ParamError("--norm-rmax", num(p.norm_rmax), "must not exceed --rmax");
+
+  // The Gamma-driver's damping term limits the step independently of the spacing.
+  const double dt = p.cfl * make_grid(p).min_spacing();
+  if (p.eta * dt > eta_dt_max)
+    throw ParamError("--cfl", num(p.cfl),
+                     fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
+                                 "the Gamma-driver damping)",
+                                 p.eta, p.eta * dt, eta_dt_max));
+}
+
+void validate_output_dir(const Params& p) {
+  namespace fs = std::filesystem;
+  if (p.out.empty())
+    throw ParamError("--out", "''", "an output directory is required");
+  std::error_code ec;
+  const fs::path dir(p.out);
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec))
+      throw ParamError("--out", p.out, "exists and is not a directory");
+    if (!fs::is_empty(dir, ec) && !p.force)
+      throw ParamError("--out", p.out, "exists and is not empty (use --force to overwrite)");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+      throw ParamError("--out", p.out, "is not writable");
+    return;
+  }
+  // The nearest existing ancestor must be a writable directory.
+  fs::path parent = fs::absolute(dir, ec).parent_path();
+  while (!parent.empty() && !fs::exists(parent, ec))
+    parent = parent.parent_path();
+  if (parent.empty() || !fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK | X_OK))
+    throw ParamError("--out", p.out, "cannot be created: parent directory is not writable");
+}
+
+Grid make_grid(const Params& p) {
+  const auto n = static_cast<std::size_t>(p.N);
+  if (p.grid == "uniform")
+    return Grid(RadialMap::uniform(p.rmax), n);
+  return Grid(RadialMap::sinh(p.rmax, p.dr_inner, n), n);
+}
+
+InitialDataParams initial_data_params(const Params& p) {
+  InitialDataParams id;
+  id.M = p.M;
+  id.kind = p.id == "wormhole"          ? InitialDataKind::wormhole
+            : p.id == "maximal-trumpet" ? InitialDataKind::maximal_trumpet
+                                        : InitialDataKind::onelog_trumpet;
+  id.lapse0 = p.lapse0 == "one" ? InitialLapse::one : InitialLapse::precollapsed;
+  return id;
+}
+
+RhsParams rhs_params(const Params& p) {
+  RhsParams r;
+  r.gauge.eta = p.eta;
+  r.gauge.advective_shift = p.advective_shift;
+  r.gauge.advective_lapse = !p.non_advective_lapse;
+  r.ko_sigma = p.ko_sigma;
+  return r;
+}
+
+double time_step(const Params& p, const Grid& grid) {
+  return p.cfl * grid.min_spacing();
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,69 @@
+// All run parameters in one struct, with defaults, and their validation.
+#pragma once
+
+#include "gbssn/rhs.hpp"
+#include "grid/grid.hpp"
+#include "initial_data/initial_data.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace gbssn1d {
+
+struct Params {
+  // grid
+  int N = 400;
+  double rmax = 100.0;
+  std::string grid = "sinh"; ///< uniform | sinh
+  double dr_inner = 0.02;    ///< innermost cell width of the sinh grid (M)
+  // initial data
+  std::string id = "wormhole"; ///< wormhole | maximal-trumpet | 1log-trumpet
+  double M = 1.0;
+  std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
+  // gauge
+  double eta = -1.0; ///< Gamma-driver damping; < 0 means the default 2/M
+  bool advective_shift = false;
+  bool non_advective_lapse = false;
+  // numerics
+  double cfl = 0.25;
+  double ko_sigma = 0.1;
+  // time
+  double tmax = 10.0;
+  double dt_series = 0.25;
+  double dt_profiles = 5.0;
+  // diagnostics
+  double norm_rmin = 1.0;
+  double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)
+  // output
+  std::string out;
+  bool force = false;
+};
+
+/// A parameter refused, with the flag it came from: "--rmax = -3 is invalid: must be > 0".
+class ParamError : public std::runtime_error {
+public:
+  ParamError(const std::string& flag, const std::string& value, const std::string& why)
+      : std::runtime_error(flag + " = " + value + " is invalid: " + why), flag_(flag) {}
+  const std::string& flag() const { return flag_; }
+
+private:
+  std::string flag_;
+};
+
+/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax).
+void resolve_defaults(Params& p);
+
+/// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.
+void validate(const Params& p);
+
+/// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
+/// --force; not writable). Creates nothing.
+void validate_output_dir(const Params& p);
+
+// Conversions of the validated parameters into the pieces the code uses.
+Grid make_grid(const Params& p);
+InitialDataParams initial_data_params(const Params& p);
+RhsParams rhs_params(const Params& p);
+double time_step(const Params& p, const Grid& grid);
+
+} // namespace gbssn1d

@@ -1,0 +1,68 @@
+// The one registry of evolved variables.
+//
+// Every evolved field is named here once, with its index in the state vector, the name printed
+// in output headers, its parity at r = 0 (equations document, Sec. 7) and its asymptotic value,
+// wave speed and fall-off for the Sommerfeld outer boundary (Sec. 8). Ghost zones, boundary
+// conditions and output columns are all driven from this table.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+namespace gbssn1d {
+
+enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r };
+
+inline constexpr std::size_t n_vars = 9;
+
+struct VarInfo {
+  Var var;
+  std::string_view name; ///< column name in output files
+  int parity;            ///< +1 even, -1 odd under r -> -r
+  double asymptotic;     ///< f_inf, the value at spatial infinity
+  double speed;          ///< Sommerfeld wave speed v
+  double falloff;        ///< n in f - f_inf ~ u(r - v t) / r^n
+};
+
+inline constexpr double sqrt2 = 1.41421356237309504880;
+
+// Sec. 7 (parity) and Sec. 8 (asymptotics). K carries the 1+log gauge mode, so it leaves at
+// the gauge speed sqrt(2), like alpha.
+inline constexpr std::array<VarInfo, n_vars> registry{{
+    {Var::alpha, "alpha", +1, 1.0, sqrt2, 1.0},
+    {Var::beta, "beta", -1, 0.0, 1.0, 1.0},
+    {Var::B, "B", -1, 0.0, 1.0, 1.0},
+    {Var::chi, "chi", +1, 1.0, 1.0, 1.0},
+    {Var::a, "a", +1, 1.0, 1.0, 1.0},
+    {Var::b, "b", +1, 1.0, 1.0, 1.0},
+    {Var::K, "K", +1, 0.0, sqrt2, 1.0},
+    {Var::A_a, "A_a", +1, 0.0, 1.0, 1.0},
+    {Var::Delta_r, "Delta_r", -1, 0.0, 1.0, 1.0},
+}};
+
+constexpr std::size_t index(Var v) {
+  return static_cast<std::size_t>(v);
+}
+constexpr const VarInfo& info(Var v) {
+  return registry[index(v)];
+}
+
+/// The registry entry with the given printed name, if any.
+constexpr std::optional<Var> var_from_name(std::string_view name) {
+  for (const auto& entry : registry)
+    if (entry.name == name)
+      return entry.var;
+  return std::nullopt;
+}
+
+// The registry must list the variables in enum order.
+static_assert([] {
+  for (std::size_t i = 0; i < n_vars; ++i)
+    if (index(registry[i].var) != i)
+      return false;
+  return true;
+}());
+
+} // namespace gbssn1d

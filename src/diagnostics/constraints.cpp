@@ -1,0 +1,49 @@
+#include "diagnostics/constraints.hpp"
+
+#include "gbssn/equations.hpp"
+#include "gbssn/rhs.hpp"
+
+#include <cmath>
+
+namespace gbssn1d {
+
+DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
+  DerivedProfiles out;
+  const std::size_t n = grid.n_interior();
+  out.H.resize(n);
+  out.M_r.resize(n);
+  out.G_r.resize(n);
+  out.R_areal.resize(n);
+  out.Theta_plus.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const PointData p = point_data(u, grid, grid.first_interior() + k);
+    const Constraints c = constraints(p);
+    out.H[k] = c.H;
+    out.M_r[k] = c.M_r;
+    out.G_r[k] = c.G_r;
+    out.R_areal[k] = areal_radius(p);
+    out.Theta_plus[k] = expansion_plus(p);
+  }
+  return out;
+}
+
+double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax) {
+  double sum = 0.0, width = 0.0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const std::size_t i = grid.first_interior() + k;
+    const double r = grid.r()[i];
+    if (r < rmin || r > rmax)
+      continue;
+    sum += values[k] * values[k] * grid.dr()[i];
+    width += grid.dr()[i];
+  }
+  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+}
+
+double central_value(std::span<const double> f, const Grid& grid) {
+  const std::size_t i1 = grid.first_interior(), i2 = i1 + 1;
+  const double r1 = grid.r()[i1], r2 = grid.r()[i2];
+  return (r2 * r2 * f[i1] - r1 * r1 * f[i2]) / (r2 * r2 - r1 * r1);
+}
+
+} // namespace gbssn1d

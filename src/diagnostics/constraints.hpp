@@ -1,0 +1,28 @@
+// Constraint monitors and norms on the grid (equations document, Sec. 5, Sec. 6).
+#pragma once
+
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+
+#include <span>
+#include <vector>
+
+namespace gbssn1d {
+
+/// Derived profiles on the interior points (index 0 ... N-1 = grid point first_interior()...).
+struct DerivedProfiles {
+  std::vector<double> H, M_r, G_r, R_areal, Theta_plus;
+};
+
+DerivedProfiles derived_profiles(const State& u, const Grid& grid);
+
+/// Discrete L2 norm over the interior points with rmin <= r <= rmax, weighted by the cell
+/// widths: sqrt( sum f_i^2 dr_i / sum dr_i ). `values` holds one value per interior point.
+/// Returns 0 when no point lies in the range.
+double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax);
+
+/// The lapse at r = 0 from the two innermost cells, using that alpha is even:
+/// alpha(r) = c0 + c2 r^2  =>  alpha(0) = (r2^2 alpha1 - r1^2 alpha2) / (r2^2 - r1^2).
+double central_value(std::span<const double> f, const Grid& grid);
+
+} // namespace gbssn1d

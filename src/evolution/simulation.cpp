@@ -1,0 +1,81 @@
+#include "evolution/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
+namespace gbssn1d {
+
+NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_)
+    : std::runtime_error(fmt::format(
+        "the evolution became non-finite at t = {:.6g}, r = {:.6g} in {}", t_, r_, var_)),
+      t(t_), r(r_), var(var_) {}
+
+Schedule make_schedule(const Params& p, const Grid& grid) {
+  Schedule s;
+  const double dt_cfl = time_step(p, grid);
+  s.steps_per_series = static_cast<long>(std::ceil(p.dt_series / dt_cfl - 1e-9));
+  s.dt = p.dt_series / static_cast<double>(s.steps_per_series);
+  s.steps_per_profile = std::max(1L, std::lround(p.dt_profiles / s.dt));
+  s.n_steps = static_cast<long>(std::ceil(p.tmax / s.dt - 1e-9));
+  return s;
+}
+
+Simulation::Simulation(const Params& p)
+    : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
+      u_(initial_data(*grid_, initial_data_params(p))), schedule_(make_schedule(p, *grid_)) {}
+
+SeriesRow Simulation::series_row(const DerivedProfiles& d) const {
+  const Grid& g = *grid_;
+  const double inf = std::numeric_limits<double>::infinity();
+  SeriesRow row;
+  row.t = t_;
+  row.alpha_center = central_value(field(u_, g, Var::alpha), g);
+  row.H_L2 = l2_norm(d.H, g, 0.0, inf);
+  row.H_L2_ext = l2_norm(d.H, g, params_.norm_rmin, params_.norm_rmax);
+  row.M_L2 = l2_norm(d.M_r, g, 0.0, inf);
+  row.M_L2_ext = l2_norm(d.M_r, g, params_.norm_rmin, params_.norm_rmax);
+  row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
+  row.G_L2_ext = l2_norm(d.G_r, g, params_.norm_rmin, params_.norm_rmax);
+  return row;
+}
+
+void Simulation::step(double dt) {
+  stepper_.do_step(std::ref(rhs_), u_, t_, dt);
+  t_ += dt;
+}
+
+void Simulation::check_finite() const {
+  const Grid& g = *grid_;
+  for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
+    for (const auto& entry : registry)
+      if (!std::isfinite(field(u_, g, entry.var)[i]))
+        throw NonFiniteError(t_, g.r()[i], std::string(entry.name));
+}
+
+void Simulation::run(Output* out) {
+  const Schedule& s = schedule_;
+  auto write = [&](bool series, bool profiles) {
+    if (!out || !(series || profiles))
+      return;
+    const DerivedProfiles d = derived_profiles(u_, *grid_);
+    if (series)
+      out->write_series(series_row(d));
+    if (profiles)
+      out->write_profiles(t_, u_, *grid_, d);
+  };
+  check_finite();
+  write(true, true);
+  const double t_end = params_.tmax;
+  for (long n = 1; n <= s.n_steps; ++n) {
+    const bool last = n == s.n_steps;
+    step(last ? t_end - t_ : s.dt);
+    if (last)
+      t_ = t_end;
+    check_finite();
+    write(last || n % s.steps_per_series == 0, last || n % s.steps_per_profile == 0);
+  }
+}
+
+} // namespace gbssn1d

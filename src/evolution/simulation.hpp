@@ -1,0 +1,72 @@
+// One evolution: grid, initial data, right-hand side and the RK4 method of lines
+// (Boost.Odeint), with output at fixed cadences in time.
+#pragma once
+
+#include "cli/params.hpp"
+#include "diagnostics/constraints.hpp"
+#include "gbssn/rhs.hpp"
+#include "io/output.hpp"
+
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace gbssn1d {
+
+/// Thrown when the state stops being finite; says where and when.
+class NonFiniteError : public std::runtime_error {
+public:
+  NonFiniteError(double t, double r, const std::string& var);
+  double t, r;
+  std::string var;
+};
+
+/// The time stepping of a run: constant dt chosen so that the series cadence is a whole number
+/// of steps; the last step is shortened to end exactly at tmax.
+struct Schedule {
+  double dt;
+  long steps_per_series;
+  long steps_per_profile;
+  long n_steps;
+};
+Schedule make_schedule(const Params& p, const Grid& grid);
+
+class Simulation {
+public:
+  /// Builds the grid, the right-hand side and the initial data. `p` must be validated.
+  explicit Simulation(const Params& p);
+
+  const Params& params() const { return params_; }
+  const Grid& grid() const { return *grid_; }
+  const GbssnRhs& rhs() const { return rhs_; }
+  State& state() { return u_; }
+  const State& state() const { return u_; }
+  double time() const { return t_; }
+  const Schedule& schedule() const { return schedule_; }
+
+  /// Diagnostics of the current state.
+  SeriesRow series_row(const DerivedProfiles& d) const;
+
+  /// Evolve to tmax, writing into `out` (if given). Throws NonFiniteError after writing the
+  /// last finite output, leaving the files complete.
+  void run(Output* out);
+
+  /// One RK4 step of size dt.
+  void step(double dt);
+
+  /// The first non-finite value of the state, if any: throws NonFiniteError.
+  void check_finite() const;
+
+private:
+  Params params_;
+  std::unique_ptr<Grid> grid_;
+  GbssnRhs rhs_;
+  State u_;
+  double t_ = 0.0;
+  Schedule schedule_;
+  boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers
+};
+
+} // namespace gbssn1d

@@ -1,0 +1,155 @@
+#include "gbssn/rhs.hpp"
+
+#include "fd/stencils.hpp"
+
+#include <array>
+
+namespace gbssn1d {
+
+namespace {
+
+/// Pointers to the start of each variable's array.
+struct FieldPointers {
+  std::array<const double*, n_vars> f;
+  FieldPointers(const State& u, const Grid& grid) {
+    for (std::size_t v = 0; v < n_vars; ++v)
+      f[v] = u.data() + v * grid.n_total();
+  }
+  const double* operator[](Var v) const { return f[index(v)]; }
+};
+
+/// All of point_data, with the per-point grid factors passed in (the hot loop).
+inline PointData gather(const FieldPointers& u, std::size_t i, double r, double inv_r,
+                        double inv_dx, double inv_rx, double d2_fx) {
+  const double d1_scale = inv_dx * inv_rx;
+  const double d2_scale = inv_dx * inv_dx * inv_rx * inv_rx;
+  const double* alpha = u[Var::alpha] + i;
+  const double* beta = u[Var::beta] + i;
+  const double* B = u[Var::B] + i;
+  const double* chi = u[Var::chi] + i;
+  const double* a = u[Var::a] + i;
+  const double* b = u[Var::b] + i;
+  const double* K = u[Var::K] + i;
+  const double* A_a = u[Var::A_a] + i;
+  const double* Delta_r = u[Var::Delta_r] + i;
+
+  // f_r = f_x / r_x;  f_rr = f_xx / r_x^2 - f_x r_xx / r_x^3
+  auto first = [&](const double* f) { return fd::d1_centred(f) * d1_scale; };
+  auto second = [&](const double* f) {
+    return fd::d2_centred(f) * d2_scale + fd::d1_centred(f) * inv_dx * d2_fx;
+  };
+
+  PointData p;
+  p.r = r;
+  p.inv_r = inv_r;
+  p.alpha = alpha[0];
+  p.beta = beta[0];
+  p.B = B[0];
+  p.chi = chi[0];
+  p.a = a[0];
+  p.b = b[0];
+  p.K = K[0];
+  p.A_a = A_a[0];
+  p.Delta_r = Delta_r[0];
+
+  p.d_alpha = first(alpha);
+  p.d_beta = first(beta);
+  p.d_B = first(B);
+  p.d_chi = first(chi);
+  p.d_a = first(a);
+  p.d_b = first(b);
+  p.d_K = first(K);
+  p.d_A_a = first(A_a);
+  p.d_Delta_r = first(Delta_r);
+
+  p.dd_alpha = second(alpha);
+  p.dd_beta = second(beta);
+  p.dd_chi = second(chi);
+  p.dd_a = second(a);
+  p.dd_b = second(b);
+
+  // beta d_r f, lopsided upwind; the map factor 1/r_x is positive, so the direction is that of
+  // the shift in x as well.
+  const double beta_r = p.beta * d1_scale;
+  p.adv_alpha = fd::advect(beta_r, alpha);
+  p.adv_beta = fd::advect(beta_r, beta);
+  p.adv_B = fd::advect(beta_r, B);
+  p.adv_chi = fd::advect(beta_r, chi);
+  p.adv_a = fd::advect(beta_r, a);
+  p.adv_b = fd::advect(beta_r, b);
+  p.adv_K = fd::advect(beta_r, K);
+  p.adv_A_a = fd::advect(beta_r, A_a);
+  p.adv_Delta_r = fd::advect(beta_r, Delta_r);
+  return p;
+}
+
+} // namespace
+
+PointData point_data(const State& u, const Grid& grid, std::size_t i) {
+  return gather(FieldPointers(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
+                grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i]);
+}
+
+GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {}
+
+void GbssnRhs::operator()(const State& u, State& dudt, double /*t*/) {
+  dudt.resize(u.size());
+  interior(u, dudt);
+  outer_boundary(u, dudt);
+  origin_ghosts(dudt);
+  ++evaluations_;
+}
+
+void GbssnRhs::interior(const State& u, State& dudt) const {
+  const Grid& g = *grid_;
+  const std::size_t nt = g.n_total();
+  const FieldPointers fields(u, g);
+  std::array<double*, n_vars> out;
+  for (std::size_t v = 0; v < n_vars; ++v)
+    out[v] = dudt.data() + v * nt;
+
+  const double* r = g.r().data();
+  const double* inv_r = g.inv_r().data();
+  const double* inv_rx = g.inv_dr_dx().data();
+  const double* d2_fx = g.d2_fx_coeff().data();
+  const double inv_dx = 1.0 / g.dx();
+  // Kreiss-Oliger: sigma / (64 h) times the 6th difference, h = local dr = r_x dx.
+  const double ko_scale = params_.ko_sigma / 64.0 * inv_dx;
+  const GaugeParams gauge = params_.gauge;
+
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    const PointData p = gather(fields, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
+    const Rhs rhs = gbssn_rhs(p, gauge);
+    const double ko = ko_scale * inv_rx[i];
+    out[index(Var::alpha)][i] = rhs.alpha + ko * fd::ko6(fields[Var::alpha] + i);
+    out[index(Var::beta)][i] = rhs.beta + ko * fd::ko6(fields[Var::beta] + i);
+    out[index(Var::B)][i] = rhs.B + ko * fd::ko6(fields[Var::B] + i);
+    out[index(Var::chi)][i] = rhs.chi + ko * fd::ko6(fields[Var::chi] + i);
+    out[index(Var::a)][i] = rhs.a + ko * fd::ko6(fields[Var::a] + i);
+    out[index(Var::b)][i] = rhs.b + ko * fd::ko6(fields[Var::b] + i);
+    out[index(Var::K)][i] = rhs.K + ko * fd::ko6(fields[Var::K] + i);
+    out[index(Var::A_a)][i] = rhs.A_a + ko * fd::ko6(fields[Var::A_a] + i);
+    out[index(Var::Delta_r)][i] = rhs.Delta_r + ko * fd::ko6(fields[Var::Delta_r] + i);
+  }
+}
+
+void GbssnRhs::outer_boundary(const State& u, State& dudt) const {
+  // Sec. 8: d_t f = -v [ d_r f + n (f - f_inf) / r ], one-sided derivatives, on the ghost cells.
+  const Grid& g = *grid_;
+  const std::size_t nt = g.n_total();
+  const double inv_dx = 1.0 / g.dx();
+  for (const auto& entry : registry) {
+    const double* f = u.data() + index(entry.var) * nt;
+    double* out = dudt.data() + index(entry.var) * nt;
+    for (std::size_t i = g.end_interior(); i < nt; ++i) {
+      const double d_r_f = fd::d1_backward(f + i) * inv_dx * g.inv_dr_dx()[i];
+      out[i] = -entry.speed * (d_r_f + entry.falloff * (f[i] - entry.asymptotic) * g.inv_r()[i]);
+    }
+  }
+}
+
+void GbssnRhs::origin_ghosts(State& dudt) const {
+  fill_origin_ghosts(dudt, *grid_);
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,89 @@
+#include "grid/grid.hpp"
+
+#include <boost/math/tools/roots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gbssn1d {
+
+RadialMap RadialMap::uniform(double rmax) {
+  RadialMap m;
+  m.kind_ = GridKind::uniform;
+  m.rmax_ = rmax;
+  m.s_ = 0.0;
+  return m;
+}
+
+RadialMap RadialMap::sinh(double rmax, double dr_inner, std::size_t n) {
+  // dr/dx at x = 0 is rmax s / sinh(s), which falls monotonically from rmax (s -> 0) to 0.
+  // Solve rmax s / sinh(s) * dx = dr_inner for s > 0.
+  const double dx = 1.0 / static_cast<double>(n);
+  const double target = dr_inner / (rmax * dx); // = s / sinh(s), must be in (0, 1)
+  if (!(target > 0.0 && target < 1.0))
+    throw std::invalid_argument("the sinh grid needs an innermost spacing below rmax/N");
+  auto residual = [target](double s) { return std::log(s / std::sinh(s)) - std::log(target); };
+  double lo = 1e-8, hi = 1.0;
+  while (residual(hi) > 0.0)
+    hi *= 2.0; // s/sinh(s) ~ 2 s e^{-s}: hi stays moderate
+  std::uintmax_t iterations = 200;
+  auto [a, b] = boost::math::tools::toms748_solve(
+      residual, lo, hi, boost::math::tools::eps_tolerance<double>(52), iterations);
+  RadialMap m;
+  m.kind_ = GridKind::sinh;
+  m.rmax_ = rmax;
+  m.s_ = 0.5 * (a + b);
+  return m;
+}
+
+double RadialMap::r(double x) const {
+  if (kind_ == GridKind::uniform)
+    return rmax_ * x;
+  return rmax_ * std::sinh(s_ * x) / std::sinh(s_);
+}
+
+double RadialMap::dr_dx(double x) const {
+  if (kind_ == GridKind::uniform)
+    return rmax_;
+  return rmax_ * s_ * std::cosh(s_ * x) / std::sinh(s_);
+}
+
+double RadialMap::d2r_dx2(double x) const {
+  if (kind_ == GridKind::uniform)
+    return 0.0;
+  return rmax_ * s_ * s_ * std::sinh(s_ * x) / std::sinh(s_);
+}
+
+Grid::Grid(RadialMap map, std::size_t n_interior)
+    : map_(map), n_(n_interior), dx_(1.0 / static_cast<double>(n_interior)) {
+  const std::size_t n = n_total();
+  x_.resize(n);
+  r_.resize(n);
+  inv_r_.resize(n);
+  inv_rx_.resize(n);
+  d2_fx_coeff_.resize(n);
+  dr_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi =
+        (static_cast<double>(i) - static_cast<double>(n_ghost) + 0.5) * dx_; // cell centres
+    const double rx = map_.dr_dx(xi);
+    x_[i] = xi;
+    r_[i] = map_.r(xi);
+    inv_r_[i] = 1.0 / r_[i];
+    inv_rx_[i] = 1.0 / rx;
+    d2_fx_coeff_[i] = -map_.d2r_dx2(xi) / (rx * rx * rx);
+    dr_[i] = rx * dx_;
+  }
+}
+
+double Grid::min_spacing() const {
+  return *std::min_element(dr_.begin() + static_cast<std::ptrdiff_t>(first_interior()),
+                           dr_.begin() + static_cast<std::ptrdiff_t>(end_interior()));
+}
+
+std::string to_string(GridKind kind) {
+  return kind == GridKind::uniform ? "uniform" : "sinh";
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,81 @@
+// Cell-centred radial grid on a map x -> r(x).
+//
+// The computational coordinate x is uniform, x_i = (i + 1/2) dx for the interior cells
+// i = 0 ... N-1 on [0, 1]; the radius is r(x), an odd function of x, so that the ghost cells
+// x_{-1-j} = -x_j sit at r = -r_j and are filled by parity (equations document, Sec. 7).
+// Derivatives with respect to r follow from the chain rule:
+//   f_r  = f_x / r_x,
+//   f_rr = f_xx / r_x^2 - f_x r_xx / r_x^3.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+enum class GridKind { uniform, sinh };
+
+/// Radial map r(x) on x in [0, 1] with r(0) = 0 and r(1) = rmax.
+///  uniform: r = rmax x;
+///  sinh:    r = rmax sinh(s x) / sinh(s), with s chosen so that the innermost cell has the
+///           requested width (fine near the puncture, coarse far out).
+class RadialMap {
+public:
+  static RadialMap uniform(double rmax);
+  /// The sinh map whose innermost cell of a grid of n cells is `dr_inner` wide (at r = 0:
+  /// dr/dx * dx = dr_inner). Throws std::invalid_argument if that needs dr_inner >= rmax / n.
+  static RadialMap sinh(double rmax, double dr_inner, std::size_t n);
+
+  GridKind kind() const { return kind_; }
+  double rmax() const { return rmax_; }
+  double stretch() const { return s_; } ///< s of the sinh map (0 for uniform)
+
+  double r(double x) const;
+  double dr_dx(double x) const;
+  double d2r_dx2(double x) const;
+
+private:
+  GridKind kind_ = GridKind::uniform;
+  double rmax_ = 1.0;
+  double s_ = 0.0;
+};
+
+class Grid {
+public:
+  static constexpr std::size_t n_ghost = 3; ///< enough for 4th-order upwind and 6th-difference KO
+
+  Grid(RadialMap map, std::size_t n_interior);
+
+  std::size_t n_interior() const { return n_; }
+  std::size_t n_total() const { return n_ + 2 * n_ghost; }
+  std::size_t first_interior() const { return n_ghost; }
+  std::size_t end_interior() const { return n_ghost + n_; } ///< one past the last interior
+  double dx() const { return dx_; }
+  const RadialMap& map() const { return map_; }
+
+  // Per point (ghosts included), index 0 ... n_total()-1.
+  const std::vector<double>& x() const { return x_; }
+  const std::vector<double>& r() const { return r_; }
+  const std::vector<double>& inv_r() const { return inv_r_; }
+  const std::vector<double>& inv_dr_dx() const { return inv_rx_; }
+  /// coefficient of f_x in f_rr: -r_xx / r_x^3
+  const std::vector<double>& d2_fx_coeff() const { return d2_fx_coeff_; }
+  /// local spacing dr_i = r_x(x_i) dx
+  const std::vector<double>& dr() const { return dr_; }
+
+  double min_spacing() const;
+
+  /// Index of the interior mirror of ghost i at the origin (i < n_ghost).
+  static constexpr std::size_t mirror(std::size_t i) { return 2 * n_ghost - 1 - i; }
+
+private:
+  RadialMap map_;
+  std::size_t n_;
+  double dx_;
+  std::vector<double> x_, r_, inv_r_, inv_rx_, d2_fx_coeff_, dr_;
+};
+
+std::string to_string(GridKind kind);
+
+} // namespace gbssn1d

@@ -1,0 +1,30 @@
+// Initial data for one Schwarzschild black hole of mass M (equations document, Sec. 9, 13).
+#pragma once
+
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+
+#include <string>
+
+namespace gbssn1d {
+
+enum class InitialDataKind { wormhole, maximal_trumpet, onelog_trumpet };
+enum class InitialLapse { one, precollapsed };
+
+struct InitialDataParams {
+  InitialDataKind kind = InitialDataKind::wormhole;
+  double M = 1.0;
+  InitialLapse lapse0 = InitialLapse::precollapsed; ///< wormhole only
+};
+
+/// The state on every point of the grid (ghosts included).
+///  wormhole:        isotropic puncture psi = 1 + M/(2r), chi = psi^-4, a = b = 1,
+///                   K = A_a = Delta^r = beta = B = 0, alpha = 1 or psi^-2;
+///  maximal-trumpet: Baumgarte-Naculich analytic trumpet with its lapse and shift (Sec. 9.5);
+///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13).
+State initial_data(const Grid& grid, const InitialDataParams& params);
+
+std::string to_string(InitialDataKind kind);
+std::string to_string(InitialLapse lapse);
+
+} // namespace gbssn1d

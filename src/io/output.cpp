@@ -1,0 +1,89 @@
+#include "io/output.hpp"
+
+#include "core/registry.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+#include <stdexcept>
+
+namespace gbssn1d {
+
+std::vector<std::string> series_columns() {
+  return {"t", "alpha_center", "H_L2", "H_L2_ext", "M_L2", "M_L2_ext", "G_L2", "G_L2_ext"};
+}
+
+std::vector<std::string> profile_columns() {
+  std::vector<std::string> cols{"r"};
+  for (const auto& entry : registry)
+    cols.emplace_back(entry.name);
+  for (const char* name : {"H", "M_r", "G_r", "R_areal", "Theta_plus"})
+    cols.emplace_back(name);
+  return cols;
+}
+
+std::string header_text(const std::string& parameter_header) {
+  std::string text = fmt::format("# gbssn1d {}\n", GBSSN1D_VERSION);
+  std::istringstream lines(parameter_header);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty())
+      text += "# " + line + "\n";
+  return text;
+}
+
+DataFile::DataFile(const std::filesystem::path& path, const std::string& parameter_header,
+                   const std::vector<std::string>& columns) {
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_)
+    throw std::runtime_error("cannot open " + path.string() + " for writing");
+  std::string text = header_text(parameter_header) + "#";
+  for (const auto& c : columns)
+    text += " " + c;
+  text += "\n";
+  std::fputs(text.c_str(), file_);
+  flush();
+}
+
+DataFile::~DataFile() {
+  if (file_)
+    std::fclose(file_);
+}
+
+void DataFile::flush() {
+  std::fflush(file_);
+}
+
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
+    : series_(dir / "timeseries.dat", parameter_header, series_columns()),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns()) {}
+
+void Output::write_series(const SeriesRow& row) {
+  fmt::print(series_.handle(), "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
+             row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+             row.G_L2_ext);
+  series_.flush();
+}
+
+void Output::write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d) {
+  std::FILE* f = profiles_.handle();
+  // gnuplot's `index` separates blocks by two blank lines.
+  if (!first_block_)
+    fmt::print(f, "\n\n");
+  first_block_ = false;
+  fmt::print(f, "# t = {:.16e}\n", t);
+  fmt::memory_buffer line;
+  for (std::size_t k = 0; k < grid.n_interior(); ++k) {
+    const std::size_t i = grid.first_interior() + k;
+    line.clear();
+    fmt::format_to(std::back_inserter(line), "{:.16e}", grid.r()[i]);
+    for (const auto& entry : registry)
+      fmt::format_to(std::back_inserter(line), " {:.16e}", field(u, grid, entry.var)[i]);
+    for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k]})
+      fmt::format_to(std::back_inserter(line), " {:.16e}", v);
+    line.push_back('\n');
+    std::fwrite(line.data(), 1, line.size(), f);
+  }
+  profiles_.flush();
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,60 @@
+// ASCII output: timeseries.dat and profiles.dat, each opening with '#' lines that record the
+// program version and every parameter, the last '#' line naming the columns. Values are
+// written at full precision and flushed after every row/block, so a run that stops early
+// leaves complete, parseable files.
+#pragma once
+
+#include "diagnostics/constraints.hpp"
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// One row of timeseries.dat.
+struct SeriesRow {
+  double t, alpha_center, H_L2, H_L2_ext, M_L2, M_L2_ext, G_L2, G_L2_ext;
+};
+
+/// Column names, in order.
+std::vector<std::string> series_columns();
+std::vector<std::string> profile_columns();
+
+/// A text file with the standard header. Closes on destruction.
+class DataFile {
+public:
+  DataFile(const std::filesystem::path& path, const std::string& parameter_header,
+           const std::vector<std::string>& columns);
+  ~DataFile();
+  DataFile(const DataFile&) = delete;
+  DataFile& operator=(const DataFile&) = delete;
+  std::FILE* handle() { return file_; }
+  void flush();
+
+private:
+  std::FILE* file_ = nullptr;
+};
+
+class Output {
+public:
+  /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
+  /// one "key = value" per line.
+  Output(const std::filesystem::path& dir, const std::string& parameter_header);
+
+  void write_series(const SeriesRow& row);
+  void write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d);
+
+private:
+  DataFile series_;
+  DataFile profiles_;
+  bool first_block_ = true;
+};
+
+/// "# gbssn1d <version>" and the parameters as '#' lines.
+std::string header_text(const std::string& parameter_header);
+
+} // namespace gbssn1d

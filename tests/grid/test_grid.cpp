@@ -1,0 +1,123 @@
+// The radial grid: cell centres, parity mirrors, the sinh map, and radial derivatives through
+// the chain rule (fitted order 4 on uniform and sinh grids).
+#include "gbssn/rhs.hpp"
+#include "grid/grid.hpp"
+
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace gbssn1d;
+using gbssn1d::testing::fit_order;
+
+TEST_CASE("cell-centred uniform grid: no point at r = 0, ghosts mirror the interior") {
+  const Grid g(RadialMap::uniform(10.0), 100);
+  CHECK(g.n_total() == 106);
+  CHECK(g.r()[g.first_interior()] == doctest::Approx(0.05));
+  CHECK(g.r()[g.end_interior() - 1] == doctest::Approx(9.95));
+  for (std::size_t i = 0; i < Grid::n_ghost; ++i)
+    CHECK(g.r()[i] == doctest::Approx(-g.r()[Grid::mirror(i)]));
+  CHECK(g.min_spacing() == doctest::Approx(0.1));
+}
+
+TEST_CASE("sinh grid: requested innermost spacing, reaches rmax, spacing grows outward") {
+  const double rmax = 200.0, dr_inner = 0.01;
+  const std::size_t n = 800;
+  const Grid g(RadialMap::sinh(rmax, dr_inner, n), n);
+  CHECK(g.map().r(1.0) == doctest::Approx(rmax).epsilon(1e-13));
+  CHECK(g.map().dr_dx(0.0) * g.dx() == doctest::Approx(dr_inner).epsilon(1e-12));
+  for (std::size_t i = g.first_interior() + 1; i < g.end_interior(); ++i)
+    CHECK(g.dr()[i] > g.dr()[i - 1]);
+  for (std::size_t i = 0; i < Grid::n_ghost; ++i)
+    CHECK(g.r()[i] == doctest::Approx(-g.r()[Grid::mirror(i)]).epsilon(1e-14));
+  CHECK_THROWS_AS(RadialMap::sinh(1.0, 0.1, 100), std::invalid_argument);
+}
+
+namespace {
+
+struct DerivativeErrors {
+  double d1, d2, adv;
+};
+
+/// Max errors of d_r f, d_r^2 f and the upwinded beta d_r f over r in [0.5, 8] for
+/// f = alpha(r) placed on the grid, through the code's own point_data().
+DerivativeErrors derivative_errors(const Grid& g, double beta) {
+  auto f = [](double r) { return std::exp(-0.1 * r * r) * std::cos(0.8 * r) + 0.05 * r; };
+  auto f1 = [](double r) {
+    return std::exp(-0.1 * r * r) * (-0.2 * r * std::cos(0.8 * r) - 0.8 * std::sin(0.8 * r)) + 0.05;
+  };
+  auto f2 = [](double r) {
+    const double e = std::exp(-0.1 * r * r), c = std::cos(0.8 * r), s = std::sin(0.8 * r);
+    return e * ((0.04 * r * r - 0.2) * c + 0.32 * r * s - 0.64 * c);
+  };
+  State u = make_state(g);
+  auto alpha = field(u, g, Var::alpha);
+  auto shift = field(u, g, Var::beta);
+  for (std::size_t i = 0; i < g.n_total(); ++i) {
+    alpha[i] = f(g.r()[i]);
+    shift[i] = beta;
+  }
+  DerivativeErrors e{0, 0, 0};
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    const double r = g.r()[i];
+    if (r < 0.5 || r > 8.0)
+      continue;
+    const PointData p = point_data(u, g, i);
+    e.d1 = std::max(e.d1, std::abs(p.d_alpha - f1(r)));
+    e.d2 = std::max(e.d2, std::abs(p.dd_alpha - f2(r)));
+    e.adv = std::max(e.adv, std::abs(p.adv_alpha - beta * f1(r)));
+  }
+  return e;
+}
+
+void check_orders(const std::function<Grid(std::size_t)>& make) {
+  std::vector<double> h, e1, e2, eadv_plus, eadv_minus;
+  for (std::size_t n : {160, 320, 640, 1280}) {
+    const Grid g = make(n);
+    h.push_back(g.dx());
+    const auto plus = derivative_errors(g, 0.7);
+    const auto minus = derivative_errors(g, -0.7);
+    e1.push_back(plus.d1);
+    e2.push_back(plus.d2);
+    eadv_plus.push_back(plus.adv);
+    eadv_minus.push_back(minus.adv);
+  }
+  CHECK(fit_order(h, e1) == doctest::Approx(4.0).epsilon(0.1));
+  CHECK(fit_order(h, e2) == doctest::Approx(4.0).epsilon(0.1));
+  CHECK(fit_order(h, eadv_plus) == doctest::Approx(4.0).epsilon(0.1));
+  CHECK(fit_order(h, eadv_minus) == doctest::Approx(4.0).epsilon(0.1));
+}
+
+} // namespace
+
+TEST_CASE("radial derivatives converge at 4th order on the uniform grid") {
+  check_orders([](std::size_t n) { return Grid(RadialMap::uniform(10.0), n); });
+}
+
+TEST_CASE("radial derivatives converge at 4th order on the sinh grid (chain rule)") {
+  // innermost spacing scales with the resolution, so the map is the same family
+  check_orders([](std::size_t n) {
+    return Grid(RadialMap::sinh(10.0, 2.0 / static_cast<double>(n), n), n);
+  });
+}
+
+TEST_CASE("radial derivatives of a quartic are exact on the uniform grid") {
+  const Grid g(RadialMap::uniform(4.0), 16);
+  State u = make_state(g);
+  auto chi = field(u, g, Var::chi);
+  auto p4 = [](double r) {
+    return 1.0 + 0.2 * r - 0.3 * r * r + 0.05 * r * r * r - 0.01 * r * r * r * r;
+  };
+  auto p4_1 = [](double r) { return 0.2 - 0.6 * r + 0.15 * r * r - 0.04 * r * r * r; };
+  auto p4_2 = [](double r) { return -0.6 + 0.3 * r - 0.12 * r * r; };
+  for (std::size_t i = 0; i < g.n_total(); ++i)
+    chi[i] = p4(g.r()[i]);
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    const PointData p = point_data(u, g, i);
+    CHECK(std::abs(p.d_chi - p4_1(g.r()[i])) < 1e-12);
+    CHECK(std::abs(p.dd_chi - p4_2(g.r()[i])) < 1e-12);
+  }
+}
