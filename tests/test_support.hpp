@@ -1,6 +1,7 @@
 // Shared helpers of the test suite: reading named-column tables and fitting convergence orders.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -37,7 +38,8 @@ inline Table read_table(const std::string& path) {
       continue;
     }
     if (line[0] == '#') {
-      last_comment = line;
+      if (line.rfind("# t =", 0) != 0)
+        last_comment = line; // block markers name no columns
       continue;
     }
     if (t.columns.empty()) {
@@ -56,6 +58,22 @@ inline Table read_table(const std::string& path) {
   if (t.rows.empty())
     throw std::runtime_error("no data in " + path);
   return t;
+}
+
+/// Cubic Lagrange interpolation in a table with increasing x (4 neighbouring nodes).
+inline double interpolate_cubic(const std::vector<double>& x, const std::vector<double>& y,
+                                double xi) {
+  std::size_t k = std::upper_bound(x.begin(), x.end(), xi) - x.begin();
+  k = std::clamp<std::size_t>(k, 2, x.size() - 2) - 2; // nodes k ... k+3
+  double sum = 0;
+  for (std::size_t j = k; j < k + 4; ++j) {
+    double w = 1;
+    for (std::size_t m = k; m < k + 4; ++m)
+      if (m != j)
+        w *= (xi - x[m]) / (x[j] - x[m]);
+    sum += w * y[j];
+  }
+  return sum;
 }
 
 /// Least-squares slope of log(err) against log(h): the observed order of convergence.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace gbssn1d {
 
@@ -24,9 +25,10 @@ Schedule make_schedule(const Params& p, const Grid& grid) {
 
 Simulation::Simulation(const Params& p)
     : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
-      u_(initial_data(*grid_, initial_data_params(p))), schedule_(make_schedule(p, *grid_)) {}
+      diagnostic_rhs_(*grid_, rhs_params(p)), u_(initial_data(*grid_, initial_data_params(p))),
+      schedule_(make_schedule(p, *grid_)) {}
 
-SeriesRow Simulation::series_row(const DerivedProfiles& d) const {
+SeriesRow Simulation::series_row(const DerivedProfiles& d) {
   const Grid& g = *grid_;
   const double inf = std::numeric_limits<double>::infinity();
   SeriesRow row;
@@ -38,6 +40,12 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d) const {
   row.M_L2_ext = l2_norm(d.M_r, g, params_.norm_rmin, params_.norm_rmax);
   row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
   row.G_L2_ext = l2_norm(d.G_r, g, params_.norm_rmin, params_.norm_rmax);
+  diagnostic_rhs_(u_, dudt_, t_);
+  const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
+  row.dtalpha_max_ext = 0.0;
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
+    if (g.r()[i] >= params_.norm_rmin && g.r()[i] <= params_.norm_rmax)
+      row.dtalpha_max_ext = std::max(row.dtalpha_max_ext, std::abs(dt_alpha[i]));
   return row;
 }
 
@@ -71,8 +79,7 @@ void Simulation::run(Output* out) {
   for (long n = 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
     step(last ? t_end - t_ : s.dt);
-    if (last)
-      t_ = t_end;
+    t_ = last ? t_end : static_cast<double>(n) * s.dt; // no accumulated round-off in t
     check_finite();
     write(last || n % s.steps_per_series == 0, last || n % s.steps_per_profile == 0);
   }

@@ -46,8 +46,8 @@ public:
   double time() const { return t_; }
   const Schedule& schedule() const { return schedule_; }
 
-  /// Diagnostics of the current state.
-  SeriesRow series_row(const DerivedProfiles& d) const;
+  /// Diagnostics of the current state (evaluates the right-hand side once for d_t alpha).
+  SeriesRow series_row(const DerivedProfiles& d);
 
   /// Evolve to tmax, writing into `out` (if given). Throws NonFiniteError after writing the
   /// last finite output, leaving the files complete.
@@ -63,6 +63,8 @@ private:
   Params params_;
   std::unique_ptr<Grid> grid_;
   GbssnRhs rhs_;
+  GbssnRhs diagnostic_rhs_; ///< separate, so RHS evaluations of the evolution stay countable
+  State dudt_;
   State u_;
   double t_ = 0.0;
   Schedule schedule_;

@@ -10,7 +10,8 @@
 namespace gbssn1d {
 
 std::vector<std::string> series_columns() {
-  return {"t", "alpha_center", "H_L2", "H_L2_ext", "M_L2", "M_L2_ext", "G_L2", "G_L2_ext"};
+  return {"t",        "alpha_center", "H_L2",     "H_L2_ext",       "M_L2",
+          "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext"};
 }
 
 std::vector<std::string> profile_columns() {
@@ -58,9 +59,10 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
       profiles_(dir / "profiles.dat", parameter_header, profile_columns()) {}
 
 void Output::write_series(const SeriesRow& row) {
-  fmt::print(series_.handle(), "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
-             row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
-             row.G_L2_ext);
+  fmt::print(series_.handle(),
+             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n", row.t,
+             row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+             row.G_L2_ext, row.dtalpha_max_ext);
   series_.flush();
 }
 

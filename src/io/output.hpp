@@ -18,6 +18,7 @@ namespace gbssn1d {
 /// One row of timeseries.dat.
 struct SeriesRow {
   double t, alpha_center, H_L2, H_L2_ext, M_L2, M_L2_ext, G_L2, G_L2_ext;
+  double dtalpha_max_ext; ///< max |d_t alpha| over the exterior region (settling)
 };
 
 /// Column names, in order.
