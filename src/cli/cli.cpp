@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -125,24 +126,86 @@ std::string config_text(const Params& p) {
   return text;
 }
 
+namespace {
+
+/// Arguments after expanding `--config FILE` (or --config=FILE) of the evolve subcommand into
+/// `--key=value` arguments placed before the command line's own, so that flags override the
+/// file. CLI11 2.1 does not read config files given to a subcommand, hence this step; the file
+/// is parsed by CLI11's own TOML/INI reader. Throws ParamError for a missing file or a key that
+/// names no parameter.
+std::vector<std::string> expand_config(const std::vector<std::string>& args) {
+  std::vector<std::string> rest, from_file;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    std::string path;
+    if (args[k] == "--config") {
+      if (k + 1 >= args.size())
+        throw ParamError("--config", "''", "needs a file name");
+      path = args[++k];
+    } else if (args[k].rfind("--config=", 0) == 0) {
+      path = args[k].substr(9);
+    } else {
+      rest.push_back(args[k]);
+      continue;
+    }
+    if (!std::filesystem::is_regular_file(path))
+      throw ParamError("--config", path, "no such file");
+    std::vector<CLI::ConfigItem> items;
+    try {
+      items = CLI::ConfigTOML().from_file(path);
+    } catch (const CLI::Error& e) {
+      throw ParamError("--config", path, std::string("cannot be parsed: ") + e.what());
+    }
+    for (const auto& item : items) {
+      const std::string key = item.fullname();
+      const bool known = std::any_of(param_specs().begin(), param_specs().end(),
+                                     [&](const ParamSpec& s) { return key == s.name; });
+      if (!known)
+        throw ParamError("--config", path, fmt::format("unknown key '{}'", key));
+      if (item.inputs.size() != 1)
+        throw ParamError("--config", path, fmt::format("key '{}' needs exactly one value", key));
+      from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
+    }
+  }
+  // the subcommand name stays first
+  std::vector<std::string> out;
+  if (!rest.empty())
+    out.push_back(rest.front());
+  out.insert(out.end(), from_file.begin(), from_file.end());
+  if (rest.size() > 1)
+    out.insert(out.end(), rest.begin() + 1, rest.end());
+  return out;
+}
+
+} // namespace
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
                "black hole"};
   app.set_version_flag("--version", std::string("gbssn1d ") + GBSSN1D_VERSION);
   app.require_subcommand(1);
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 
   Params params;
   bool print_config = false;
+  std::string config_file; // expanded before parsing; listed here for --help
   CLI::App* evolve_cmd =
       app.add_subcommand("evolve", "evolve one black hole and write ASCII output");
   add_options(*evolve_cmd, params);
-  evolve_cmd->set_config("--config", "", "read parameters from a TOML/INI file (flags override)");
-  evolve_cmd->allow_config_extras(CLI::config_extras_mode::error);
-  evolve_cmd->add_flag("--print-config", print_config,
-                       "print the effective configuration (a valid --config file) and exit");
+  evolve_cmd
+      ->add_option("--config", config_file,
+                   "read parameters from a TOML/INI file of `key = value` lines (as "
+                   "written to OUT/config.toml); flags given too override it")
+      ->group("Configuration");
+  evolve_cmd
+      ->add_flag("--print-config", print_config,
+                 "print the effective configuration (a valid --config file) and exit")
+      ->group("Configuration");
 
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    args = expand_config(args);
+    std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -153,6 +216,9 @@ int run_cli(int argc, char** argv) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
     fmt::print(stderr, "gbssn1d: error: {}\n", what);
+    return 2;
+  } catch (const ParamError& e) {
+    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
     return 2;
   }
 

@@ -1,0 +1,163 @@
+// The command line as a user meets it: the real executable, bad input refused with one line
+// naming the parameter and nothing written, and config files that repeat a run exactly.
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string err, out;
+};
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("gbssn1d_cli_" + name);
+  fs::remove_all(p);
+  return p;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Result run(const std::string& args) {
+  const fs::path err = scratch("stderr"), out = scratch("stdout");
+  const std::string cmd =
+      std::string(GBSSN1D_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(cmd.c_str());
+  Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err), slurp(out)};
+  fs::remove(err);
+  fs::remove(out);
+  return r;
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s)
+    n += c == '\n';
+  return n;
+}
+
+/// A refused run: non-zero exit, one line on stderr that names `flag`, no output directory.
+void check_refused(const std::string& args, const std::string& flag) {
+  const fs::path out = scratch("out");
+  const Result r = run("evolve --tmax 0 --out " + out.string() + " " + args);
+  INFO("args: " << args << "\nstderr: " << r.err);
+  CHECK(r.status != 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find(flag) != std::string::npos);
+  CHECK(r.err.find("error") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
+
+} // namespace
+
+TEST_CASE("bad numbers are refused, naming the parameter and why") {
+  check_refused("--N 0", "--N");
+  check_refused("--N -5", "--N");
+  check_refused("--rmax -3", "--rmax");
+  check_refused("--rmax 0", "--rmax");
+  check_refused("--grid sinh --N 1000 --dr-inner 0.01 --rmax 5", "--rmax");
+  check_refused("--grid uniform --rmax 2", "--rmax");
+  check_refused("--cfl 2", "--cfl");
+  check_refused("--cfl 0", "--cfl");
+  check_refused("--cfl -0.1", "--cfl");
+  check_refused("--rmax nan", "--rmax");
+  check_refused("--M inf", "--M");
+  check_refused("--eta nan", "--eta");
+  check_refused("--ko-sigma -1", "--ko-sigma");
+  check_refused("--tmax -1", "--tmax");
+  check_refused("--N abc", "--N");
+}
+
+TEST_CASE("unknown choices and flags are refused") {
+  check_refused("--id kerr", "--id");
+  check_refused("--grid log", "--grid");
+  check_refused("--lapse0 zero", "--lapse0");
+  check_refused("--no-such-flag 3", "--no-such-flag");
+}
+
+TEST_CASE("malformed or missing config files are refused") {
+  const fs::path cfg = scratch("bad.toml");
+  std::ofstream(cfg) << "N = 100\nbogus-key = 3\n";
+  check_refused("--config " + cfg.string(), "bogus-key");
+  std::ofstream(cfg) << "N = \"many\"\n";
+  check_refused("--config " + cfg.string(), "N");
+  check_refused("--config " + scratch("missing.toml").string(), "missing.toml");
+  fs::remove(cfg);
+}
+
+TEST_CASE("--out: an existing non-empty directory is refused and left untouched") {
+  const fs::path out = scratch("busy");
+  fs::create_directories(out);
+  std::ofstream(out / "keep.txt") << "precious\n";
+  const Result r = run("evolve --tmax 0 --out " + out.string());
+  CHECK(r.status != 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find("--out") != std::string::npos);
+  CHECK(slurp(out / "keep.txt") == "precious\n");
+  CHECK(std::distance(fs::directory_iterator(out), fs::directory_iterator{}) == 1);
+  // --force writes into it
+  CHECK(run("evolve --tmax 0 --force --out " + out.string()).status == 0);
+  CHECK(fs::exists(out / "profiles.dat"));
+  fs::remove_all(out);
+}
+
+TEST_CASE("--out: a directory that cannot be created is refused") {
+  const fs::path file = scratch("plainfile");
+  std::ofstream(file) << "x\n";
+  const Result r = run("evolve --tmax 0 --out " + (file / "sub").string());
+  CHECK(r.status != 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find("--out") != std::string::npos);
+  CHECK(slurp(file) == "x\n");
+  fs::remove(file);
+}
+
+TEST_CASE("--tmax 0 writes the initial data; the written config repeats a run exactly") {
+  const fs::path a = scratch("run_a"), b = scratch("run_b");
+  const std::string flags =
+      "--id maximal-trumpet --grid sinh --N 120 --rmax 40 --dr-inner 0.05 --cfl 0.3 "
+      "--tmax 2 --dt-series 0.5 --dt-profiles 1 --ko-sigma 0.2 --eta 1.5 --advective-shift";
+  REQUIRE(run("evolve " + flags + " --out " + a.string()).status == 0);
+  for (const char* f : {"config.toml", "timeseries.dat", "profiles.dat"})
+    CHECK(fs::exists(a / f));
+  const auto series = gbssn1d::testing::read_table((a / "timeseries.dat").string());
+  CHECK(series.rows.size() == 5); // t = 0, 0.5, 1, 1.5, 2
+  CHECK(series.at(4, "t") == 2.0);
+
+  REQUIRE(run("evolve --config " + (a / "config.toml").string() + " --out " + b.string()).status
+          == 0);
+  CHECK(slurp(a / "timeseries.dat").substr(slurp(a / "timeseries.dat").find("\n# t "))
+        == slurp(b / "timeseries.dat").substr(slurp(b / "timeseries.dat").find("\n# t ")));
+  CHECK(slurp(a / "profiles.dat").substr(slurp(a / "profiles.dat").find("# t ="))
+        == slurp(b / "profiles.dat").substr(slurp(b / "profiles.dat").find("# t =")));
+
+  // --print-config shows the effective configuration, which reads back to itself
+  const Result printed = run("evolve --config " + (a / "config.toml").string() + " --print-config");
+  CHECK(printed.status == 0);
+  CHECK(printed.out.find("eta = 1.5") != std::string::npos);
+  CHECK(printed.out.find("advective-shift = true") != std::string::npos);
+
+  const fs::path c = scratch("run_c");
+  REQUIRE(run("evolve --tmax 0 --out " + c.string()).status == 0);
+  const std::string profiles = slurp(c / "profiles.dat");
+  CHECK(profiles.find("# t = 0") != std::string::npos);
+  CHECK(profiles.find("\n\n\n") == std::string::npos); // one block only
+  for (const auto& d : {a, b, c})
+    fs::remove_all(d);
+}
