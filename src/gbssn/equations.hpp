@@ -171,13 +171,15 @@ inline Rhs gbssn_rhs(const PointData& p, const GaugeParams& gauge, const Shift& 
   // (E6)
   rhs.Delta_r = rhs_Delta_r(p, m, shift);
 
+  // The gauge switches as 0/1 factors (branch-free, so point loops vectorise).
+  const double lapse_advection = gauge.advective_lapse ? 1.0 : 0.0;
+  const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
   // (G1) 1+log slicing
-  rhs.alpha = (gauge.advective_lapse ? p.adv_alpha : 0.0) - 2.0 * p.alpha * p.K;
+  rhs.alpha = lapse_advection * p.adv_alpha - 2.0 * p.alpha * p.K;
   // (G2), (G3) Gamma-driver; B is driven by d_t Delta^r of the gauge part of the shift.
   const double dt_Delta_gauge = rhs_Delta_r(p, m, gauge_shift);
-  rhs.beta = 0.75 * p.B + (gauge.advective_shift ? p.adv_beta : 0.0);
-  rhs.B = dt_Delta_gauge - gauge.eta * p.B
-          + (gauge.advective_shift ? p.adv_B - gauge_shift.adv_Delta_r : 0.0);
+  rhs.beta = 0.75 * p.B + shift_advection * p.adv_beta;
+  rhs.B = dt_Delta_gauge - gauge.eta * p.B + shift_advection * (p.adv_B - gauge_shift.adv_Delta_r);
   return rhs;
 }
 

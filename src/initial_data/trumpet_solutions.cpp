@@ -205,7 +205,8 @@ Series onelog_alpha_series(double Rc, double alpha_c, std::size_t order) {
 constexpr std::size_t taylor_order = 24;
 constexpr double taylor_delta = 0.02;
 // Relative tolerances of the Runge-Kutta-Fehlberg 7(8) integrations.
-constexpr double ode_rel_tol = 1e-15;
+constexpr double ode_rel_tol = 5e-16;
+constexpr double ode_initial_step = 1e-2;
 constexpr long double norm_rel_tol = 1e-18L;
 // Outer end of the normalisation integral and the tail of ln(r/R) beyond it.
 constexpr long double norm_R_end = 1e6L;
@@ -230,6 +231,35 @@ struct IsotropicSystem {
     dxds[1] = aR * onelog_slope(x[1], x[0], Rc, alpha_c);
   }
 };
+
+/// Integrates (S2) in s = ln r from (s, x) through the targets (sorted along `direction`),
+/// handing each target's state to emit(k, state). The main trajectory takes the step-size
+/// controller's own steps; every target gets one extra step from the last main point, no
+/// longer than the controller's current step. Dense targets therefore neither shorten the main
+/// steps nor accumulate rounding error along them.
+template <class Emit>
+void integrate_isotropic(const IsotropicSystem& system, State2 x, double s, double direction,
+                         const std::vector<double>& targets, Emit emit) {
+  using Stepper = odeint::runge_kutta_fehlberg78<State2>;
+  using Checker = odeint::default_error_checker<double, odeint::array_algebra,
+                                                odeint::default_operations>;
+  odeint::controlled_runge_kutta<Stepper> controlled(
+      Checker(std::numeric_limits<double>::min(), ode_rel_tol));
+  Stepper single;
+  double h = direction * ode_initial_step;
+  State2 y;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    int failures = 0;
+    while (direction * (targets[k] - s) > direction * h) {
+      if (controlled.try_step(system, x, s, h) == odeint::success)
+        failures = 0;
+      else if (++failures > 200)
+        throw std::runtime_error("OneLogTrumpet: step size control failed in (S2)");
+    }
+    single.do_step(system, x, s, y, targets[k] - s);
+    emit(k, y);
+  }
+}
 
 } // namespace
 
@@ -351,7 +381,7 @@ std::vector<TrumpetSample> OneLogTrumpet::at(std::span<const double> r) const {
   }
 
   // Integrate (S2) in ln r away from the Taylor region: outward through the sorted outer
-  // radii, inward through the sorted inner ones, stopping exactly at each of them.
+  // radii, inward through the sorted inner ones.
   const IsotropicSystem system{Rc, alpha_c_};
   const auto sweep = [&](std::vector<std::size_t>& idx, double v_start, double s_start,
                          double direction) {
@@ -360,23 +390,16 @@ std::vector<TrumpetSample> OneLogTrumpet::at(std::span<const double> r) const {
     std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
       return direction * ln_rho[a] < direction * ln_rho[b];
     });
-    std::vector<double> times;
-    times.reserve(idx.size() + 1);
-    times.push_back(s_start);
-    for (const std::size_t i : idx)
-      times.push_back(ln_rho[i]);
-    State2 x = {Rc + v_start, series_value(alpha_series_, v_start)};
-    std::size_t k = 0;
-    const auto observe = [&](const State2& y, double /*s*/) {
-      if (k > 0) {
-        const std::size_t i = idx[k - 1];
-        out[i] = {r[i], M_ * y[0], y[1], onelog_slope(y[1], y[0], Rc, alpha_c_) / M_};
-      }
-      ++k;
-    };
-    odeint::bulirsch_stoer<State2> stepper(std::numeric_limits<double>::min(), ode_rel_tol);
-    odeint::integrate_times(std::ref(stepper), system, x, times.begin(), times.end(),
-                            direction * 1e-2, observe);
+    std::vector<double> targets(idx.size());
+    for (std::size_t k = 0; k < idx.size(); ++k)
+      targets[k] = ln_rho[idx[k]];
+    const State2 x = {Rc + v_start, series_value(alpha_series_, v_start)};
+    integrate_isotropic(system, x, s_start, direction, targets,
+                        [&](std::size_t k, const State2& y) {
+                          const std::size_t i = idx[k];
+                          out[i] = {r[i], M_ * y[0], y[1],
+                                    onelog_slope(y[1], y[0], Rc, alpha_c_) / M_};
+                        });
   };
   sweep(outer, delta_, ln_r_plus_, 1.0);
   sweep(inner, -delta_, ln_r_minus_, -1.0);

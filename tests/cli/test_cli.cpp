@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -22,7 +23,9 @@ struct Result {
 };
 
 fs::path scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("gbssn1d_cli_" + name);
+  // per process: ctest runs test cases concurrently
+  const fs::path p =
+      fs::temp_directory_path() / ("gbssn1d_cli_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(p);
   return p;
 }

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <tuple>
+#include <unistd.h>
 
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
@@ -154,7 +155,8 @@ TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
 
 TEST_CASE("a run that becomes non-finite stops with where and when, keeping complete files") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "gbssn1d_test_nonfinite";
+  const fs::path dir =
+      fs::temp_directory_path() / ("gbssn1d_test_nonfinite_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   Params p;
