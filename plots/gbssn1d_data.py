@@ -1,0 +1,57 @@
+"""Reading gbssn1d ASCII output: columns are chosen by the names in the header, never by
+position. A file's last '#' line before the data names the columns; in profiles.dat each block
+opens with a '# t = <value>' line and blocks are separated by blank lines."""
+import sys
+
+import numpy as np
+
+
+def read_text(path):
+    """The text of a path, or of standard input for '-'."""
+    if path == '-':
+        return sys.stdin.read()
+    with open(path) as f:
+        return f.read()
+
+
+def parse(text):
+    """Returns (columns, blocks): blocks is a list of (t or None, 2D array)."""
+    columns, blocks = None, []
+    t, rows = None, []
+
+    def close():
+        nonlocal rows
+        if rows:
+            blocks.append((t, np.array(rows, dtype=float)))
+        rows = []
+
+    for line in text.splitlines():
+        s = line.strip()
+        if not s:
+            close()
+            continue
+        if s.startswith('#'):
+            if s.startswith('# t ='):
+                close()
+                t = float(s.split('=')[1])
+            elif rows == [] and not blocks:
+                columns = s[1:].split()
+            continue
+        rows.append([float(v) for v in s.split()])
+    close()
+    if columns is None or not blocks:
+        raise SystemExit('no gbssn1d data found (no column header or no rows)')
+    return columns, blocks
+
+
+def column(columns, data, name):
+    if name not in columns:
+        raise SystemExit(f"no column '{name}'; columns are: {' '.join(columns)}")
+    return data[:, columns.index(name)]
+
+
+def style(plt):
+    plt.rcParams.update({'figure.figsize': (7, 4.5), 'axes.grid': True, 'grid.alpha': 0.3,
+                         'font.size': 11, 'savefig.dpi': 120, 'axes.prop_cycle':
+                         plt.cycler(color=['#1f77b4', '#d62728', '#2ca02c', '#9467bd',
+                                           '#ff7f0e', '#8c564b', '#17becf'])})

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Runs runs/wormhole-1000M.toml into out/wormhole-1000M and compares its lapse with the
+# stationary 1+log trumpet; writes out/wormhole-1000M/*.png. Needs a build (tests/run or
+# runs/demo do that).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=out/wormhole-1000M
+rm -rf "$out" out/trumpet-reference
+/usr/bin/time -f "wall %e s" build/gbssn1d evolve --config runs/wormhole-1000M.toml --out "$out"
+build/gbssn1d evolve --id 1log-trumpet --tmax 0 --grid sinh --N 8000 --dr-inner 0.0005 \
+  --rmax 200 --out out/trumpet-reference 2>/dev/null
+py=/usr/bin/python3
+$py plots/compare_trumpet.py "$out/profiles.dat" out/trumpet-reference/profiles.dat \
+  -o "$out/alpha_vs_R.png" | tee "$out/trumpet_agreement.txt"
+$py plots/plot_series.py "$out/timeseries.dat" -y dtalpha_max_ext -y H_L2_ext --logy \
+  --title "wormhole -> trumpet" -o "$out/settling.png"
+$py plots/plot_series.py "$out/timeseries.dat" -y alpha_center -o "$out/alpha_center.png"
+tail -n 1 "$out/timeseries.dat"

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Runs each plot script on real gbssn1d output and checks that it writes a non-empty PNG.
+set -euo pipefail
+gbssn1d=$1 py=$2 plots=$3 dir=$4
+rm -rf "$dir" && mkdir -p "$dir"
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 100 --rmax 20 --tmax 2 --dt-profiles 1 \
+  --out "$dir/run" 2>/dev/null
+"$gbssn1d" evolve --id 1log-trumpet --tmax 0 --grid uniform --N 400 --rmax 20 \
+  --out "$dir/ref" 2>/dev/null
+"$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y H_L2_ext --logy -o "$dir/series.png"
+"$py" "$plots/plot_series.py" - -y alpha_center -o "$dir/stdin.png" < "$dir/run/timeseries.dat"
+"$py" "$plots/plot_profiles.py" "$dir/run/profiles.dat" -y alpha -y beta --times 0,2 -o "$dir/profiles.png"
+"$py" "$plots/compare_trumpet.py" "$dir/run/profiles.dat" "$dir/ref/profiles.dat" -o "$dir/cmp.png" >/dev/null
+for f in series stdin profiles cmp; do
+  [ -s "$dir/$f.png" ] || { echo "plot $f.png missing or empty"; exit 1; }
+  head -c 8 "$dir/$f.png" | grep -q PNG || { echo "$f.png is not a PNG"; exit 1; }
+done
+# a column that does not exist is an error naming it
+if "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y no_such -o "$dir/x.png" 2>"$dir/err"; then
+  echo "unknown column accepted"; exit 1
+fi
+grep -q no_such "$dir/err"
+echo "plot scripts: 4 figures written"
