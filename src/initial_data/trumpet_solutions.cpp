@@ -12,7 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <utility>
+#include <vector>
 
 #include <boost/math/tools/roots.hpp>
 // GCC (12) reports the copy of the steppers' not-yet-used scratch arrays inside Odeint as
@@ -67,7 +67,9 @@ double solve_bracketed(Function g, double lo, double hi, double g_lo, double g_h
 // R) keeps full relative precision in alpha as r -> 0.
 
 /// sqrt(4R^2 + 4R + 3), written so that it does not overflow for huge R.
-double maximal_sqrt_A(double R) { return R * std::sqrt(4.0 + (4.0 + 3.0 / R) / R); }
+double maximal_sqrt_A(double R) {
+  return R * std::sqrt(4.0 + (4.0 + 3.0 / R) / R);
+}
 
 /// ln r of the closed form r(R), as a function of u = 2R - 3.
 double maximal_ln_r(double u) {
@@ -217,24 +219,27 @@ Series onelog_alpha_series(double Rc, double alpha_c, std::size_t order) {
   return a;
 }
 
-// Order of the Taylor series and half-width of the region where it is used (units of M).
-// The series of alpha(R) about R_c converges for |v| < ~0.2, so at |v| <= 0.02 the truncation
-// error of the order-24 series is far below rounding.
+// Order of the Taylor series and half-width of the region where they are used (units of M).
+// The series of ln r converges for |v| < R_c - R_0 = 0.228 (1/alpha has a pole at R_0), that of
+// alpha for |v| < ~1.5; at |v| <= 0.02 the truncation error at order 24 is far below rounding.
+// Outside the region, the slope -F_R/F_alpha loses at most ~1e-15/|v| to rounding.
 constexpr std::size_t taylor_order = 24;
 constexpr double taylor_delta = 0.02;
-// Relative tolerances of the Runge-Kutta-Fehlberg 7(8) integrations.
+// Relative tolerance and first step of the Runge-Kutta-Fehlberg 7(8) integration of (S2) in
+// ln r, and the tolerance of the (long double) Bulirsch-Stoer normalisation integral.
 constexpr double ode_rel_tol = 5e-16;
 constexpr double ode_initial_step = 1e-2;
-constexpr long double norm_rel_tol = 1e-18L;
+constexpr long double norm_rel_tol =
+    std::max(1e-18L, 16.0L * std::numeric_limits<long double>::epsilon());
 // Outer end of the normalisation integral and the tail of ln(r/R) beyond it.
 constexpr long double norm_R_end = 1e6L;
 
-/// z(infinity) - z(R) for z = ln(r/R), with 1/alpha - 1 = (1 - 2/R)^{-1/2} - 1 + O(R^-4):
-/// sum_n binom(2n, n) 2^-n x^n / n, x = 1/R, plus O(x^4) from the C^2 term (negligible at
-/// R = 1e6).
+/// z(infinity) - z(R) for z = ln(r/R) = int (1/alpha - 1) d ln R, from (S1):
+/// 1/alpha - 1 = (1 - 2x)^{-1/2} - 1 + O(x^4) = x + (3/2) x^2 + (5/2) x^3 + O(x^4), x = 1/R.
+/// The neglected O(x^4) is ~1e-24 at R = 1e6.
 long double onelog_z_tail(long double R) {
   const long double x = 1.0L / R;
-  return x * (1.0L + x * (0.75L + x * (5.0L / 6.0L + x * (35.0L / 32.0L))));
+  return x * (1.0L + x * (0.75L + x * (5.0L / 6.0L)));
 }
 
 using State2 = std::array<double, 2>;
@@ -259,8 +264,8 @@ template <class Emit>
 void integrate_isotropic(const IsotropicSystem& system, State2 x, double s, double direction,
                          const std::vector<double>& targets, Emit emit) {
   using Stepper = odeint::runge_kutta_fehlberg78<State2>;
-  using Checker = odeint::default_error_checker<double, odeint::array_algebra,
-                                                odeint::default_operations>;
+  using Checker =
+      odeint::default_error_checker<double, odeint::array_algebra, odeint::default_operations>;
   odeint::controlled_runge_kutta<Stepper> controlled(
       Checker(std::numeric_limits<double>::min(), ode_rel_tol));
   Stepper single;
@@ -412,12 +417,11 @@ std::vector<TrumpetSample> OneLogTrumpet::at(std::span<const double> r) const {
     for (std::size_t k = 0; k < idx.size(); ++k)
       targets[k] = ln_rho[idx[k]];
     const State2 x = {Rc + v_start, series_value(alpha_series_, v_start)};
-    integrate_isotropic(system, x, s_start, direction, targets,
-                        [&](std::size_t k, const State2& y) {
-                          const std::size_t i = idx[k];
-                          out[i] = {r[i], M_ * y[0], y[1],
-                                    onelog_slope(y[1], y[0], Rc, alpha_c_) / M_};
-                        });
+    integrate_isotropic(
+        system, x, s_start, direction, targets, [&](std::size_t k, const State2& y) {
+          const std::size_t i = idx[k];
+          out[i] = {r[i], M_ * y[0], y[1], onelog_slope(y[1], y[0], Rc, alpha_c_) / M_};
+        });
   };
   sweep(outer, delta_, ln_r_plus_, 1.0);
   sweep(inner, -delta_, ln_r_minus_, -1.0);

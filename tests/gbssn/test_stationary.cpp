@@ -72,6 +72,8 @@ void check_order(const std::string& name, const std::function<State(const Grid&)
     }
     const double p = fit_order(h, e);
     INFO("fitted order " << p);
+    MESSAGE(name << ": d_t " << info(v).name << " fitted order " << p << " (max " << e.front()
+                 << " -> " << e.back() << ")");
     CHECK(p >= min_order);
     CHECK(p <= max_order);
     CHECK(e.back() < 1e-4);

@@ -85,6 +85,9 @@ void check_orders(const std::function<Grid(std::size_t)>& make) {
     eadv_plus.push_back(plus.adv);
     eadv_minus.push_back(minus.adv);
   }
+  MESSAGE("derivative orders: d1 " << fit_order(h, e1) << ", d2 " << fit_order(h, e2)
+                                   << ", upwind(+) " << fit_order(h, eadv_plus) << ", upwind(-) "
+                                   << fit_order(h, eadv_minus));
   CHECK(fit_order(h, e1) == doctest::Approx(4.0).epsilon(0.1));
   CHECK(fit_order(h, e2) == doctest::Approx(4.0).epsilon(0.1));
   CHECK(fit_order(h, eadv_plus) == doctest::Approx(4.0).epsilon(0.1));
