@@ -98,6 +98,25 @@ void validate(const Params& p) {
   if (p.norm_rmax > p.rmax)
     throw ParamError("--norm-rmax", num(p.norm_rmax), "must not exceed --rmax");
 
+  require_finite("--rahA", p.rahA);
+  require_positive("--rah0", p.rah0);
+  require_positive("--rah-width", p.rah_width);
+  if (p.ah_every != "substage" && p.ah_every != "step") {
+    const bool integer = !p.ah_every.empty()
+                         && std::all_of(p.ah_every.begin(), p.ah_every.end(),
+                                        [](char c) { return c >= '0' && c <= '9'; });
+    if (!integer || std::stol(p.ah_every) < 1)
+      throw ParamError("--ah-every", p.ah_every,
+                       "must be 'substage', 'step' or a positive number of steps");
+  }
+  require_finite("--ah-tmin", p.ah_tmin);
+  require_finite("--ah-tmax", p.ah_tmax);
+  if (p.ah_tmin < 0.0)
+    throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
+  if (p.ah_tmax >= 0.0 && p.ah_tmax < p.ah_tmin)
+    throw ParamError("--ah-tmax", num(p.ah_tmax), "must be >= --ah-tmin (or < 0: no limit)");
+  require_positive("--ah-tol", p.ah_tol);
+
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = p.cfl * make_grid(p).min_spacing();
   if (p.eta * dt > eta_dt_max)
@@ -153,11 +172,24 @@ RhsParams rhs_params(const Params& p) {
   r.gauge.advective_shift = p.advective_shift;
   r.gauge.advective_lapse = !p.non_advective_lapse;
   r.ko_sigma = p.ko_sigma;
+  r.horizon_shift.A = p.rahA;
+  r.horizon_shift.h = p.rah0;
+  r.horizon_shift.width = p.rah_width;
+  r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
+  r.horizon_shift.finder.tolerance = p.ah_tol;
   return r;
 }
 
 double time_step(const Params& p, const Grid& grid) {
   return p.cfl * grid.min_spacing();
+}
+
+long ah_every_steps(const Params& p) {
+  if (p.ah_every == "substage")
+    return 0;
+  if (p.ah_every == "step")
+    return 1;
+  return std::stol(p.ah_every);
 }
 
 } // namespace gbssn1d

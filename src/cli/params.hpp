@@ -34,6 +34,14 @@ struct Params {
   // diagnostics
   double norm_rmin = 1.0;
   double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)
+  // apparent horizon and the horizon-adjusting shift (Sec. 6, Sec. 14)
+  double rahA = 0.0;                 ///< strength A of beta_H (0: no horizon shift)
+  double rah0 = 0.89;                ///< desired coordinate radius h of the horizon (M)
+  double rah_width = 1.0;            ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
+  std::string ah_every = "substage"; ///< substage | step | n (every n steps)
+  double ah_tmin = 0.0;              ///< searches are made for ah-tmin <= t ...
+  double ah_tmax = -1.0;             ///< ... <= ah-tmax; < 0: until the end
+  double ah_tol = 1e-12;             ///< root-finder tolerance in r (M)
   // output
   std::string out;
   bool force = false;
@@ -65,5 +73,8 @@ Grid make_grid(const Params& p);
 InitialDataParams initial_data_params(const Params& p);
 RhsParams rhs_params(const Params& p);
 double time_step(const Params& p, const Grid& grid);
+
+/// How often h_AH is searched for: at every RK substage (0), or every n >= 1 full steps.
+long ah_every_steps(const Params& p);
 
 } // namespace gbssn1d

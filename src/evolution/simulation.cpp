@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <utility>
 
 namespace gbssn1d {
@@ -26,7 +27,56 @@ Schedule make_schedule(const Params& p, const Grid& grid) {
 Simulation::Simulation(const Params& p)
     : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
       diagnostic_rhs_(*grid_, rhs_params(p)), u_(initial_data(*grid_, initial_data_params(p))),
-      schedule_(make_schedule(p, *grid_)) {}
+      schedule_(make_schedule(p, *grid_)), ah_every_(ah_every_steps(p)) {}
+
+bool Simulation::in_search_window(double t) const {
+  return t >= params_.ah_tmin && (params_.ah_tmax < 0.0 || t <= params_.ah_tmax);
+}
+
+HorizonSearch Simulation::horizons() const {
+  HorizonFinderParams finder;
+  finder.tolerance = params_.ah_tol;
+  return find_horizons(u_, *grid_, finder);
+}
+
+std::optional<double> Simulation::horizon_radius() {
+  if (!rhs_.params().horizon_shift.active())
+    return std::nullopt;
+  if (ah_every_ == 0 && in_search_window(t_)) {
+    const auto& hs = rhs_.params().horizon_shift;
+    const auto found =
+        find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+    return found ? std::optional<double>(found->r) : std::nullopt;
+  }
+  return rhs_.horizon_radius();
+}
+
+std::vector<double> Simulation::horizon_shift() {
+  std::vector<double> beta_H;
+  horizon_shift_profile(u_, *grid_, rhs_.params().horizon_shift, horizon_radius(), beta_H);
+  return beta_H;
+}
+
+void Simulation::update_held_horizon() {
+  const auto& hs = rhs_.params().horizon_shift;
+  if (!hs.active() || ah_every_ == 0 || !in_search_window(t_))
+    return;
+  const auto found = find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+  // Without a horizon the held value is dropped: beta_H = 0 until one is found.
+  rhs_.set_horizon_radius(found ? std::optional<double>(found->r) : std::nullopt);
+}
+
+void Simulation::report_horizon(const std::optional<MarginalSurface>& h) {
+  if (reported_ && h.has_value() == had_horizon_)
+    return;
+  if (h)
+    fmt::print(stderr, "gbssn1d: apparent horizon at t = {:.6g}: r = {:.6g}, M_AH = {:.10g}\n", t_,
+               h->r, h->mass);
+  else
+    fmt::print(stderr, "gbssn1d: no apparent horizon found at t = {:.6g}\n", t_);
+  had_horizon_ = h.has_value();
+  reported_ = true;
+}
 
 SeriesRow Simulation::series_row(const DerivedProfiles& d) {
   const Grid& g = *grid_;
@@ -40,8 +90,12 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d) {
   row.M_L2_ext = l2_norm(d.M_r, g, params_.norm_rmin, params_.norm_rmax);
   row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
   row.G_L2_ext = l2_norm(d.G_r, g, params_.norm_rmin, params_.norm_rmax);
+  diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
   diagnostic_rhs_(u_, dudt_, t_);
   const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
+  const auto horizon = horizons().horizon();
+  row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
+  row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
   row.dtalpha_max_ext = 0.0;
   for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
     if (g.r()[i] >= params_.norm_rmin && g.r()[i] <= params_.norm_rmax)
@@ -68,12 +122,17 @@ void Simulation::run(Output* out) {
     if (!out || !(series || profiles))
       return;
     const DerivedProfiles d = derived_profiles(u_, *grid_);
-    if (series)
+    if (series) {
+      const HorizonSearch found = horizons();
+      report_horizon(found.horizon());
       out->write_series(series_row(d));
+      out->write_horizons(t_, found);
+    }
     if (profiles)
-      out->write_profiles(t_, u_, *grid_, d);
+      out->write_profiles(t_, u_, *grid_, d, horizon_shift());
   };
   check_finite();
+  update_held_horizon();
   write(true, true);
   const double t_end = params_.tmax;
   for (long n = 1; n <= s.n_steps; ++n) {
@@ -81,6 +140,8 @@ void Simulation::run(Output* out) {
     step(last ? t_end - t_ : s.dt);
     t_ = last ? t_end : static_cast<double>(n) * s.dt; // no accumulated round-off in t
     check_finite();
+    if (ah_every_ > 0 && n % ah_every_ == 0)
+      update_held_horizon();
     write(last || n % s.steps_per_series == 0, last || n % s.steps_per_profile == 0);
   }
 }

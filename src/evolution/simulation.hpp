@@ -10,8 +10,10 @@
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -56,10 +58,24 @@ public:
   /// One RK4 step of size dt.
   void step(double dt);
 
+  /// The horizon radius h_AH that the horizon shift uses for the current state: found on it
+  /// (substage mode) or the value held since the last search. nullopt: no horizon (beta_H = 0).
+  std::optional<double> horizon_radius();
+  /// beta_H on every point for the current state.
+  std::vector<double> horizon_shift();
+  /// Every marginal surface of the current state.
+  HorizonSearch horizons() const;
+
   /// The first non-finite value of the state, if any: throws NonFiniteError.
   void check_finite() const;
 
 private:
+  bool in_search_window(double t) const;
+  /// Held mode: search for the horizon and hold its radius for the RHS.
+  void update_held_horizon();
+  /// Say on stderr when the horizon appears or disappears.
+  void report_horizon(const std::optional<MarginalSurface>& h);
+
   Params params_;
   std::unique_ptr<Grid> grid_;
   GbssnRhs rhs_;
@@ -69,6 +85,9 @@ private:
   double t_ = 0.0;
   Schedule schedule_;
   boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers
+  long ah_every_;            ///< 0: every substage; n >= 1: every n steps
+  bool had_horizon_ = false; ///< for messages when the horizon appears/disappears
+  bool reported_ = false;
 };
 
 } // namespace gbssn1d

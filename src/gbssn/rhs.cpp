@@ -3,6 +3,7 @@
 #include "fd/stencils.hpp"
 
 #include <array>
+#include <cmath>
 
 namespace gbssn1d {
 
@@ -100,18 +101,54 @@ PointData point_data(const State& u, const Grid& grid, std::size_t i) {
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {}
 
-void GbssnRhs::operator()(const State& u, State& dudt, double /*t*/) {
+void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
+                           std::optional<double> h_AH, std::vector<double>& beta_H) {
+  beta_H.assign(grid.n_total(), 0.0);
+  if (!h_AH || params.A == 0.0)
+    return;
+  const auto chi = field(u, grid, Var::chi);
+  const auto a = field(u, grid, Var::a);
+  const double amplitude = params.A * (*h_AH - params.h);
+  for (std::size_t i = 0; i < grid.n_total(); ++i) {
+    const double q = grid.r()[i] / params.width;
+    const double f = q / (1.0 + q * q);          // f(r), odd
+    const double s_r = std::sqrt(chi[i] / a[i]); // unit radial normal, even
+    beta_H[i] = f * amplitude * s_r;             // (H3)
+  }
+}
+
+void GbssnRhs::operator()(const State& u, State& dudt, double t) {
   dudt.resize(u.size());
-  interior(u, dudt);
+  const HorizonShiftParams& hs = params_.horizon_shift;
+  if (!hs.active()) {
+    interior<false>(u, dudt);
+  } else {
+    const bool in_window = t >= hs.t_min && (hs.t_max < 0.0 || t <= hs.t_max);
+    if (hs.search_every_substage && in_window) {
+      const auto found = find_horizon_near(u, *grid_, hs.finder, h_AH_.value_or(hs.h));
+      h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+    }
+    horizon_shift_profile(u, *grid_, hs, h_AH_, beta_H_);
+    const auto beta_GD = field(u, *grid_, Var::beta);
+    beta_full_.resize(grid_->n_total());
+    for (std::size_t i = 0; i < beta_full_.size(); ++i)
+      beta_full_[i] = beta_GD[i] + beta_H_[i];
+    interior<true>(u, dudt);
+  }
   outer_boundary(u, dudt);
   origin_ghosts(dudt);
   ++evaluations_;
 }
 
+template <bool with_horizon_shift>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
-  const Rows in(u, g);
+  // With the horizon shift every term sees the full shift beta_GD + beta_H ...
+  Rows in(u, g);
+  const double* const beta_GD = in.beta;
+  if constexpr (with_horizon_shift)
+    in.beta = beta_full_.data();
   double* const out_alpha = dudt.data() + index(Var::alpha) * nt;
   double* const out_beta = dudt.data() + index(Var::beta) * nt;
   double* const out_B = dudt.data() + index(Var::B) * nt;
@@ -137,10 +174,26 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
 #pragma GCC ivdep
   for (std::size_t i = begin; i < end; ++i) {
     const PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
-    const Rhs rhs = gbssn_rhs(p, gauge);
+    Rhs rhs;
+    if constexpr (with_horizon_shift) {
+      // ... except the Gamma-driver: B follows d_t Delta^r of beta_GD alone (H2), and the
+      // evolved variable is beta_GD.
+      const double d1_scale = inv_dx * inv_rx[i];
+      const double* f = beta_GD + i;
+      Shift gd;
+      gd.beta = f[0];
+      gd.d_beta = fd::d1_centred(f) * d1_scale;
+      gd.dd_beta = fd::d2_centred(f) * d1_scale * d1_scale + fd::d1_centred(f) * inv_dx * d2_fx[i];
+      gd.adv_Delta_r = fd::advect(gd.beta * d1_scale, in.Delta_r + i);
+      rhs = gbssn_rhs(p, gauge, gd);
+      const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
+      rhs.beta = 0.75 * p.B + shift_advection * fd::advect(p.beta * d1_scale, f);
+    } else {
+      rhs = gbssn_rhs(p, gauge);
+    }
     const double ko = ko_scale * inv_rx[i];
     out_alpha[i] = rhs.alpha + ko * fd::ko6(in.alpha + i);
-    out_beta[i] = rhs.beta + ko * fd::ko6(in.beta + i);
+    out_beta[i] = rhs.beta + ko * fd::ko6(beta_GD + i);
     out_B[i] = rhs.B + ko * fd::ko6(in.B + i);
     out_chi[i] = rhs.chi + ko * fd::ko6(in.chi + i);
     out_a[i] = rhs.a + ko * fd::ko6(in.a + i);

@@ -4,23 +4,28 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 namespace gbssn1d {
 
 std::vector<std::string> series_columns() {
-  return {"t",        "alpha_center", "H_L2",     "H_L2_ext",       "M_L2",
-          "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext"};
+  return {"t",        "alpha_center",    "H_L2", "H_L2_ext", "M_L2", "M_L2_ext", "G_L2",
+          "G_L2_ext", "dtalpha_max_ext", "r_ah", "M_ah"};
 }
 
 std::vector<std::string> profile_columns() {
   std::vector<std::string> cols{"r"};
   for (const auto& entry : registry)
     cols.emplace_back(entry.name);
-  for (const char* name : {"H", "M_r", "G_r", "R_areal", "Theta_plus"})
+  for (const char* name : {"H", "M_r", "G_r", "R_areal", "Theta_plus", "beta_GD", "beta_H"})
     cols.emplace_back(name);
   return cols;
+}
+
+std::vector<std::string> horizon_columns() {
+  return {"t", "r_ah", "R_ah", "M_ah", "n_roots", "r_root2", "R_root2", "r_root3", "R_root3"};
 }
 
 std::string header_text(const std::string& parameter_header) {
@@ -56,17 +61,43 @@ void DataFile::flush() {
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
     : series_(dir / "timeseries.dat", parameter_header, series_columns()),
-      profiles_(dir / "profiles.dat", parameter_header, profile_columns()) {}
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns()),
+      horizons_(dir / "horizon.dat",
+                parameter_header
+                    + "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost "
+                      "zero of Theta_+ with Theta_+ < 0 inside; NaN if none); n_roots counts every "
+                      "zero of Theta_+; r_root2/3, R_root2/3 are the next zeros inwards (NaN if "
+                      "none)\n",
+                horizon_columns()) {}
 
 void Output::write_series(const SeriesRow& row) {
   fmt::print(series_.handle(),
-             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n", row.t,
-             row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
-             row.G_L2_ext, row.dtalpha_max_ext);
+             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
+             "{:.16e} {:.16e} {:.16e}\n",
+             row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+             row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah);
   series_.flush();
 }
 
-void Output::write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d) {
+void Output::write_horizons(double t, const HorizonSearch& search) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto horizon = search.horizon();
+  // the zeros inside the horizon (or all of them, without one), outermost first
+  std::vector<const MarginalSurface*> others;
+  for (const auto& s : search.surfaces)
+    if (!horizon || s.r < horizon->r)
+      others.push_back(&s);
+  auto r_of = [&](std::size_t k) { return k < others.size() ? others[k]->r : nan; };
+  auto R_of = [&](std::size_t k) { return k < others.size() ? others[k]->R_areal : nan; };
+  fmt::print(
+      horizons_.handle(), "{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e}\n", t,
+      horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan, horizon ? horizon->mass : nan,
+      search.surfaces.size(), r_of(0), R_of(0), r_of(1), R_of(1));
+  horizons_.flush();
+}
+
+void Output::write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
+                            const std::vector<double>& beta_H) {
   std::FILE* f = profiles_.handle();
   // gnuplot's `index` separates blocks by two blank lines.
   if (!first_block_)
@@ -78,9 +109,12 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     const std::size_t i = grid.first_interior() + k;
     line.clear();
     fmt::format_to(std::back_inserter(line), "{:.16e}", grid.r()[i]);
-    for (const auto& entry : registry)
-      fmt::format_to(std::back_inserter(line), " {:.16e}", field(u, grid, entry.var)[i]);
-    for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k]})
+    const double beta_GD = field(u, grid, Var::beta)[i];
+    for (const auto& entry : registry) {
+      const double v = entry.var == Var::beta ? beta_GD + beta_H[i] : field(u, grid, entry.var)[i];
+      fmt::format_to(std::back_inserter(line), " {:.16e}", v);
+    }
+    for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]})
       fmt::format_to(std::back_inserter(line), " {:.16e}", v);
     line.push_back('\n');
     std::fwrite(line.data(), 1, line.size(), f);

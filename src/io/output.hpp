@@ -7,6 +7,7 @@
 #include "diagnostics/constraints.hpp"
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
+#include "horizon/apparent_horizon.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -19,11 +20,13 @@ namespace gbssn1d {
 struct SeriesRow {
   double t, alpha_center, H_L2, H_L2_ext, M_L2, M_L2_ext, G_L2, G_L2_ext;
   double dtalpha_max_ext; ///< max |d_t alpha| over the exterior region (settling)
+  double r_ah, M_ah;      ///< apparent horizon (NaN when none is found)
 };
 
 /// Column names, in order.
 std::vector<std::string> series_columns();
 std::vector<std::string> profile_columns();
+std::vector<std::string> horizon_columns();
 
 /// A text file with the standard header. Closes on destruction.
 class DataFile {
@@ -47,11 +50,16 @@ public:
   Output(const std::filesystem::path& dir, const std::string& parameter_header);
 
   void write_series(const SeriesRow& row);
-  void write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d);
+  /// `beta_H` is the horizon-adjusting shift on every point (the column `beta` is the full
+  /// shift beta_GD + beta_H, `beta_GD` the evolved part).
+  void write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
+                      const std::vector<double>& beta_H);
+  void write_horizons(double t, const HorizonSearch& search);
 
 private:
   DataFile series_;
   DataFile profiles_;
+  DataFile horizons_;
   bool first_block_ = true;
 };
 

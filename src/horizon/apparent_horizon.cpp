@@ -1,0 +1,134 @@
+#include "horizon/apparent_horizon.hpp"
+
+#include "gbssn/equations.hpp"
+#include "gbssn/rhs.hpp"
+
+#include <boost/math/tools/roots.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbssn1d {
+
+namespace {
+
+constexpr std::size_t stencil = 6; // points of the Lagrange interpolant
+
+/// 6-point Lagrange interpolation in x of values f[k0 ... k0+5] at nodes x[k0 ...].
+double lagrange6(const std::vector<double>& x, const std::vector<double>& f, std::size_t k0,
+                 double xi) {
+  double sum = 0.0;
+  for (std::size_t j = k0; j < k0 + stencil; ++j) {
+    double w = 1.0;
+    for (std::size_t m = k0; m < k0 + stencil; ++m)
+      if (m != j)
+        w *= (xi - x[m]) / (x[j] - x[m]);
+    sum += w * f[j];
+  }
+  return sum;
+}
+
+/// First node of the interpolation stencil around the interval [k, k+1], kept inside [0, n).
+std::size_t stencil_start(std::size_t k, std::size_t n) {
+  const std::size_t half = stencil / 2 - 1; // nodes k-2 ... k+3
+  const std::size_t start = k >= half ? k - half : 0;
+  return std::min(start, n - stencil);
+}
+
+} // namespace
+
+std::vector<double> expansion_profile(const State& u, const Grid& grid) {
+  std::vector<double> theta(grid.n_interior());
+  for (std::size_t k = 0; k < theta.size(); ++k)
+    theta[k] = expansion_plus(point_data(u, grid, grid.first_interior() + k));
+  return theta;
+}
+
+std::optional<MarginalSurface> HorizonSearch::horizon() const {
+  for (const auto& s : surfaces)
+    if (s.outer)
+      return s;
+  return std::nullopt;
+}
+
+namespace {
+
+/// Scans the intervals [k-1, k] for k_lo < k <= k_hi (interior indices), from the outside in.
+HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& params,
+                   std::size_t k_lo, std::size_t k_hi, bool stop_at_first_outer) {
+  const std::size_t n = grid.n_interior();
+  std::vector<double> x(n), theta(n), R(n);
+  // values on the scanned points and the interpolation stencils around them
+  const std::size_t fill_lo = k_lo >= stencil ? k_lo - stencil : 0;
+  const std::size_t fill_hi = std::min(n, k_hi + stencil + 1);
+  for (std::size_t k = fill_lo; k < fill_hi; ++k) {
+    const std::size_t i = grid.first_interior() + k;
+    const PointData p = point_data(u, grid, i);
+    x[k] = grid.x()[i];
+    theta[k] = expansion_plus(p);
+    R[k] = areal_radius(p);
+  }
+  HorizonSearch result;
+  for (std::size_t k = k_hi; k > k_lo; --k) {
+    const std::size_t lo = k - 1;
+    if (grid.r()[grid.first_interior() + k] < params.r_min)
+      break;
+    const double f_lo = theta[lo], f_hi = theta[k];
+    if (!(std::isfinite(f_lo) && std::isfinite(f_hi)))
+      continue;
+    if ((f_lo < 0.0) == (f_hi < 0.0) && f_lo != 0.0)
+      continue;
+    const std::size_t k0 = std::max(stencil_start(lo, n), fill_lo);
+    auto theta_of_x = [&](double xi) { return lagrange6(x, theta, k0, xi); };
+    double x_root;
+    if (f_lo == 0.0) {
+      x_root = x[lo];
+    } else {
+      // tolerance in x equivalent to params.tolerance in r
+      const double tol_x = params.tolerance / grid.map().dr_dx(x[lo]);
+      auto done = [tol_x](double a, double b) { return std::abs(b - a) <= tol_x; };
+      std::uintmax_t iterations = 100;
+      const auto [a, b] = boost::math::tools::toms748_solve(
+          theta_of_x, x[lo], x[k], theta_of_x(x[lo]), theta_of_x(x[k]), done, iterations);
+      x_root = 0.5 * (a + b);
+    }
+    MarginalSurface s;
+    s.r = grid.map().r(x_root);
+    s.R_areal = lagrange6(x, R, k0, x_root);
+    s.mass = 0.5 * s.R_areal;
+    s.outer = f_lo < 0.0 && f_hi >= 0.0;
+    result.surfaces.push_back(s);
+    if (stop_at_first_outer && s.outer)
+      break;
+  }
+  return result;
+}
+
+constexpr std::size_t k_first = 3; // skip the innermost cells: Theta_+ ~ 2/r there
+
+} // namespace
+
+HorizonSearch find_horizons(const State& u, const Grid& grid, const HorizonFinderParams& params) {
+  return scan(u, grid, params, k_first, grid.n_interior() - 1, false);
+}
+
+std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& grid,
+                                                 const HorizonFinderParams& params, double r_seed,
+                                                 std::size_t window) {
+  const std::size_t n = grid.n_interior();
+  const auto& r = grid.r();
+  const auto it =
+      std::lower_bound(r.begin() + static_cast<std::ptrdiff_t>(grid.first_interior()),
+                       r.begin() + static_cast<std::ptrdiff_t>(grid.end_interior()), r_seed);
+  const std::size_t k_seed = static_cast<std::size_t>(it - r.begin()) - grid.first_interior();
+  const std::size_t k_lo = std::max(k_first, k_seed > window ? k_seed - window : 0);
+  const std::size_t k_hi = std::min(n - 1, k_seed + window);
+  if (k_hi > k_lo) {
+    const auto local = scan(u, grid, params, k_lo, k_hi, true).horizon();
+    if (local)
+      return local;
+  }
+  return scan(u, grid, params, k_first, n - 1, true).horizon();
+}
+
+} // namespace gbssn1d

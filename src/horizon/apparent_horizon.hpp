@@ -1,0 +1,50 @@
+// Apparent horizons: zeros of the outgoing expansion Theta_+(r) of the spheres r = const
+// (equations document, Sec. 6, (T1)-(T3)).
+//
+// Theta_+ and the areal radius are computed at the grid points (4th-order derivatives) and
+// interpolated between them by 6-point Lagrange interpolation in the uniform coordinate x
+// (6th order, so the finder adds nothing to the 4th-order truncation error). Sign changes are
+// bracketed by a scan over the grid and refined by Boost.Math's TOMS 748.
+#pragma once
+
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace gbssn1d {
+
+struct MarginalSurface {
+  double r;       ///< coordinate radius
+  double R_areal; ///< areal radius
+  double mass;    ///< R_areal / 2
+  bool outer;     ///< Theta_+ < 0 inside, > 0 outside (an outer trapping boundary)
+};
+
+struct HorizonSearch {
+  /// Every zero of Theta_+, outermost first.
+  std::vector<MarginalSurface> surfaces;
+  /// The apparent horizon: the outermost zero with Theta_+ < 0 just inside, if any.
+  std::optional<MarginalSurface> horizon() const;
+};
+
+struct HorizonFinderParams {
+  double tolerance = 1e-13; ///< absolute tolerance of the root in r (M)
+  double r_min = 0.0;       ///< scan only r >= r_min (keeps clear of the puncture)
+};
+
+/// Finds every marginally trapped sphere on the grid (interior points; the innermost three
+/// cells are skipped, where Theta_+ ~ 2/r is not resolved).
+HorizonSearch find_horizons(const State& u, const Grid& grid, const HorizonFinderParams& params);
+
+/// The apparent horizon only, searched first within `window` cells of `r_seed` (the previous
+/// location), then, if none is found there, over the whole grid.
+std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& grid,
+                                                 const HorizonFinderParams& params, double r_seed,
+                                                 std::size_t window = 8);
+
+/// Theta_+ at the interior points (index 0 ... N-1).
+std::vector<double> expansion_profile(const State& u, const Grid& grid);
+
+} // namespace gbssn1d
