@@ -53,7 +53,7 @@ TEST_CASE("apparent horizon of the three initial data: M_AH converges to M at or
     }
     const double p = fit_order(h, err);
     MESSAGE(std::string(id) << ": |M_AH - M| = " << err[0] << ", " << err[1] << ", " << err[2]
-               << "; fitted order " << p << "; r_AH = " << r_ah_finest);
+                            << "; fitted order " << p << "; r_AH = " << r_ah_finest);
     CHECK(p >= 3.6);
     CHECK(err.back() < 1e-6); // spacing M/64
     if (std::string(id) == "wormhole")

@@ -1,0 +1,122 @@
+// The horizon-adjusting shift (equations document, Sec. 14) and the horizon during evolutions.
+#include "evolution/simulation.hpp"
+#include "horizon/apparent_horizon.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace gbssn1d;
+
+namespace {
+
+Params trumpet_run(int n, double tmax) {
+  Params p;
+  p.id = "1log-trumpet";
+  p.grid = "uniform";
+  p.N = n;
+  p.rmax = 20.0;
+  p.tmax = tmax;
+  p.dt_series = 1.0;
+  return p;
+}
+
+Simulation make(Params p) {
+  resolve_defaults(p);
+  validate(p);
+  return Simulation(p);
+}
+
+double horizon_radius(const Simulation& sim) {
+  return sim.horizons().horizon()->r;
+}
+
+} // namespace
+
+TEST_CASE("rahA = 0 is bit-for-bit the run without the horizon shift") {
+  Params plain = trumpet_run(200, 3.0);
+  plain.id = "maximal-trumpet";
+  Params with = plain;
+  with.rahA = 0.0;
+  with.rah0 = 0.6;
+  with.ah_every = "substage";
+  with.rah_width = 2.0;
+  Simulation a = make(plain), b = make(with);
+  a.run(nullptr);
+  b.run(nullptr);
+  REQUIRE(a.state().size() == b.state().size());
+  bool identical = true;
+  for (std::size_t k = 0; k < a.state().size(); ++k)
+    identical = identical && a.state()[k] == b.state()[k];
+  CHECK(identical);
+}
+
+TEST_CASE("beta_H vanishes where h_AH = h, is odd in r, and has the sign of A (h_AH - h)") {
+  Simulation sim = make(trumpet_run(200, 0.0));
+  const Grid& g = sim.grid();
+  HorizonShiftParams hs;
+  hs.A = 0.5;
+  hs.h = 0.8;
+  std::vector<double> beta_H;
+  horizon_shift_profile(sim.state(), g, hs, 0.8, beta_H);
+  for (double v : beta_H)
+    CHECK(v == 0.0);
+  horizon_shift_profile(sim.state(), g, hs, std::nullopt, beta_H); // no horizon: no shift
+  for (double v : beta_H)
+    CHECK(v == 0.0);
+
+  horizon_shift_profile(sim.state(), g, hs, 0.9, beta_H); // h_AH > h: beta_H > 0 (outward)
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
+    CHECK(beta_H[i] > 0.0);
+  for (std::size_t i = 0; i < Grid::n_ghost; ++i)
+    CHECK(beta_H[i] == doctest::Approx(-beta_H[Grid::mirror(i)]).epsilon(1e-14));
+  // the value: f(r) A (h_AH - h) sqrt(chi/a) at one point
+  const std::size_t i = g.first_interior() + 40;
+  const double r = g.r()[i];
+  const double chi = field(sim.state(), g, Var::chi)[i], a = field(sim.state(), g, Var::a)[i];
+  CHECK(beta_H[i] == doctest::Approx(r / (1 + r * r) * 0.5 * 0.1 * std::sqrt(chi / a)));
+}
+
+TEST_CASE("the horizon moves outward in r when h > h_AH and inward when h < h_AH") {
+  const double r0 = horizon_radius(make(trumpet_run(400, 0.0))); // 0.83 M
+  for (const char* every : {"substage", "4"}) {
+    Params out = trumpet_run(400, 15.0);
+    out.rahA = 0.5;
+    out.rah0 = 0.95;
+    out.ah_every = every;
+    Params in = out;
+    in.rah0 = 0.65;
+    Simulation grow = make(out), shrink = make(in);
+    grow.run(nullptr);
+    shrink.run(nullptr);
+    MESSAGE("ah-every " << std::string(every) << ": r_AH from " << r0 << " to "
+                        << horizon_radius(grow) << " (h = 0.95) and " << horizon_radius(shrink)
+                        << " (h = 0.65)");
+    CHECK(horizon_radius(grow) > r0 + 0.02);
+    CHECK(horizon_radius(shrink) < r0 - 0.02);
+    // the mass does not care about the coordinates
+    CHECK(grow.horizons().horizon()->mass == doctest::Approx(1.0).epsilon(1e-4));
+    CHECK(shrink.horizons().horizon()->mass == doctest::Approx(1.0).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("during a 1+log trumpet evolution M_AH and r_AH stay where the data put them") {
+  // spacing M/64 near the horizon
+  Simulation sim = make(trumpet_run(1280, 10.0));
+  const auto h0 = sim.horizons().horizon();
+  REQUIRE(h0);
+  double worst_M = std::abs(h0->mass - 1.0), worst_r = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    const double dt = sim.schedule().dt;
+    for (long s = 0; s < sim.schedule().steps_per_series * 1; ++s)
+      sim.step(dt);
+    const auto h = sim.horizons().horizon();
+    REQUIRE(h);
+    worst_M = std::max(worst_M, std::abs(h->mass - 1.0));
+    worst_r = std::max(worst_r, std::abs(h->r - h0->r));
+  }
+  MESSAGE("1+log trumpet to t = " << sim.time() << ": max |M_AH - M| = " << worst_M
+                                  << ", max |r_AH(t) - r_AH(0)| = " << worst_r);
+  CHECK(worst_M < 1e-6);
+  CHECK(worst_r < 1e-6);
+}
