@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Convergence of a constraint norm over time from runs of one configuration at increasing N.
+
+  constraint_orders.py A/timeseries.dat B/timeseries.dat C/timeseries.dat [-y H_L2_ext]
+      [--times 5,10,20,50,100] [-o orders.png]
+
+For a quantity whose exact value is zero the order between resolutions N1 < N2 is
+p = ln(E1/E2) / ln(N2/N1) (equations document, Sec. 15); N is read from each file's header.
+Prints the norms and the pairwise orders at the chosen times; with -o also draws the norms
+against t (top) and the pairwise orders against t (bottom).
+"""
+import argparse
+import math
+
+import numpy as np
+
+from gbssn1d_data import column, parse, read_text, style
+from plot_horizons import header_params
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('files', nargs='+')
+    ap.add_argument('-y', default='H_L2_ext')
+    ap.add_argument('--times', default='5,10,20,30,50,75,100')
+    ap.add_argument('--title', default='')
+    ap.add_argument('-o', '--output')
+    a = ap.parse_args()
+    runs = []
+    for path in a.files:
+        text = read_text(path)
+        n = int(header_params(text)['N'])
+        columns, blocks = parse(text)
+        data = blocks[0][1]
+        runs.append((n, column(columns, data, 't'), column(columns, data, a.y)))
+    runs.sort(key=lambda run: run[0])
+    t = runs[0][1]
+    length = min(len(run[1]) for run in runs)
+    t = t[:length]
+    E = [run[2][:length] for run in runs]
+    Ns = [run[0] for run in runs]
+    orders = [np.log(E[k] / E[k + 1]) / math.log(Ns[k + 1] / Ns[k]) for k in range(len(runs) - 1)]
+    print(f'# {a.y} at N = {" ".join(map(str, Ns))} and pairwise orders')
+    print('# t ' + ' '.join(f'{a.y}_N{n}' for n in Ns) + ' ' +
+          ' '.join(f'p_{Ns[k]}_{Ns[k + 1]}' for k in range(len(Ns) - 1)))
+    for tw in [float(v) for v in a.times.split(',')]:
+        i = int(np.argmin(abs(t - tw)))
+        print(f'{t[i]:g} ' + ' '.join(f'{e[i]:.3e}' for e in E) + ' ' +
+              ' '.join(f'{o[i]:.2f}' for o in orders))
+    if a.output:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        style(plt)
+        fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
+        for n, e in zip(Ns, E):
+            ax1.semilogy(t, e, label=f'N = {n}')
+        ax1.set_ylabel(a.y)
+        ax1.legend(fontsize=8)
+        ax1.set_title(a.title)
+        for k, o in enumerate(orders):
+            ax2.plot(t, o, label=f'p({Ns[k]}, {Ns[k + 1]})')
+        ax2.axhline(4, color='k', ls=':', lw=1)
+        ax2.set_ylim(0, 6)
+        ax2.set_ylabel('order')
+        ax2.set_xlabel('t / M')
+        ax2.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(a.output)
+
+
+if __name__ == '__main__':
+    main()
