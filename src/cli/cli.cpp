@@ -55,6 +55,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time (M)"},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time (< 0: none)"},
       {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius (M)"},
+      {"rah-variant", &Params::rah_variant, "Horizon",
+       "consistent (the method); for the study only: no-shift-derivatives, "
+       "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update"},
       {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
       {"force", &Params::force, "Output", "write into an existing non-empty --out"},
   };

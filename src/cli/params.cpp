@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 #include <unistd.h>
 
 namespace gbssn1d {
@@ -116,6 +118,16 @@ void validate(const Params& p) {
   if (p.ah_tmax >= 0.0 && p.ah_tmax < p.ah_tmin)
     throw ParamError("--ah-tmax", num(p.ah_tmax), "must be >= --ah-tmin (or < 0: no limit)");
   require_positive("--ah-tol", p.ah_tol);
+  constexpr std::array<std::string_view, 6> variants{
+      "consistent",        "no-shift-derivatives", "no-shift-second-derivatives",
+      "delta-rhs-from-gd", "driver-full-shift",    "midstep-update"};
+  if (std::find(variants.begin(), variants.end(), p.rah_variant) == variants.end())
+    throw ParamError("--rah-variant", p.rah_variant,
+                     "must be consistent, no-shift-derivatives, no-shift-second-derivatives, "
+                     "delta-rhs-from-gd, driver-full-shift or midstep-update");
+  if (p.rah_variant == "midstep-update" && p.ah_every == "substage")
+    throw ParamError("--rah-variant", p.rah_variant,
+                     "needs searches every n steps (--ah-every step or a number)");
 
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = p.cfl * make_grid(p).min_spacing();
@@ -177,6 +189,20 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
   r.horizon_shift.finder.tolerance = p.ah_tol;
+  r.horizon_shift.t_min = p.ah_tmin;
+  r.horizon_shift.t_max = p.ah_tmax;
+  using Variant = HorizonShiftParams::Variant;
+  r.horizon_shift.variant =
+      p.rah_variant == "no-shift-second-derivatives" ? Variant::no_shift_second_derivatives
+      : p.rah_variant == "delta-rhs-from-gd"         ? Variant::delta_rhs_from_gd
+      : p.rah_variant == "no-shift-derivatives"      ? Variant::no_shift_derivatives
+      : p.rah_variant == "driver-full-shift"         ? Variant::driver_full_shift
+      : p.rah_variant == "midstep-update"            ? Variant::midstep_update
+                                                     : Variant::consistent;
+  if (r.horizon_shift.variant == Variant::midstep_update) {
+    r.horizon_shift.search_every_substage = false;
+    r.horizon_shift.midstep_every = ah_every_steps(p);
+  }
   return r;
 }
 

@@ -42,6 +42,8 @@ struct Params {
   double ah_tmin = 0.0;              ///< searches are made for ah-tmin <= t ...
   double ah_tmax = -1.0;             ///< ... <= ah-tmax; < 0: until the end
   double ah_tol = 1e-12;             ///< root-finder tolerance in r (M)
+  /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
+  std::string rah_variant = "consistent";
   // output
   std::string out;
   bool force = false;

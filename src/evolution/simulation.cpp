@@ -59,7 +59,8 @@ std::vector<double> Simulation::horizon_shift() {
 
 void Simulation::update_held_horizon() {
   const auto& hs = rhs_.params().horizon_shift;
-  if (!hs.active() || ah_every_ == 0 || !in_search_window(t_))
+  if (!hs.active() || ah_every_ == 0 || !in_search_window(t_)
+      || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
   const auto found = find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
   // Without a horizon the held value is dropped: beta_H = 0 until one is found.

@@ -124,7 +124,10 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     interior<false>(u, dudt);
   } else {
     const bool in_window = t >= hs.t_min && (hs.t_max < 0.0 || t <= hs.t_max);
-    if (hs.search_every_substage && in_window) {
+    const bool midstep_search =
+        hs.variant == HorizonShiftParams::Variant::midstep_update
+        && evaluations_ % static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;
+    if ((hs.search_every_substage || midstep_search) && in_window) {
       const auto found = find_horizon_near(u, *grid_, hs.finder, h_AH_.value_or(hs.h));
       h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
     }
@@ -167,13 +170,14 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   // Kreiss-Oliger: sigma / (64 h) times the 6th difference, h = local dr = r_x dx.
   const double ko_scale = params_.ko_sigma / 64.0 * inv_dx;
   const GaugeParams gauge = params_.gauge;
+  const auto variant = params_.horizon_shift.variant;
   const std::size_t begin = g.first_interior(), end = g.end_interior();
 
   // The output never aliases the input, which `ivdep` asserts: the loop vectorises across
   // points.
 #pragma GCC ivdep
   for (std::size_t i = begin; i < end; ++i) {
-    const PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
+    PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
     Rhs rhs;
     if constexpr (with_horizon_shift) {
       // ... except the Gamma-driver: B follows d_t Delta^r of beta_GD alone (H2), and the
@@ -185,7 +189,18 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       gd.d_beta = fd::d1_centred(f) * d1_scale;
       gd.dd_beta = fd::d2_centred(f) * d1_scale * d1_scale + fd::d1_centred(f) * inv_dx * d2_fx[i];
       gd.adv_Delta_r = fd::advect(gd.beta * d1_scale, in.Delta_r + i);
+      using Variant = HorizonShiftParams::Variant;
+      if (variant == Variant::no_shift_derivatives) {
+        p.d_beta = gd.d_beta; // the full shift's value, but beta_GD's derivatives
+        p.dd_beta = gd.dd_beta;
+      } else if (variant == Variant::no_shift_second_derivatives) {
+        p.dd_beta = gd.dd_beta;
+      } else if (variant == Variant::driver_full_shift) {
+        gd = full_shift(p);
+      }
       rhs = gbssn_rhs(p, gauge, gd);
+      if (variant == Variant::delta_rhs_from_gd)
+        rhs.Delta_r = rhs_Delta_r(p, metric_pieces(p), gd);
       const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
       rhs.beta = 0.75 * p.B + shift_advection * fd::advect(p.beta * d1_scale, f);
     } else {

@@ -32,6 +32,18 @@ struct HorizonShiftParams {
   /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
   bool search_every_substage = true;
   double t_min = 0.0, t_max = -1.0; ///< substage searches only in this window (t_max < 0: none)
+  /// Deliberately inconsistent implementations, for the study of why a 3D code lost
+  /// convergence; `consistent` is the method as specified above.
+  enum class Variant {
+    consistent,
+    no_shift_derivatives,        ///< beta_H added to the shift's value only: derivatives of beta_GD
+    no_shift_second_derivatives, ///< ... only the second derivatives of beta_GD
+    delta_rhs_from_gd,           ///< d_t Delta^r computed with beta_GD (for B) reused for Delta^r
+    driver_full_shift,           ///< B driven by d_t Delta^r of the full shift
+    midstep_update,              ///< h_AH searched at the 2nd RK substage of every n-th step
+  };
+  Variant variant = Variant::consistent;
+  long midstep_every = 1; ///< n of midstep_update
   HorizonFinderParams finder;
   bool active() const { return A != 0.0; }
 };

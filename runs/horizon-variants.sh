@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Why would a horizon-shifted evolution stop converging? The "shrink" experiment
+# (maximal-trumpet data, rah0 = 0.6, rahA = 0.5) at N = 400, 800, 1600 with the method as
+# specified and with three implementation inconsistencies a 3D code could plausibly contain:
+#   no-shift-derivatives  beta_H added to the shift's value, derivatives taken of beta_GD only
+#   no-shift-second-derivatives  ... only the second derivatives (those of the Gamma equation)
+#   delta-rhs-from-gd     d_t Delta^r computed with beta_GD for B, reused as Delta^r's own RHS
+#   driver-full-shift     B driven by d_t Delta^r of the full shift instead of beta_GD
+#   midstep-update        h_AH re-searched in the middle of an RK step (every 8 steps)
+# plus a coarse horizon finder (tolerance 1e-4 M, held for 8 steps).
+# Prints H_L2_ext and pairwise orders over time; figures in out/horizon-variants/*.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+out=out/horizon-variants
+rm -rf "$out" && mkdir -p "$out"
+variants=("consistent:--rah-variant consistent"
+          "no-shift-derivatives:--rah-variant no-shift-derivatives"
+          "no-shift-second-derivatives:--rah-variant no-shift-second-derivatives"
+          "delta-rhs-from-gd:--rah-variant delta-rhs-from-gd"
+          "driver-full-shift:--rah-variant driver-full-shift"
+          "midstep-update:--rah-variant midstep-update --ah-every 8"
+          "coarse-finder:--ah-every 8 --ah-tol 1e-4")
+jobs=()
+for v in "${variants[@]}"; do
+  tag=${v%%:*} flags=${v#*:}
+  for n in 400 800 1600; do
+    dr=$($py -c "print(8/$n)")
+    jobs+=("build/gbssn1d evolve --config runs/horizon-maximal-shrink.toml $flags --N $n --dr-inner $dr --dt-series 1 --dt-profiles 50 --out $out/$tag-N$n")
+  done
+done
+printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>/dev/null'
+for v in "${variants[@]}"; do
+  tag=${v%%:*}
+  echo "== $tag"
+  $py plots/constraint_orders.py $out/$tag-N{400,800,1600}/timeseries.dat \
+    --title "H on [1, 10] M, shrink run: $tag" -o $out/H_orders_$tag.png
+  awk '!/^#/ {row=$0} END {split(row, c, " "); printf "   final r_ah = %.5f\n", c[10]}' \
+    $out/$tag-N1600/timeseries.dat
+done
