@@ -21,7 +21,8 @@ for v in "${variants[@]}"; do
     jobs+=("build/gbssn1d evolve --config runs/horizon-maximal-$cfg.toml $flags --N $n --dr-inner $dr --dt-series 1 --dt-profiles 100 --out $out/$tag-N$n")
   done
 done
-printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>/dev/null'
+# a member that blows up is a result, not a reason to stop: its stderr says where and when
+printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>>"$0"' "$out/stderr.log" || true
 for tag in $(ls $out | sed 's/-N[0-9]*$//' | sort -u); do
   echo "== $tag"
   $py plots/constraint_orders.py $out/$tag-N{400,800,1600}/timeseries.dat \

@@ -16,7 +16,8 @@ for cfg in runs/horizon-*.toml; do
     jobs+=("build/gbssn1d evolve --config $cfg --N $n --dr-inner $dr --out $out/$name-N$n")
   done
 done
-printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>/dev/null'
+# a member that blows up is a result, not a reason to stop: its stderr says where and when
+printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>>"$0"' "$out/stderr.log" || true
 for data in maximal 1log; do
   $py plots/plot_horizons.py $out/horizon-$data-*-N*/horizon.dat --target \
     --title "r_AH(t), $data-trumpet data" -o $out/r_ah_$data.png

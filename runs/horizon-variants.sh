@@ -30,12 +30,15 @@ for v in "${variants[@]}"; do
     jobs+=("build/gbssn1d evolve --config runs/horizon-maximal-shrink.toml $flags --N $n --dr-inner $dr --dt-series 1 --dt-profiles 50 --out $out/$tag-N$n")
   done
 done
-printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>/dev/null'
+# a member that blows up is a result, not a reason to stop: its stderr says where and when
+printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>>"$0"' "$out/stderr.log" || true
 for v in "${variants[@]}"; do
   tag=${v%%:*}
   echo "== $tag"
   $py plots/constraint_orders.py $out/$tag-N{400,800,1600}/timeseries.dat \
     --title "H on [1, 10] M, shrink run: $tag" -o $out/H_orders_$tag.png
-  awk '!/^#/ {row=$0} END {split(row, c, " "); printf "   final r_ah = %.5f\n", c[10]}' \
+  awk '!/^#/ {row=$0} END {split(row, c, " "); printf "   last row: t = %g, r_ah = %.5f\n", c[1], c[10]}' \
     $out/$tag-N1600/timeseries.dat
 done
+echo "== runs that stopped:"
+grep "non-finite" "$out/stderr.log" || echo "none"

@@ -91,6 +91,10 @@ TEST_CASE("unknown choices and flags are refused") {
   check_refused("--id kerr", "--id");
   check_refused("--grid log", "--grid");
   check_refused("--lapse0 zero", "--lapse0");
+  check_refused("--rah-variant bogus", "--rah-variant");
+  check_refused("--ah-every 0", "--ah-every");
+  check_refused("--ah-every often", "--ah-every");
+  check_refused("--rah0 -1", "--rah0");
   check_refused("--no-such-flag 3", "--no-such-flag");
 }
 
