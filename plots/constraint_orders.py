@@ -44,6 +44,8 @@ def main():
     print('# t ' + ' '.join(f'{a.y}_N{n}' for n in Ns) + ' ' +
           ' '.join(f'p_{Ns[k]}_{Ns[k + 1]}' for k in range(len(Ns) - 1)))
     for tw in [float(v) for v in a.times.split(',')]:
+        if tw > t[-1] + 1e-9:
+            continue  # past the end of the shortest run
         i = int(np.argmin(abs(t - tw)))
         print(f'{t[i]:g} ' + ' '.join(f'{e[i]:.3e}' for e in E) + ' ' +
               ' '.join(f'{o[i]:.2f}' for o in orders))
