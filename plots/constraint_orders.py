@@ -7,7 +7,9 @@
 For a quantity whose exact value is zero the order between resolutions N1 < N2 is
 p = ln(E1/E2) / ln(N2/N1) (equations document, Sec. 15); N is read from each file's header.
 Prints the norms and the pairwise orders at the chosen times; with -o also draws the norms
-against t (top) and the pairwise orders against t (bottom).
+against t with the Richardson-scaled finer norms dashed (top: at order --scale they lie on the
+coarsest curve) and the pairwise orders against t (bottom). Works on `gbssn1d converge`
+output: constraint_orders.py OUT/N*/timeseries.dat.
 """
 import argparse
 import math
@@ -23,6 +25,8 @@ def main():
     ap.add_argument('files', nargs='+')
     ap.add_argument('-y', default='H_L2_ext')
     ap.add_argument('--times', default='5,10,20,30,50,75,100')
+    ap.add_argument('--scale', type=float, default=4.0,
+                    help='also draw each finer norm times (N/N_coarsest)^scale, dashed (0: off)')
     ap.add_argument('--title', default='')
     ap.add_argument('-o', '--output')
     a = ap.parse_args()
@@ -55,8 +59,11 @@ def main():
         import matplotlib.pyplot as plt
         style(plt)
         fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-        for n, e in zip(Ns, E):
-            ax1.semilogy(t, e, label=f'N = {n}')
+        for k, (n, e) in enumerate(zip(Ns, E)):
+            line, = ax1.semilogy(t, e, label=f'N = {n}')
+            if a.scale and k > 0:
+                ax1.semilogy(t, e * (n / Ns[0]) ** a.scale, ls='--', color=line.get_color(),
+                             label=f'N = {n} x ({n}/{Ns[0]})^{a.scale:g}')
         ax1.set_ylabel(a.y)
         ax1.legend(fontsize=8)
         ax1.set_title(a.title)

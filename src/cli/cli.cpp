@@ -1,6 +1,8 @@
 #include "cli/cli.hpp"
 
 #include "evolution/simulation.hpp"
+#include "study/converge.hpp"
+#include "study/sweep.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -9,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <variant>
 
 namespace gbssn1d {
@@ -105,6 +108,7 @@ int evolve(Params p, bool print_config) {
   validate_output_dir(p);
 
   Simulation sim(p); // initial data are computed before anything is written
+  sim.show_progress = true;
   const std::filesystem::path dir(p.out);
   std::filesystem::create_directories(dir);
   const std::string config = config_text(p);
@@ -189,6 +193,78 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
 
 } // namespace
 
+bool is_parameter_name(const std::string& name) {
+  return std::any_of(param_specs().begin(), param_specs().end(),
+                     [&](const ParamSpec& s) { return name == s.name; });
+}
+
+Params parse_evolve_args(const std::vector<std::string>& args) {
+  std::vector<std::string> expanded{"evolve"};
+  expanded.insert(expanded.end(), args.begin(), args.end());
+  expanded = expand_config(expanded);
+  expanded.erase(expanded.begin());
+  CLI::App app{"evolve"};
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  Params p;
+  add_options(app, p);
+  std::reverse(expanded.begin(), expanded.end());
+  app.parse(expanded);
+  return p;
+}
+
+namespace {
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    out.push_back(item);
+  return out;
+}
+
+/// The evolve flags given to converge/sweep; refuses those the study sets itself.
+std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std::string>& own) {
+  std::vector<std::string> extras = cmd.remaining();
+  for (const auto& a : extras)
+    for (const auto& flag : own)
+      if (a == "--" + flag || a.rfind("--" + flag + "=", 0) == 0)
+        throw ParamError("--" + flag, a, "is set by the study itself for each member");
+  return extras;
+}
+
+int converge(const ConvergeOptions& options_in, const std::string& N_list,
+             const std::string& fields, const std::string& times,
+             const std::vector<std::string>& evolve_args) {
+  ConvergeOptions options = options_in;
+  options.N.clear();
+  for (const auto& n : split_list(N_list)) {
+    try {
+      options.N.push_back(std::stoi(n));
+    } catch (const std::exception&) {
+      throw ParamError("--N", N_list, "must be a comma-separated list of cell counts");
+    }
+  }
+  options.fields = split_list(fields);
+  options.scaled_times.clear();
+  for (const auto& t : split_list(times))
+    options.scaled_times.push_back(std::stod(t));
+  if (options.jobs < 1)
+    throw ParamError("-j", std::to_string(options.jobs), "must be at least 1");
+  Params base = parse_evolve_args(evolve_args);
+  base.N = options.N.front(); // the first member; each member sets its own
+  base.out = options.out;
+  resolve_defaults(base);
+  validate_output_dir([&] {
+    Params o = base;
+    o.force = options.force;
+    return o;
+  }());
+  converge_members(base, options); // validates every member before anything is written
+  return run_converge(base, options, config_text(base));
+}
+
+} // namespace
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
                "black hole"};
@@ -211,6 +287,43 @@ int run_cli(int argc, char** argv) {
       ->add_flag("--print-config", print_config,
                  "print the effective configuration (a valid --config file) and exit")
       ->group("Configuration");
+
+  // converge: one configuration at several resolutions
+  ConvergeOptions converge_options;
+  std::string N_list, fields = "alpha,chi,K", scaled_times;
+  CLI::App* converge_cmd = app.add_subcommand(
+      "converge", "run one configuration (any evolve flags) at three or more resolutions");
+  converge_cmd->add_option("--N", N_list, "resolutions, e.g. 320,480,640")->required();
+  converge_cmd->add_option("-j,--jobs", converge_options.jobs, "members run at once")
+      ->capture_default_str();
+  converge_cmd->add_option("--out", converge_options.out, "output directory")->required();
+  converge_cmd->add_flag("--force", converge_options.force, "write into a non-empty --out");
+  converge_cmd->add_option("--fields", fields, "fields whose differences give orders")
+      ->capture_default_str();
+  converge_cmd->add_option("--scaled-times", scaled_times,
+                           "times of the Richardson-scaled H profiles (default: tmax)");
+  converge_cmd->add_option("--order", converge_options.order, "order used to scale the profiles")
+      ->capture_default_str();
+  converge_cmd->allow_extras();
+  converge_cmd->footer("Every other flag is an evolve flag (see `gbssn1d evolve --help`). On a "
+                       "sinh grid --dr-inner belongs to the first N and scales as 1/N.");
+
+  // sweep: the Cartesian product of flag values
+  SweepOptions sweep_options;
+  CLI::App* sweep_cmd =
+      app.add_subcommand("sweep", "run the product of value lists of any evolve flags");
+  sweep_cmd
+      ->add_option("--sweep", sweep_options.sweeps,
+                   "flag=value1,value2,... (repeat for more flags)")
+      ->required();
+  sweep_cmd->add_option("-j,--jobs", sweep_options.jobs, "members run at once")
+      ->capture_default_str();
+  sweep_cmd->add_option("--out", sweep_options.out, "output directory (a rerun resumes)")
+      ->required();
+  sweep_cmd->add_option("--emit-tasks", sweep_options.emit_tasks,
+                        "write the member command lines (GNU parallel, Slurm arrays) and exit");
+  sweep_cmd->allow_extras();
+  sweep_cmd->footer("Every other flag is an evolve flag, common to all members.");
 
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -236,6 +349,16 @@ int run_cli(int argc, char** argv) {
   try {
     if (evolve_cmd->parsed())
       return evolve(params, print_config);
+    if (converge_cmd->parsed())
+      return converge(converge_options, N_list, fields, scaled_times,
+                      pass_through(*converge_cmd, {"N", "out", "force"}));
+    if (sweep_cmd->parsed()) {
+      if (sweep_options.jobs < 1)
+        throw ParamError("-j", std::to_string(sweep_options.jobs), "must be at least 1");
+      const auto evolve_args = pass_through(*sweep_cmd, {"out", "force"});
+      parse_evolve_args(evolve_args); // common flags must parse before anything runs
+      return run_sweep(sweep_options, evolve_args);
+    }
   } catch (const ParamError& e) {
     fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
     return 2;

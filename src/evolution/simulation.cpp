@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <unistd.h>
 #include <utility>
 
 namespace gbssn1d {
@@ -135,7 +137,12 @@ void Simulation::run(Output* out) {
   check_finite();
   update_held_horizon();
   write(true, true);
+  if (on_series)
+    on_series(*this);
   const double t_end = params_.tmax;
+  const auto start = std::chrono::steady_clock::now();
+  auto last_report = start;
+  const bool progress = show_progress && ::isatty(STDERR_FILENO);
   for (long n = 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
     step(last ? t_end - t_ : s.dt);
@@ -143,7 +150,22 @@ void Simulation::run(Output* out) {
     check_finite();
     if (ah_every_ > 0 && n % ah_every_ == 0)
       update_held_horizon();
-    write(last || n % s.steps_per_series == 0, last || n % s.steps_per_profile == 0);
+    const bool series = last || n % s.steps_per_series == 0;
+    write(series, last || n % s.steps_per_profile == 0);
+    if (series && on_series)
+      on_series(*this);
+    if (progress && (n % 64 == 0 || last)) {
+      const auto now = std::chrono::steady_clock::now();
+      if (last || now - last_report > std::chrono::milliseconds(500)) {
+        last_report = now;
+        const double wall = std::chrono::duration<double>(now - start).count();
+        const double speed = t_ / std::max(wall, 1e-9); // simulated M per wall second
+        fmt::print(stderr, "\r  t = {:.2f} / {:g} M   {:.1f} M/s   {:.0f} s left   ", t_, t_end,
+                   speed, (t_end - t_) / std::max(speed, 1e-300));
+        if (last)
+          fmt::print(stderr, "\n");
+      }
+    }
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -54,6 +55,13 @@ public:
   /// Evolve to tmax, writing into `out` (if given). Throws NonFiniteError after writing the
   /// last finite output, leaving the files complete.
   void run(Output* out);
+
+  /// Called after every series output (and at t = 0), e.g. to sample the state for a
+  /// convergence study.
+  std::function<void(Simulation&)> on_series;
+
+  /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
+  bool show_progress = false;
 
   /// One RK4 step of size dt.
   void step(double dt);

@@ -2,6 +2,7 @@
 
 #include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
+#include "grid/interpolation.hpp"
 
 #include <boost/math/tools/roots.hpp>
 
@@ -14,25 +15,13 @@ namespace {
 
 constexpr std::size_t stencil = 6; // points of the Lagrange interpolant
 
-/// 6-point Lagrange interpolation in x of values f[k0 ... k0+5] at nodes x[k0 ...].
 double lagrange6(const std::vector<double>& x, const std::vector<double>& f, std::size_t k0,
                  double xi) {
-  double sum = 0.0;
-  for (std::size_t j = k0; j < k0 + stencil; ++j) {
-    double w = 1.0;
-    for (std::size_t m = k0; m < k0 + stencil; ++m)
-      if (m != j)
-        w *= (xi - x[m]) / (x[j] - x[m]);
-    sum += w * f[j];
-  }
-  return sum;
+  return gbssn1d::lagrange6(std::span<const double>(x), std::span<const double>(f), k0, xi);
 }
 
-/// First node of the interpolation stencil around the interval [k, k+1], kept inside [0, n).
 std::size_t stencil_start(std::size_t k, std::size_t n) {
-  const std::size_t half = stencil / 2 - 1; // nodes k-2 ... k+3
-  const std::size_t start = k >= half ? k - half : 0;
-  return std::min(start, n - stencil);
+  return lagrange6_start(k, n);
 }
 
 } // namespace

@@ -11,7 +11,13 @@ rm -rf "$dir" && mkdir -p "$dir"
 "$py" "$plots/plot_series.py" - -y alpha_center -o "$dir/stdin.png" < "$dir/run/timeseries.dat"
 "$py" "$plots/plot_profiles.py" "$dir/run/profiles.dat" -y alpha -y beta --times 0,2 -o "$dir/profiles.png"
 "$py" "$plots/compare_trumpet.py" "$dir/run/profiles.dat" "$dir/ref/profiles.dat" -o "$dir/cmp.png" >/dev/null
-for f in series stdin profiles cmp; do
+for n in 60 90 120; do
+  "$gbssn1d" evolve --id 1log-trumpet --grid uniform --N $n --rmax 20 --tmax 2 --dt-series 0.5 \
+    --out "$dir/conv$n" 2>/dev/null
+done
+"$py" "$plots/constraint_orders.py" "$dir"/conv{60,90,120}/timeseries.dat -o "$dir/orders.png" >/dev/null
+"$py" "$plots/plot_horizons.py" "$dir"/conv{60,90,120}/horizon.dat --label-by N -o "$dir/horizons.png"
+for f in series stdin profiles cmp orders horizons; do
   [ -s "$dir/$f.png" ] || { echo "plot $f.png missing or empty"; exit 1; }
   head -c 8 "$dir/$f.png" | grep -q PNG || { echo "$f.png is not a PNG"; exit 1; }
 done
@@ -20,4 +26,4 @@ if "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y no_such -o "$dir/x
   echo "unknown column accepted"; exit 1
 fi
 grep -q no_such "$dir/err"
-echo "plot scripts: 4 figures written"
+echo "plot scripts: 6 figures written"

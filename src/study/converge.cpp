@@ -1,0 +1,237 @@
+#include "study/converge.hpp"
+
+#include "core/registry.hpp"
+#include "evolution/simulation.hpp"
+#include "grid/interpolation.hpp"
+#include "study/orders.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+namespace gbssn1d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// What one member records at every series output.
+struct MemberRecord {
+  std::vector<SeriesRow> rows;
+  std::vector<std::vector<double>> field_samples; ///< per output: fields x common radii
+  std::vector<std::vector<double>> H_samples;     ///< per output: H at the common radii
+  std::string error;                              ///< non-empty if the member failed
+};
+
+std::vector<double> full_size(const Grid& g, const std::vector<double>& interior) {
+  std::vector<double> f(g.n_total(), 0.0);
+  std::copy(interior.begin(), interior.end(),
+            f.begin() + static_cast<std::ptrdiff_t>(g.first_interior()));
+  return f;
+}
+
+double rms_difference(const std::vector<double>& a, const std::vector<double>& b,
+                      std::size_t offset, std::size_t count) {
+  double sum = 0.0;
+  for (std::size_t j = offset; j < offset + count; ++j)
+    sum += (a[j] - b[j]) * (a[j] - b[j]);
+  return std::sqrt(sum / static_cast<double>(count));
+}
+
+} // namespace
+
+std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options) {
+  if (options.N.size() < 3)
+    throw ParamError("--N", fmt::format("{}", fmt::join(options.N, ",")),
+                     "needs at least three resolutions");
+  for (std::size_t k = 1; k < options.N.size(); ++k)
+    if (!(options.N[k] > options.N[k - 1]))
+      throw ParamError("--N", fmt::format("{}", fmt::join(options.N, ",")),
+                       "resolutions must increase");
+  for (const auto& name : options.fields)
+    if (!var_from_name(name))
+      throw ParamError("--fields", name, "is not an evolved variable");
+  std::vector<Params> members;
+  for (int n : options.N) {
+    Params p = base;
+    p.N = n;
+    if (p.grid == "sinh")
+      p.dr_inner = base.dr_inner * options.N.front() / n;
+    p.out = (fs::path(options.out) / fmt::format("N{}", n)).string();
+    p.force = true;
+    resolve_defaults(p);
+    validate(p);
+    members.push_back(p);
+  }
+  return members;
+}
+
+int run_converge(const Params& base, const ConvergeOptions& options,
+                 const std::string& base_config) {
+  const std::vector<Params> members = converge_members(base, options);
+  const std::size_t m = members.size();
+
+  // common radii: the coarsest grid's interior points inside the exterior region
+  const Grid coarse = make_grid(members.front());
+  std::vector<double> radii;
+  for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
+    if (coarse.r()[i] >= members.front().norm_rmin && coarse.r()[i] <= members.front().norm_rmax)
+      radii.push_back(coarse.r()[i]);
+  if (radii.empty())
+    throw ParamError("--norm-rmin", fmt::format("{}", members.front().norm_rmin),
+                     "the exterior region holds no grid point of the coarsest member");
+  std::vector<Var> fields;
+  for (const auto& name : options.fields)
+    fields.push_back(*var_from_name(name));
+
+  fs::create_directories(options.out);
+  std::vector<MemberRecord> records(m);
+  std::atomic<std::size_t> next{0};
+  std::mutex log_mutex;
+  auto worker = [&] {
+    for (std::size_t k = next++; k < m; k = next++) {
+      MemberRecord& rec = records[k];
+      try {
+        const Params& p = members[k];
+        fs::create_directories(p.out);
+        Simulation sim(p);
+        sim.on_series = [&](Simulation& s) {
+          const DerivedProfiles d = derived_profiles(s.state(), s.grid());
+          rec.rows.push_back(s.series_row(d));
+          std::vector<double> samples;
+          for (Var v : fields)
+            for (double r : radii)
+              samples.push_back(interpolate_at_radius(s.grid(), field(s.state(), s.grid(), v), r));
+          rec.field_samples.push_back(std::move(samples));
+          const std::vector<double> H = full_size(s.grid(), d.H);
+          std::vector<double> H_samples;
+          for (double r : radii)
+            H_samples.push_back(interpolate_at_radius(s.grid(), H, r));
+          rec.H_samples.push_back(std::move(H_samples));
+        };
+        Output out(p.out, base_config + fmt::format("converge member N = {}\n", p.N));
+        sim.run(&out);
+      } catch (const std::exception& e) {
+        rec.error = e.what();
+        const std::lock_guard lock(log_mutex);
+        fmt::print(stderr, "gbssn1d converge: member N = {} failed: {}\n", members[k].N, e.what());
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < std::max(1, options.jobs); ++j)
+    pool.emplace_back(worker);
+  for (auto& t : pool)
+    t.join();
+
+  // times common to all members
+  std::size_t n_times = records.front().rows.size();
+  for (const auto& rec : records)
+    n_times = std::min(n_times, rec.rows.size());
+  const auto Nd = [&](std::size_t k) { return static_cast<double>(members[k].N); };
+
+  {
+    std::ofstream cfg(fs::path(options.out) / "config.toml");
+    cfg << header_text("") << "# converge: N = " << fmt::format("{}", fmt::join(options.N, ","))
+        << ", fields " << fmt::format("{}", fmt::join(options.fields, ",")) << "\n"
+        << base_config;
+  }
+
+  // convergence.dat
+  std::vector<std::string> cols{"t"};
+  const char* norms[] = {"H", "M", "G"};
+  for (const char* c : norms)
+    for (std::size_t k = 0; k < m; ++k)
+      cols.push_back(fmt::format("{}_L2_ext_N{}", c, members[k].N));
+  for (const char* c : norms)
+    for (std::size_t k = 0; k + 1 < m; ++k)
+      cols.push_back(fmt::format("p_{}_{}_{}", c, members[k].N, members[k + 1].N));
+  for (const auto& name : options.fields)
+    for (std::size_t k = 0; k + 2 < m; ++k)
+      cols.push_back(
+          fmt::format("p3_{}_{}_{}_{}", name, members[k].N, members[k + 1].N, members[k + 2].N));
+  const std::string header =
+      base_config
+      + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the exterior norms; "
+                    "p3_f_a_b_c solves |f_a - f_b|/|f_b - f_c| = (a^-p - b^-p)/(b^-p - c^-p) "
+                    "(Sec. 15) with RMS differences of f at the coarsest grid's radii in "
+                    "[norm-rmin, norm-rmax] (6th-order interpolation)\n",
+                    fmt::join(options.N, ","));
+  {
+    DataFile file(fs::path(options.out) / "convergence.dat", header, cols);
+    for (std::size_t s = 0; s < n_times; ++s) {
+      std::string line = fmt::format("{:.16e}", records.front().rows[s].t);
+      auto norm = [&](std::size_t k, int c) {
+        const SeriesRow& row = records[k].rows[s];
+        return c == 0 ? row.H_L2_ext : c == 1 ? row.M_L2_ext : row.G_L2_ext;
+      };
+      for (int c = 0; c < 3; ++c)
+        for (std::size_t k = 0; k < m; ++k)
+          line += fmt::format(" {:.16e}", norm(k, c));
+      for (int c = 0; c < 3; ++c)
+        for (std::size_t k = 0; k + 1 < m; ++k)
+          line +=
+              fmt::format(" {:.6e}", order_two_level(norm(k, c), norm(k + 1, c), Nd(k), Nd(k + 1)));
+      for (std::size_t f = 0; f < fields.size(); ++f)
+        for (std::size_t k = 0; k + 2 < m; ++k) {
+          const auto& a = records[k].field_samples[s];
+          const auto& b = records[k + 1].field_samples[s];
+          const auto& c = records[k + 2].field_samples[s];
+          const std::size_t off = f * radii.size();
+          line += fmt::format(" {:.6e}", order_three_level(rms_difference(a, b, off, radii.size()),
+                                                           rms_difference(b, c, off, radii.size()),
+                                                           Nd(k), Nd(k + 1), Nd(k + 2)));
+        }
+      line += "\n";
+      std::fputs(line.c_str(), file.handle());
+    }
+  }
+
+  // scaled_H.dat: H at the common radii, finer members times (N_k/N_0)^order
+  {
+    std::vector<std::string> scols{"r"};
+    for (std::size_t k = 0; k < m; ++k)
+      scols.push_back(k == 0 ? fmt::format("H_N{}", members[k].N)
+                             : fmt::format("H_N{}_scaled", members[k].N));
+    DataFile file(fs::path(options.out) / "scaled_H.dat",
+                  base_config
+                      + fmt::format("scaled_H.dat: H of member N_k times (N_k/N_0)^{} "
+                                    "at the coarsest grid's exterior radii\n",
+                                    options.order),
+                  scols);
+    std::vector<double> times = options.scaled_times;
+    if (times.empty())
+      times.push_back(base.tmax);
+    bool first = true;
+    for (double tw : times) {
+      if (n_times == 0)
+        break;
+      std::size_t s = 0;
+      for (std::size_t q = 0; q < n_times; ++q)
+        if (std::abs(records.front().rows[q].t - tw) < std::abs(records.front().rows[s].t - tw))
+          s = q;
+      std::string block = first ? "" : "\n\n";
+      first = false;
+      block += fmt::format("# t = {:.16e}\n", records.front().rows[s].t);
+      for (std::size_t j = 0; j < radii.size(); ++j) {
+        block += fmt::format("{:.16e}", radii[j]);
+        for (std::size_t k = 0; k < m; ++k)
+          block += fmt::format(" {:.16e}",
+                               records[k].H_samples[s][j] * std::pow(Nd(k) / Nd(0), options.order));
+        block += "\n";
+      }
+      std::fputs(block.c_str(), file.handle());
+    }
+  }
+  for (const auto& rec : records)
+    if (!rec.error.empty())
+      return 3;
+  return 0;
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,332 @@
+#include "study/sweep.hpp"
+
+#include "cli/cli.hpp"
+#include "cli/params.hpp"
+#include "io/output.hpp"
+#include "study/orders.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace gbssn1d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, sep);)
+    out.push_back(item);
+  return out;
+}
+
+std::string shell_quote(const std::string& s) {
+  if (!s.empty()
+      && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                             "0123456789-_=.,/:+")
+             == std::string::npos)
+    return s;
+  std::string q = "'";
+  for (char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs the executable with `args`, stdout and stderr into `log`; returns the exit status.
+int spawn_and_wait(const std::string& exe, const std::vector<std::string>& args,
+                   const fs::path& log) {
+  std::vector<std::string> all{exe};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid;
+  const int rc = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0)
+    return -1;
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string last_line(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find("error") != std::string::npos)
+      last = line;
+  return last;
+}
+
+/// Final r_ah, max |M_ah - M_ah(first)|, max H_L2_ext of a member's timeseries.dat.
+struct MemberResult {
+  double r_ah = NAN, M_ah_drift = NAN, H_max = NAN, H_final = NAN;
+};
+
+MemberResult read_result(const fs::path& series) {
+  MemberResult res;
+  std::ifstream in(series);
+  std::vector<std::string> cols;
+  std::string line, last_comment;
+  double M0 = NAN;
+  while (std::getline(in, line)) {
+    if (line.empty())
+      continue;
+    if (line[0] == '#') {
+      last_comment = line;
+      continue;
+    }
+    if (cols.empty())
+      cols = split(last_comment.substr(2), ' ');
+    std::istringstream values(line);
+    std::map<std::string, double> row;
+    for (const auto& c : cols) {
+      std::string v;
+      values >> v;
+      row[c] = std::strtod(v.c_str(), nullptr);
+    }
+    res.r_ah = row["r_ah"];
+    if (std::isnan(M0) && std::isfinite(row["M_ah"]))
+      M0 = row["M_ah"];
+    const double drift = std::abs(row["M_ah"] - M0);
+    if (std::isfinite(drift))
+      res.M_ah_drift = std::isnan(res.M_ah_drift) ? drift : std::max(res.M_ah_drift, drift);
+    res.H_max = std::isnan(res.H_max) ? row["H_L2_ext"] : std::max(res.H_max, row["H_L2_ext"]);
+    res.H_final = row["H_L2_ext"];
+  }
+  return res;
+}
+
+std::string token(std::string s) {
+  for (char& c : s)
+    if (c == ' ' || c == '\t')
+      c = '_';
+  return s.empty() ? "-" : s;
+}
+
+} // namespace
+
+SweepAxis parse_sweep_axis(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw ParamError("--sweep", text, "must look like flag=value1,value2,...");
+  SweepAxis axis;
+  axis.flags = split(text.substr(0, eq), ',');
+  for (const auto& flag : axis.flags) {
+    if (!is_parameter_name(flag))
+      throw ParamError("--sweep", text, fmt::format("'{}' is not an evolve flag", flag));
+    if (flag == "out" || flag == "force")
+      throw ParamError("--sweep", text, "the sweep chooses each member's --out itself");
+  }
+  for (const auto& point : split(text.substr(eq + 1), ',')) {
+    std::vector<std::string> values = split(point, ':');
+    if (values.size() != axis.flags.size()
+        || std::any_of(values.begin(), values.end(), [](const auto& v) { return v.empty(); }))
+      throw ParamError(
+          "--sweep", text,
+          fmt::format("'{}' must give {} value(s) joined by ':'", point, axis.flags.size()));
+    axis.values.push_back(values);
+  }
+  return axis;
+}
+
+std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
+                                       const std::vector<std::string>& evolve_args,
+                                       const std::string& out) {
+  std::vector<SweepMember> members{SweepMember{}};
+  for (const auto& axis : axes) {
+    std::vector<SweepMember> next;
+    for (const auto& m : members)
+      for (const auto& point : axis.values) {
+        SweepMember n = m;
+        for (std::size_t f = 0; f < axis.flags.size(); ++f)
+          n.values.emplace_back(axis.flags[f], point[f]);
+        next.push_back(n);
+      }
+    members = next;
+  }
+  for (auto& m : members) {
+    for (const auto& [flag, value] : m.values) {
+      std::string part = flag + "=" + value;
+      for (char& c : part)
+        if (c == '/' || c == ' ')
+          c = '_';
+      m.name += (m.name.empty() ? "" : "_") + part;
+    }
+    m.args = {"evolve"};
+    m.args.insert(m.args.end(), evolve_args.begin(), evolve_args.end());
+    for (const auto& [flag, value] : m.values)
+      m.args.push_back("--" + flag + "=" + value);
+    m.args.push_back("--out=" + (fs::path(out) / m.name).string());
+    m.args.push_back("--force");
+  }
+  return members;
+}
+
+int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args) {
+  std::vector<SweepAxis> axes;
+  for (const auto& s : options.sweeps)
+    axes.push_back(parse_sweep_axis(s));
+  if (axes.empty())
+    throw ParamError("--sweep", "''", "give at least one flag=values list");
+  if (options.out.empty())
+    throw ParamError("--out", "''", "an output directory is required");
+  const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
+  const std::string exe = fs::canonical("/proc/self/exe").string();
+
+  if (!options.emit_tasks.empty()) {
+    std::ofstream tasks(options.emit_tasks);
+    if (!tasks)
+      throw ParamError("--emit-tasks", options.emit_tasks, "cannot be written");
+    for (const auto& m : members) {
+      tasks << shell_quote(exe);
+      for (const auto& a : m.args)
+        tasks << ' ' << shell_quote(a);
+      tasks << '\n';
+    }
+    fmt::print(stderr, "gbssn1d sweep: {} member command lines written to {}\n", members.size(),
+               options.emit_tasks);
+    return 0;
+  }
+
+  const fs::path dir(options.out);
+  fs::create_directories(dir / "logs");
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  auto worker = [&] {
+    for (std::size_t k = next++; k < members.size(); k = next++) {
+      const SweepMember& m = members[k];
+      const fs::path status_file = dir / "logs" / (m.name + ".status");
+      if (fs::exists(status_file))
+        continue; // finished in an earlier run of the same sweep
+      // Invalid values are caught here, before a subprocess is started.
+      std::string status = "ok", reason = "-";
+      double wall = 0.0;
+      try {
+        std::vector<std::string> args(m.args.begin() + 1, m.args.end());
+        Params p = parse_evolve_args(args);
+        resolve_defaults(p);
+        validate(p);
+      } catch (const std::exception& e) {
+        status = "invalid";
+        reason = e.what();
+      }
+      if (status == "ok") {
+        const auto start = std::chrono::steady_clock::now();
+        const fs::path log = dir / "logs" / (m.name + ".log");
+        const int rc = spawn_and_wait(exe, m.args, log);
+        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (rc != 0) {
+          status = rc == 3 ? "blew-up" : "failed";
+          reason = last_line(log);
+        }
+      }
+      std::ofstream(status_file) << status << ' ' << wall << ' ' << token(reason) << '\n';
+      const std::lock_guard lock(mutex);
+      fmt::print(stderr, "gbssn1d sweep: {} {} ({:.1f} s){}\n", m.name, status, wall,
+                 status == "ok" ? "" : ": " + reason);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < std::max(1, options.jobs); ++j)
+    pool.emplace_back(worker);
+  for (auto& t : pool)
+    t.join();
+
+  // summary.dat
+  std::vector<std::string> cols;
+  std::vector<std::string> resolution_axis; // the flags that vary together with N
+  for (const auto& axis : axes) {
+    cols.insert(cols.end(), axis.flags.begin(), axis.flags.end());
+    if (std::find(axis.flags.begin(), axis.flags.end(), "N") != axis.flags.end())
+      resolution_axis = axis.flags;
+  }
+  const bool with_resolutions = !resolution_axis.empty();
+  for (const char* c : {"status", "r_ah_final", "M_ah_drift", "H_L2_ext_max", "wall_s"})
+    cols.emplace_back(c);
+  if (with_resolutions)
+    cols.emplace_back("order_H_final");
+  cols.emplace_back("reason");
+
+  std::vector<MemberResult> results(members.size());
+  std::vector<std::string> statuses(members.size()), reasons(members.size());
+  std::vector<double> walls(members.size(), 0.0);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    std::ifstream in(dir / "logs" / (members[k].name + ".status"));
+    in >> statuses[k] >> walls[k] >> reasons[k];
+    if (statuses[k].empty())
+      statuses[k] = "missing";
+    results[k] = read_result(dir / members[k].name / "timeseries.dat");
+  }
+  // order of the final H_L2_ext over each group of members that differ only in N
+  std::vector<double> orders(members.size(), NAN);
+  if (with_resolutions) {
+    std::map<std::string, std::vector<std::size_t>> groups;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      std::string key;
+      for (const auto& [flag, value] : members[k].values)
+        if (std::find(resolution_axis.begin(), resolution_axis.end(), flag)
+            == resolution_axis.end())
+          key += flag + "=" + value + ";";
+      groups[key].push_back(k);
+    }
+    for (const auto& [key, ks] : groups) {
+      std::vector<double> N, E;
+      for (std::size_t k : ks)
+        if (statuses[k] == "ok") {
+          for (const auto& [flag, value] : members[k].values)
+            if (flag == "N")
+              N.push_back(std::stod(value));
+          E.push_back(results[k].H_final);
+        }
+      if (N.size() >= 2)
+        for (std::size_t k : ks)
+          orders[k] = order_fitted(N, E);
+    }
+  }
+  DataFile summary(dir / "summary.dat",
+                   fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
+                               "M_ah_drift = max |M_ah - M_ah(first)|; H_L2_ext_max over the run; "
+                               "order_H_final fitted over N for members that differ only in N\n",
+                               members.size(), fmt::join(options.sweeps, " ")),
+                   cols);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    std::string line;
+    for (const auto& [flag, value] : members[k].values)
+      line += value + " ";
+    line += fmt::format("{} {:.10e} {:.6e} {:.6e} {:.3f}", statuses[k], results[k].r_ah,
+                        results[k].M_ah_drift, results[k].H_max, walls[k]);
+    if (with_resolutions)
+      line += fmt::format(" {:.4f}", orders[k]);
+    line += " " + reasons[k] + "\n";
+    std::fputs(line.c_str(), summary.handle());
+  }
+  return 0;
+}
+
+} // namespace gbssn1d

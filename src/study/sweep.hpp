@@ -1,0 +1,42 @@
+// `gbssn1d sweep`: the Cartesian product of value lists for any flags, each member an
+// `evolve` subprocess in its own directory named by its values; a summary table; resumable.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// One axis of the product. Several flags may vary together along one axis:
+/// "N,dr-inner=400:0.02,800:0.01" (values of one member joined by ':').
+struct SweepAxis {
+  std::vector<std::string> flags;               ///< without "--"
+  std::vector<std::vector<std::string>> values; ///< per point of the axis, one per flag
+};
+
+/// "rahA=0,0.25,0.5" -> {{rahA}, {{0}, {0.25}, {0.5}}}; throws ParamError naming --sweep.
+SweepAxis parse_sweep_axis(const std::string& text);
+
+struct SweepMember {
+  std::string name; ///< directory name, e.g. rahA=0.25_rah0=0.6
+  std::vector<std::pair<std::string, std::string>> values;
+  std::vector<std::string> args; ///< evolve arguments, --out included
+};
+
+/// The members of the product, in order (the last axis varies fastest).
+std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
+                                       const std::vector<std::string>& evolve_args,
+                                       const std::string& out);
+
+struct SweepOptions {
+  std::vector<std::string> sweeps; ///< the --sweep arguments
+  int jobs = 1;
+  std::string out;
+  std::string emit_tasks; ///< write the member command lines here instead of running
+};
+
+/// Runs (or resumes) the sweep and writes DIR/summary.dat; returns 0 even when members failed
+/// (they are marked in the summary), 2 for bad sweep arguments.
+int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args);
+
+} // namespace gbssn1d

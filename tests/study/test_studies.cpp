@@ -1,0 +1,167 @@
+// `converge` and `sweep` as users run them.
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path p =
+      fs::temp_directory_path() / ("gbssn1d_study_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(p);
+  return p;
+}
+
+int run(const std::string& args, std::string* err = nullptr) {
+  const fs::path e = scratch("stderr");
+  const std::string cmd =
+      std::string(GBSSN1D_EXECUTABLE) + " " + args + " >/dev/null 2>" + e.string();
+  const int raw = std::system(cmd.c_str());
+  if (err) {
+    std::ifstream in(e);
+    std::stringstream s;
+    s << in.rdbuf();
+    *err = s.str();
+  }
+  fs::remove(e);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+} // namespace
+
+TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field differences") {
+  const fs::path out = scratch("converge");
+  REQUIRE(run("converge --N 600,900,1200 -j 2 --out " + out.string()
+              + " --id 1log-trumpet --grid uniform --rmax 30 --tmax 3 --dt-series 1 "
+                "--norm-rmin 1 --norm-rmax 10 --fields alpha,chi")
+          == 0);
+  const auto t = gbssn1d::testing::read_table((out / "convergence.dat").string());
+  const std::size_t last = t.rows.size() - 1;
+  CHECK(t.at(last, "t") == 3.0);
+  for (const char* c : {"p_H_600_900", "p_H_900_1200", "p_M_900_1200", "p3_chi_600_900_1200"}) {
+    INFO(c << " = " << t.at(last, c));
+    CHECK(t.at(last, c) == doctest::Approx(4.0).epsilon(0.1));
+  }
+  for (const char* f : {"N600/timeseries.dat", "N900/profiles.dat", "N1200/horizon.dat",
+                        "scaled_H.dat", "config.toml"})
+    CHECK(fs::exists(out / f));
+  // Richardson-scaled profiles lie on top of each other at 4th order
+  const auto s = gbssn1d::testing::read_table((out / "scaled_H.dat").string());
+  double diff = 0, norm = 0;
+  for (std::size_t j = 0; j < s.rows.size(); ++j) {
+    const double a = s.at(j, "H_N600"), c = s.at(j, "H_N1200_scaled");
+    diff += (a - c) * (a - c);
+    norm += a * a;
+  }
+  const double relative = std::sqrt(diff / norm);
+  MESSAGE("scaled H profiles: ||H_600 - (1200/600)^4 H_1200|| / ||H_600|| = " << relative);
+  CHECK(relative < 0.15); // 4th order: the scaled profiles coincide up to higher-order terms
+  fs::remove_all(out);
+}
+
+TEST_CASE("converge refuses bad input before running anything") {
+  const fs::path out = scratch("converge_bad");
+  std::string err;
+  CHECK(run("converge --N 600,900 --out " + out.string(), &err) == 2);
+  CHECK(err.find("--N") != std::string::npos);
+  CHECK(run("converge --N 600,900,1200 --out " + out.string() + " --cfl 9", &err) == 2);
+  CHECK(err.find("--cfl") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes") {
+  const fs::path out = scratch("sweep");
+  const std::string sweep =
+      "sweep -j 2 --out " + out.string()
+      + " --sweep rah-variant=consistent,delta-rhs-from-gd --sweep cfl=0.25,7"
+        " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 30 --dt-series 1"
+        " --rahA 0.5 --rah0 0.6";
+  std::string err;
+  REQUIRE(run(sweep, &err) == 0);
+  // statuses are text: read the summary's rows as words
+  std::ifstream in(out / "summary.dat");
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#')
+      rows.push_back(line);
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0].find("consistent 0.25 ok") == 0);
+  CHECK(rows[1].find("consistent 7 invalid") == 0);
+  CHECK(rows[1].find("--cfl") != std::string::npos);
+  CHECK(rows[2].find("delta-rhs-from-gd 0.25 blew-up") == 0);
+  CHECK(rows[2].find("non-finite") != std::string::npos);
+  CHECK(fs::exists(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat"));
+
+  // a second run skips finished members
+  const auto stamp =
+      fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat");
+  REQUIRE(run(sweep, &err) == 0);
+  CHECK(err.find("consistent_cfl=0.25 ok") == std::string::npos); // nothing reran
+  CHECK(fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat") == stamp);
+  // an unfinished member (no status) is rerun
+  fs::remove(out / "logs" / "rah-variant=consistent_cfl=0.25.status");
+  REQUIRE(run(sweep, &err) == 0);
+  CHECK(err.find("rah-variant=consistent_cfl=0.25 ok") != std::string::npos);
+
+  // the same sweep as task lines for GNU parallel or a Slurm array
+  const fs::path tasks = scratch("tasks.txt");
+  REQUIRE(run(sweep + " --emit-tasks " + tasks.string()) == 0);
+  std::ifstream t(tasks);
+  int lines = 0;
+  for (std::string line; std::getline(t, line); ++lines) {
+    CHECK(line.find(" evolve ") != std::string::npos);
+    CHECK(line.find("--out=" + out.string() + "/rah-variant=") != std::string::npos);
+  }
+  CHECK(lines == 4);
+  fs::remove(tasks);
+  fs::remove_all(out);
+}
+
+TEST_CASE("sweep refuses a --sweep that names no flag") {
+  std::string err;
+  CHECK(run("sweep --out " + scratch("sweep_bad").string() + " --sweep rahAA=1,2", &err) == 2);
+  CHECK(err.find("--sweep") != std::string::npos);
+  CHECK(run("sweep --out " + scratch("sweep_bad").string() + " --sweep rahA", &err) == 2);
+}
+
+TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted orders") {
+  const fs::path out = scratch("sweep_tied");
+  REQUIRE(run("sweep -j 2 --out " + out.string()
+              + " --sweep N,dr-inner=200:0.04,400:0.02 --sweep rahA=0,0.5 --id 1log-trumpet"
+                " --grid sinh --rmax 60 --tmax 3 --rah0 0.7")
+          == 0);
+  std::ifstream in(out / "summary.dat");
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#')
+      rows.push_back(line);
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0].find("200 0.04 0 ok") == 0);
+  CHECK(rows[3].find("400 0.02 0.5 ok") == 0);
+  CHECK(fs::exists(out / "N=200_dr-inner=0.04_rahA=0.5" / "horizon.dat"));
+  // the fitted order of the final H over N = 200, 400 is near 4 for both rahA
+  for (const auto& row : rows) {
+    std::istringstream words(row);
+    std::vector<std::string> w;
+    for (std::string x; words >> x;)
+      w.push_back(x);
+    const double order = std::stod(w[w.size() - 2]);
+    INFO(row);
+    CHECK(order == doctest::Approx(4.0).epsilon(0.15));
+  }
+  std::string err;
+  CHECK(run("sweep --out " + out.string() + " --sweep N,dr-inner=200:0.04,400", &err) == 2);
+  CHECK(err.find("joined by ':'") != std::string::npos);
+  fs::remove_all(out);
+}
