@@ -30,10 +30,10 @@ done
 $py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy \
   --label "N=300" --label "N=600" --label "N=1200" \
   --title "1+log trumpet: H on [1, 10] M (4th order: x16 per doubling)" -o demo/trumpet_H.png
-echo "== converge: the 1+log trumpet at N = 300, 450, 600"
-$g converge --N 300,450,600 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
+echo "== converge: the 1+log trumpet at N = 600, 900, 1200"
+$g converge --N 600,900,1200 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
   --rmax 40 --tmax 20 --dt-series 0.5 --norm-rmin 1 --norm-rmax 10 2>/dev/null
-$py plots/constraint_orders.py demo/converge/N{300,450,600}/timeseries.dat --times 5,10,20 \
+$py plots/constraint_orders.py demo/converge/N{600,900,1200}/timeseries.dat --times 5,10,20 \
   --title "1+log trumpet: H on [1, 10] M, scaled at 4th order" -o demo/trumpet_orders.png
 
 echo "== sweep: horizon shift strength x target radius (1+log trumpet data, t = 40 M)"

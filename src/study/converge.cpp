@@ -1,5 +1,6 @@
 #include "study/converge.hpp"
 
+#include "cli/cli.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
 #include "grid/interpolation.hpp"
@@ -114,7 +115,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
             H_samples.push_back(interpolate_at_radius(s.grid(), H, r));
           rec.H_samples.push_back(std::move(H_samples));
         };
-        Output out(p.out, base_config + fmt::format("converge member N = {}\n", p.N));
+        Output out(p.out, config_text(p)); // the member's own configuration
         sim.run(&out);
       } catch (const std::exception& e) {
         rec.error = e.what();

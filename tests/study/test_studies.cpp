@@ -56,6 +56,12 @@ TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field di
   for (const char* f : {"N600/timeseries.dat", "N900/profiles.dat", "N1200/horizon.dat",
                         "scaled_H.dat", "config.toml"})
     CHECK(fs::exists(out / f));
+  { // each member's files record its own resolution
+    std::ifstream in(out / "N900" / "timeseries.dat");
+    std::stringstream text;
+    text << in.rdbuf();
+    CHECK(text.str().find("# N = 900\n") != std::string::npos);
+  }
   // Richardson-scaled profiles lie on top of each other at 4th order
   const auto s = gbssn1d::testing::read_table((out / "scaled_H.dat").string());
   double diff = 0, norm = 0;
