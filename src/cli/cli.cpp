@@ -233,7 +233,7 @@ std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std
 }
 
 int converge(const ConvergeOptions& options_in, const std::string& N_list,
-             const std::string& fields, const std::string& times,
+             const std::string& factors, const std::string& fields, const std::string& times,
              const std::vector<std::string>& evolve_args) {
   ConvergeOptions options = options_in;
   options.N.clear();
@@ -242,6 +242,23 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
       options.N.push_back(std::stoi(n));
     } catch (const std::exception&) {
       throw ParamError("--N", N_list, "must be a comma-separated list of cell counts");
+    }
+  }
+  if (!factors.empty()) { // a base N and factors: N_k = round(N * f_k)
+    if (options.N.size() != 1)
+      throw ParamError("--factors", factors, "needs a single base --N");
+    const int base_N = options.N.front();
+    options.N.clear();
+    for (const auto& f : split_list(factors)) {
+      double factor = 0;
+      try {
+        factor = std::stod(f);
+      } catch (const std::exception&) {
+        throw ParamError("--factors", factors, "must be a comma-separated list of numbers");
+      }
+      if (!(factor > 0))
+        throw ParamError("--factors", factors, "factors must be > 0");
+      options.N.push_back(static_cast<int>(std::lround(base_N * factor)));
     }
   }
   options.fields = split_list(fields);
@@ -290,10 +307,11 @@ int run_cli(int argc, char** argv) {
 
   // converge: one configuration at several resolutions
   ConvergeOptions converge_options;
-  std::string N_list, fields = "alpha,chi,K", scaled_times;
+  std::string N_list, factors, fields = "alpha,chi,K", scaled_times;
   CLI::App* converge_cmd = app.add_subcommand(
       "converge", "run one configuration (any evolve flags) at three or more resolutions");
-  converge_cmd->add_option("--N", N_list, "resolutions, e.g. 320,480,640")->required();
+  converge_cmd->add_option("--N", N_list, "resolutions, e.g. 320,480,640, or a base N")->required();
+  converge_cmd->add_option("--factors", factors, "with a base N: N_k = N * factor, e.g. 1,1.5,2");
   converge_cmd->add_option("-j,--jobs", converge_options.jobs, "members run at once")
       ->capture_default_str();
   converge_cmd->add_option("--out", converge_options.out, "output directory")->required();
@@ -350,7 +368,7 @@ int run_cli(int argc, char** argv) {
     if (evolve_cmd->parsed())
       return evolve(params, print_config);
     if (converge_cmd->parsed())
-      return converge(converge_options, N_list, fields, scaled_times,
+      return converge(converge_options, N_list, factors, fields, scaled_times,
                       pass_through(*converge_cmd, {"N", "out", "force"}));
     if (sweep_cmd->parsed()) {
       if (sweep_options.jobs < 1)

@@ -60,7 +60,13 @@ void DataFile::flush() {
 }
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
-    : series_(dir / "timeseries.dat", parameter_header, series_columns()),
+    : series_(dir / "timeseries.dat",
+              parameter_header
+                  + "timeseries.dat: *_L2 norms over the whole grid, *_L2_ext over the fixed "
+                    "coordinate region norm-rmin <= r <= norm-rmax (the same rule before and after "
+                    "a horizon forms), weighted by cell width; r_ah, M_ah: apparent horizon (NaN "
+                    "if none)\n",
+              series_columns()),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns()),
       horizons_(dir / "horizon.dat",
                 parameter_header

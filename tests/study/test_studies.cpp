@@ -76,6 +76,16 @@ TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field di
   fs::remove_all(out);
 }
 
+TEST_CASE("converge: a base N and factors") {
+  const fs::path out = scratch("converge_factors");
+  REQUIRE(run("converge --N 64 --factors 1,1.5,2 --out " + out.string()
+              + " --id 1log-trumpet --grid uniform --rmax 20 --tmax 0")
+          == 0);
+  for (const char* d : {"N64", "N96", "N128"})
+    CHECK(fs::exists(out / d / "timeseries.dat"));
+  fs::remove_all(out);
+}
+
 TEST_CASE("converge refuses bad input before running anything") {
   const fs::path out = scratch("converge_bad");
   std::string err;
