@@ -82,6 +82,10 @@ void Simulation::report_horizon(const std::optional<MarginalSurface>& h) {
 }
 
 SeriesRow Simulation::series_row(const DerivedProfiles& d) {
+  return series_row(d, horizons());
+}
+
+SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& found) {
   const Grid& g = *grid_;
   const double inf = std::numeric_limits<double>::infinity();
   SeriesRow row;
@@ -96,7 +100,7 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d) {
   diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
   diagnostic_rhs_(u_, dudt_, t_);
   const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
-  const auto horizon = horizons().horizon();
+  const auto horizon = found.horizon();
   row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
   row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
   row.dtalpha_max_ext = 0.0;
@@ -128,7 +132,7 @@ void Simulation::run(Output* out) {
     if (series) {
       const HorizonSearch found = horizons();
       report_horizon(found.horizon());
-      out->write_series(series_row(d));
+      out->write_series(series_row(d, found));
       out->write_horizons(t_, found);
     }
     if (profiles)

@@ -51,6 +51,8 @@ public:
 
   /// Diagnostics of the current state (evaluates the right-hand side once for d_t alpha).
   SeriesRow series_row(const DerivedProfiles& d);
+  /// The same, with the horizons of the current state already found.
+  SeriesRow series_row(const DerivedProfiles& d, const HorizonSearch& found);
 
   /// Evolve to tmax, writing into `out` (if given). Throws NonFiniteError after writing the
   /// last finite output, leaving the files complete.

@@ -15,15 +15,6 @@ namespace {
 
 constexpr std::size_t stencil = 6; // points of the Lagrange interpolant
 
-double lagrange6(const std::vector<double>& x, const std::vector<double>& f, std::size_t k0,
-                 double xi) {
-  return gbssn1d::lagrange6(std::span<const double>(x), std::span<const double>(f), k0, xi);
-}
-
-std::size_t stencil_start(std::size_t k, std::size_t n) {
-  return lagrange6_start(k, n);
-}
-
 } // namespace
 
 std::vector<double> expansion_profile(const State& u, const Grid& grid) {
@@ -67,7 +58,7 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
       continue;
     if ((f_lo < 0.0) == (f_hi < 0.0) && f_lo != 0.0)
       continue;
-    const std::size_t k0 = std::max(stencil_start(lo, n), fill_lo);
+    const std::size_t k0 = std::max(lagrange6_start(lo, n), fill_lo);
     auto theta_of_x = [&](double xi) { return lagrange6(x, theta, k0, xi); };
     double x_root;
     if (f_lo == 0.0) {

@@ -38,6 +38,16 @@ int run(const std::string& args, std::string* err = nullptr) {
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
+/// The data rows of a summary.dat, as text (its status and reason columns are words).
+std::vector<std::string> summary_rows(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#')
+      rows.push_back(line);
+  return rows;
+}
+
 } // namespace
 
 TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field differences") {
@@ -105,12 +115,7 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
         " --rahA 0.5 --rah0 0.6";
   std::string err;
   REQUIRE(run(sweep, &err) == 0);
-  // statuses are text: read the summary's rows as words
-  std::ifstream in(out / "summary.dat");
-  std::vector<std::string> rows;
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#')
-      rows.push_back(line);
+  const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
   CHECK(rows[0].find("consistent 0.25 ok") == 0);
   CHECK(rows[1].find("consistent 7 invalid") == 0);
@@ -157,11 +162,7 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
               + " --sweep N,dr-inner=200:0.04,400:0.02 --sweep rahA=0,0.5 --id 1log-trumpet"
                 " --grid sinh --rmax 60 --tmax 3 --rah0 0.7")
           == 0);
-  std::ifstream in(out / "summary.dat");
-  std::vector<std::string> rows;
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#')
-      rows.push_back(line);
+  const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
   CHECK(rows[0].find("200 0.04 0 ok") == 0);
   CHECK(rows[3].find("400 0.02 0.5 ok") == 0);
