@@ -284,7 +284,8 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
 
 int run_cli(int argc, char** argv) {
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
-               "black hole"};
+               "black hole",
+               "gbssn1d"};
   app.set_version_flag("--version", std::string("gbssn1d ") + GBSSN1D_VERSION);
   app.require_subcommand(1);
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
