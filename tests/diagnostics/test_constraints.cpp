@@ -1,0 +1,76 @@
+// Diagnostics: the central extrapolation of an even field, the cell-width-weighted L2 norms,
+// and horizon.dat as a run writes it.
+#include "diagnostics/constraints.hpp"
+#include "evolution/simulation.hpp"
+
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+using namespace gbssn1d;
+
+TEST_CASE("central_value is exact for even quadratics, on uniform and sinh grids") {
+  for (const Grid& g :
+       {Grid(RadialMap::uniform(10.0), 100), Grid(RadialMap::sinh(100.0, 0.02, 400), 400)}) {
+    std::vector<double> f(g.n_total());
+    for (std::size_t i = 0; i < f.size(); ++i)
+      f[i] = 0.3 - 1.7 * g.r()[i] * g.r()[i];
+    CHECK(central_value(f, g) == doctest::Approx(0.3).epsilon(1e-13));
+    // a quartic term is not captured: the extrapolation is only 2nd order in the spacing
+    for (std::size_t i = 0; i < f.size(); ++i)
+      f[i] += std::pow(g.r()[i], 4);
+    CHECK(central_value(f, g) != 0.3);
+  }
+}
+
+TEST_CASE("l2_norm: cell-width weights, the range selects points, empty range gives 0") {
+  const Grid g(RadialMap::sinh(50.0, 0.05, 200), 200);
+  std::vector<double> ones(g.n_interior(), 2.0);
+  CHECK(l2_norm(ones, g, 0.0, 1e9) == doctest::Approx(2.0).epsilon(1e-14));
+  // f = r: the weighted mean of r^2 over [a, b] approximates (b^3 - a^3) / (3 (b - a))
+  std::vector<double> r(g.n_interior());
+  for (std::size_t k = 0; k < r.size(); ++k)
+    r[k] = g.r()[g.first_interior() + k];
+  const double expected = std::sqrt((std::pow(10.0, 3) - 1.0) / (3.0 * 9.0));
+  CHECK(l2_norm(r, g, 1.0, 10.0) == doctest::Approx(expected).epsilon(2e-3));
+  CHECK(l2_norm(r, g, 60.0, 70.0) == 0.0);
+}
+
+TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("gbssn1d_horizon_dat_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Params p;
+  p.id = "1log-trumpet";
+  p.grid = "uniform";
+  p.N = 400;
+  p.rmax = 20.0;
+  p.tmax = 1.0;
+  p.dt_series = 0.5;
+  resolve_defaults(p);
+  validate(p);
+  Simulation sim(p);
+  {
+    Output out(dir, "test = true\n");
+    sim.run(&out);
+  }
+  const auto h = gbssn1d::testing::read_table((dir / "horizon.dat").string());
+  CHECK(h.columns == horizon_columns());
+  REQUIRE(h.rows.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(h.at(k, "r_ah") == doctest::Approx(0.8304).epsilon(1e-3));
+    CHECK(h.at(k, "M_ah") == doctest::Approx(1.0).epsilon(1e-5));
+    CHECK(h.at(k, "M_ah") == doctest::Approx(h.at(k, "R_ah") / 2).epsilon(1e-15));
+    CHECK(h.at(k, "n_roots") == 1.0);
+    CHECK(std::isnan(h.at(k, "r_root2")));
+  }
+  const auto s = gbssn1d::testing::read_table((dir / "timeseries.dat").string());
+  CHECK(s.at(2, "r_ah") == h.at(2, "r_ah"));
+  fs::remove_all(dir);
+}
