@@ -55,3 +55,13 @@ def style(plt):
                          'font.size': 11, 'savefig.dpi': 120, 'axes.prop_cycle':
                          plt.cycler(color=['#1f77b4', '#d62728', '#2ca02c', '#9467bd',
                                            '#ff7f0e', '#8c564b', '#17becf'])})
+
+
+def finish(fig, ax, xlabel, ylabel, title, output):
+    """Labels, legend and layout shared by every figure; writes the PNG."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(output)

@@ -10,7 +10,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import column, parse, read_text, style
+from gbssn1d_data import column, finish, parse, read_text, style
 
 
 def header_params(text):
@@ -44,12 +44,7 @@ def main():
         line, = ax.plot(column(columns, data, 't'), column(columns, data, a.y), label=label)
         if a.target and 'rah0' in params and float(params.get('rahA', 0)) != 0:
             ax.axhline(float(params['rah0']), color=line.get_color(), ls=':', lw=1)
-    ax.set_xlabel('t / M')
-    ax.set_ylabel(a.y)
-    ax.set_title(a.title)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(a.output)
+    finish(fig, ax, 't / M', a.y, a.title, a.output)
 
 
 if __name__ == '__main__':

@@ -12,7 +12,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 import numpy as np
 
-from gbssn1d_data import column, parse, read_text, style
+from gbssn1d_data import column, finish, parse, read_text, style
 
 
 def main():
@@ -51,12 +51,7 @@ def main():
         ax.set_yscale('log')
     if a.logx:
         ax.set_xscale('log')
-    ax.set_xlabel(a.x)
-    ax.set_ylabel(', '.join(a.y))
-    ax.set_title(a.title)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(a.output)
+    finish(fig, ax, a.x, ', '.join(a.y), a.title, a.output)
 
 
 if __name__ == '__main__':
