@@ -50,9 +50,25 @@ const std::vector<ParamSpec>& param_specs() {
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms (M)"},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
        "outer radius of the exterior norms (M); default min(10 M, rmax/2)"},
+      {"norm-Rmin", &Params::norm_Rmin, "Diagnostics",
+       "areal-radius window of the *_R norms: norm-Rmin M <= R (the same place in every gauge)"},
+      {"norm-Rmax", &Params::norm_Rmax, "Diagnostics", "... R <= norm-Rmax M"},
+      {"norm-Rint", &Params::norm_Rint, "Diagnostics",
+       "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon"},
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)"},
       {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon (M)"},
       {"rah-width", &Params::rah_width, "Horizon", "width w of f(r) = (r/w)/(1+(r/w)^2) (M)"},
+      {"rah-profile", &Params::rah_profile, "Horizon",
+       "f(r), q = r/w: rational q/(1+q^2) (published) | rational3 q^3/(1+q^4) | gauss "
+       "(q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},
+      {"rah-normal", &Params::rah_normal, "Horizon",
+       "s^r: unit sqrt(chi/a) (published) | smooth sqrt((chi+0.01)/a) | conformal 1/sqrt(a)"},
+      {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
+       "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)"},
+      {"driver-advection", &Params::driver_advection, "Numerics",
+       "stencil of beta_GD d_r Delta^r in B's driver: upwind-gd | upwind-full | centred"},
+      {"delta-advection", &Params::delta_advection, "Numerics",
+       "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), step, or a number of steps"},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time (M)"},
@@ -123,6 +139,9 @@ int evolve(Params p, bool print_config) {
   } catch (const NonFiniteError& e) {
     fmt::print(stderr, "gbssn1d: error: {}; output up to the last finite state kept in {}\n",
                e.what(), p.out);
+    return 3;
+  } catch (const HorizonFinderError& e) {
+    fmt::print(stderr, "gbssn1d: error: {}; output up to then kept in {}\n", e.what(), p.out);
     return 3;
   }
   const double wall =

@@ -5,7 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
+
 #include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string_view>
 #include <unistd.h>
 
@@ -100,6 +105,12 @@ void validate(const Params& p) {
   if (p.norm_rmax > p.rmax)
     throw ParamError("--norm-rmax", num(p.norm_rmax), "must not exceed --rmax");
 
+  require_positive("--norm-Rmin", p.norm_Rmin);
+  require_finite("--norm-Rmax", p.norm_Rmax);
+  if (!(p.norm_Rmax > p.norm_Rmin))
+    throw ParamError("--norm-Rmax", num(p.norm_Rmax), "must be > --norm-Rmin");
+  require_positive("--norm-Rint", p.norm_Rint);
+
   require_finite("--rahA", p.rahA);
   require_positive("--rah0", p.rah0);
   require_positive("--rah-width", p.rah_width);
@@ -111,6 +122,20 @@ void validate(const Params& p) {
       throw ParamError("--ah-every", p.ah_every,
                        "must be 'substage', 'step' or a positive number of steps");
   }
+  auto require_one_of = [](const std::string& flag, const std::string& value,
+                           std::initializer_list<std::string_view> choices) {
+    if (std::find(choices.begin(), choices.end(), value) != choices.end())
+      return;
+    std::string list;
+    for (auto c : choices)
+      list += (list.empty() ? "" : ", ") + std::string(c);
+    throw ParamError(flag, value, "must be one of " + list);
+  };
+  require_one_of("--rah-profile", p.rah_profile, {"rational", "rational3", "gauss", "gauss3"});
+  require_one_of("--rah-normal", p.rah_normal, {"unit", "smooth", "conformal"});
+  require_one_of("--driver-advection", p.driver_advection,
+                 {"upwind-gd", "upwind-full", "centred"});
+  require_one_of("--delta-advection", p.delta_advection, {"upwind-gd", "upwind-full", "centred"});
   require_finite("--ah-tmin", p.ah_tmin);
   require_finite("--ah-tmax", p.ah_tmax);
   if (p.ah_tmin < 0.0)
@@ -187,6 +212,22 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.A = p.rahA;
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
+  r.horizon_shift.profile = p.rah_profile == "rational3" ? ShiftProfile::rational3
+                            : p.rah_profile == "gauss"   ? ShiftProfile::gauss
+                            : p.rah_profile == "gauss3"  ? ShiftProfile::gauss3
+                                                         : ShiftProfile::rational;
+  r.horizon_shift.normal = p.rah_normal == "smooth"      ? ShiftNormal::smooth
+                           : p.rah_normal == "conformal" ? ShiftNormal::conformal
+                                                         : ShiftNormal::unit;
+  if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
+    r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
+  auto stencil = [](const std::string& s) {
+    return s == "centred"       ? AdvectionStencil::centred
+           : s == "upwind-full" ? AdvectionStencil::upwind_full
+                                : AdvectionStencil::upwind_gd;
+  };
+  r.advection.driver = stencil(p.driver_advection);
+  r.advection.delta = stencil(p.delta_advection);
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
   r.horizon_shift.finder.tolerance = p.ah_tol;
   r.horizon_shift.t_min = p.ah_tmin;
@@ -208,6 +249,61 @@ RhsParams rhs_params(const Params& p) {
 
 double time_step(const Params& p, const Grid& grid) {
   return p.cfl * grid.min_spacing();
+}
+
+std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {
+  const std::string flag = "--rah-hAH-file";
+  std::ifstream in(path);
+  if (!in)
+    throw ParamError(flag, path, "cannot be read");
+  std::vector<std::string> columns;
+  std::vector<double> t, r_ah;
+  std::size_t col_t = 0, col_r = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty())
+      continue;
+    if (line[0] == '#') {
+      std::istringstream names(line.substr(1));
+      columns.clear();
+      for (std::string c; names >> c;)
+        columns.push_back(c);
+      continue;
+    }
+    if (t.empty()) { // the last '#' line before the data names the columns
+      const auto where = [&](const char* name) {
+        const auto it = std::find(columns.begin(), columns.end(), name);
+        if (it == columns.end())
+          throw ParamError(flag, path, fmt::format("has no column '{}'", name));
+        return static_cast<std::size_t>(it - columns.begin());
+      };
+      col_t = where("t");
+      col_r = where("r_ah");
+    }
+    std::istringstream values(line);
+    std::vector<double> row;
+    for (std::string v; values >> v;)
+      row.push_back(std::strtod(v.c_str(), nullptr));
+    if (row.size() <= std::max(col_t, col_r))
+      throw ParamError(flag, path, fmt::format("has a short row at t = {}", t.size()));
+    if (!std::isfinite(row[col_r]))
+      throw ParamError(flag, path, fmt::format("has no horizon (r_ah = NaN) at t = {}", row[col_t]));
+    t.push_back(row[col_t]);
+    r_ah.push_back(row[col_r]);
+  }
+  if (t.size() < 4)
+    throw ParamError(flag, path, "needs at least 4 rows");
+  const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  for (std::size_t k = 1; k < t.size(); ++k)
+    if (std::abs(t[k] - t[0] - static_cast<double>(k) * dt) > 1e-9 * (1.0 + std::abs(t[k])))
+      throw ParamError(flag, path,
+                       fmt::format("its times are not equally spaced (row {}: t = {})", k, t[k]));
+  if (t.front() > 0.0 || t.back() < t_end - 1e-9 * (1.0 + t_end))
+    throw ParamError(flag, path,
+                     fmt::format("covers t = {} ... {}, not the run's 0 ... {}", t.front(),
+                                 t.back(), t_end));
+  auto spline = std::make_shared<boost::math::interpolators::cardinal_cubic_b_spline<double>>(
+      r_ah.begin(), r_ah.end(), t.front(), dt);
+  return [spline](double time) { return (*spline)(time); };
 }
 
 long ah_every_steps(const Params& p) {

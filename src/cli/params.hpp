@@ -5,6 +5,7 @@
 #include "grid/grid.hpp"
 #include "initial_data/initial_data.hpp"
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -34,10 +35,18 @@ struct Params {
   // diagnostics
   double norm_rmin = 1.0;
   double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)
+  double norm_Rmin = 2.5;  ///< areal-radius window of the *_R norms, in M (the same place in
+  double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
+  double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
   // apparent horizon and the horizon-adjusting shift (Sec. 6, Sec. 14)
   double rahA = 0.0;                 ///< strength A of beta_H (0: no horizon shift)
   double rah0 = 0.89;                ///< desired coordinate radius h of the horizon (M)
   double rah_width = 1.0;            ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
+  std::string rah_profile = "rational"; ///< rational | rational3 | gauss | gauss3
+  std::string rah_normal = "unit";      ///< unit | smooth | conformal
+  std::string rah_hAH_file;             ///< open loop: h_AH(t) from columns t, r_ah of a file
+  std::string driver_advection = "upwind-gd";  ///< beta_GD d_r Delta^r in B's driver
+  std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
   std::string ah_every = "substage"; ///< substage | step | n (every n steps)
   double ah_tmin = 0.0;              ///< searches are made for ah-tmin <= t ...
   double ah_tmax = -1.0;             ///< ... <= ah-tmax; < 0: until the end
@@ -75,6 +84,12 @@ Grid make_grid(const Params& p);
 InitialDataParams initial_data_params(const Params& p);
 RhsParams rhs_params(const Params& p);
 double time_step(const Params& p, const Grid& grid);
+
+/// h_AH(t) read from the columns `t` and `r_ah` of a gbssn1d output file (horizon.dat or
+/// timeseries.dat), as a cubic B-spline in t (C2, so that RK4 sees a smooth function). Throws
+/// ParamError (--rah-hAH-file) if the file cannot be read, its times are not equally spaced,
+/// it has no horizon at some time, or it ends before `t_end`.
+std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end);
 
 /// How often h_AH is searched for: at every RK substage (0), or every n >= 1 full steps.
 long ah_every_steps(const Params& p);

@@ -40,6 +40,33 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
   return width > 0.0 ? std::sqrt(sum / width) : 0.0;
 }
 
+double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal,
+                     double Rmin, double Rmax) {
+  const std::size_t n = values.size();
+  double sum = 0.0, width = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(R_areal[k] >= Rmin && R_areal[k] <= Rmax))
+      continue;
+    // |dR| of the cell: half the distance between its neighbours' areal radii
+    const std::size_t lo = k > 0 ? k - 1 : k, hi = k + 1 < n ? k + 1 : k;
+    const double dR = std::abs(R_areal[hi] - R_areal[lo]) / static_cast<double>(hi - lo);
+    sum += values[k] * values[k] * dR;
+    width += dR;
+  }
+  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+}
+
+double l2_norm_interior(std::span<const double> values, std::span<const double> R_areal,
+                        const Grid& grid, double Rmax) {
+  double sum = 0.0, width = 0.0;
+  for (std::size_t k = 0; k < values.size() && R_areal[k] <= Rmax; ++k) {
+    const double dr = grid.dr()[grid.first_interior() + k];
+    sum += values[k] * values[k] * dr;
+    width += dr;
+  }
+  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+}
+
 double central_value(std::span<const double> f, const Grid& grid) {
   const std::size_t i1 = grid.first_interior(), i2 = i1 + 1;
   const double r1 = grid.r()[i1], r2 = grid.r()[i2];

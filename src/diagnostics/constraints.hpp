@@ -21,6 +21,20 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid);
 /// Returns 0 when no point lies in the range.
 double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax);
 
+/// L2 norm over the interior points whose areal radius lies in [Rmin, Rmax], weighted by the
+/// areal width |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the
+/// same place in every gauge, so norms of runs with different shifts compare. Returns 0 when
+/// no point lies in the window.
+double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal,
+                     double Rmin, double Rmax);
+
+/// L2 norm near the puncture: over the points from the innermost one outwards while the areal
+/// radius stays <= Rmax (inside the horizon when Rmax < 2M), weighted by the cell widths dr
+/// (near a trumpet's puncture R hardly changes, so |dR| would hide those cells). Returns 0
+/// when the innermost point already has R > Rmax (a wormhole's other sheet).
+double l2_norm_interior(std::span<const double> values, std::span<const double> R_areal,
+                        const Grid& grid, double Rmax);
+
 /// The lapse at r = 0 from the two innermost cells, using that alpha is even:
 /// alpha(r) = c0 + c2 r^2  =>  alpha(0) = (r2^2 alpha1 - r1^2 alpha2) / (r2^2 - r1^2).
 double central_value(std::span<const double> f, const Grid& grid);

@@ -35,19 +35,31 @@ bool Simulation::in_search_window(double t) const {
   return t >= params_.ah_tmin && (params_.ah_tmax < 0.0 || t <= params_.ah_tmax);
 }
 
+template <class Search>
+auto Simulation::with_time(Search search) const {
+  try {
+    return search();
+  } catch (const HorizonFinderError& e) {
+    throw HorizonFinderError(fmt::format("{} (t = {:.6g})", e.what(), t_));
+  }
+}
+
 HorizonSearch Simulation::horizons() const {
   HorizonFinderParams finder;
   finder.tolerance = params_.ah_tol;
-  return find_horizons(u_, *grid_, finder);
+  return with_time([&] { return find_horizons(u_, *grid_, finder); });
 }
 
 std::optional<double> Simulation::horizon_radius() {
-  if (!rhs_.params().horizon_shift.active())
+  const auto& hs = rhs_.params().horizon_shift;
+  if (!hs.active())
     return std::nullopt;
+  if (hs.prescribed())
+    return hs.prescribed_h_AH(t_);
   if (ah_every_ == 0 && in_search_window(t_)) {
-    const auto& hs = rhs_.params().horizon_shift;
-    const auto found =
-        find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+    const auto found = with_time([&] {
+      return find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+    });
     return found ? std::optional<double>(found->r) : std::nullopt;
   }
   return rhs_.horizon_radius();
@@ -61,10 +73,12 @@ std::vector<double> Simulation::horizon_shift() {
 
 void Simulation::update_held_horizon() {
   const auto& hs = rhs_.params().horizon_shift;
-  if (!hs.active() || ah_every_ == 0 || !in_search_window(t_)
+  if (!hs.active() || hs.prescribed() || ah_every_ == 0 || !in_search_window(t_)
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
-  const auto found = find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+  const auto found = with_time([&] {
+    return find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+  });
   // Without a horizon the held value is dropped: beta_H = 0 until one is found.
   rhs_.set_horizon_radius(found ? std::optional<double>(found->r) : std::nullopt);
 }
@@ -97,12 +111,17 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
   row.M_L2_ext = l2_norm(d.M_r, g, params_.norm_rmin, params_.norm_rmax);
   row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
   row.G_L2_ext = l2_norm(d.G_r, g, params_.norm_rmin, params_.norm_rmax);
+  const double M = params_.M;
+  row.H_L2_R = l2_norm_areal(d.H, d.R_areal, params_.norm_Rmin * M, params_.norm_Rmax * M);
+  row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, params_.norm_Rmin * M, params_.norm_Rmax * M);
+  row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, params_.norm_Rint * M);
   diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
   diagnostic_rhs_(u_, dudt_, t_);
   const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
   const auto horizon = found.horizon();
   row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
   row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
+  row.M_ah_err = row.M_ah - M;
   row.dtalpha_max_ext = 0.0;
   for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
     if (g.r()[i] >= params_.norm_rmin && g.r()[i] <= params_.norm_rmax)

@@ -81,6 +81,9 @@ public:
 
 private:
   bool in_search_window(double t) const;
+  /// Runs a horizon search; a HorizonFinderError gets the current time added.
+  template <class Search>
+  auto with_time(Search search) const;
   /// Held mode: search for the horizon and hold its radius for the RHS.
   void update_held_horizon();
   /// Say on stderr when the horizon appears or disappears.

@@ -2,12 +2,33 @@
 
 #include "fd/stencils.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 
 namespace gbssn1d {
 
 namespace {
+
+/// An AdvectionStencil as 0/1 weights of the three stencils (branch-free, so that the point
+/// loop vectorises).
+struct StencilWeights {
+  double centred = 0.0, upwind_gd = 0.0, upwind_full = 0.0;
+  explicit StencilWeights(AdvectionStencil s)
+      : centred(s == AdvectionStencil::centred ? 1.0 : 0.0),
+        upwind_gd(s == AdvectionStencil::upwind_gd ? 1.0 : 0.0),
+        upwind_full(s == AdvectionStencil::upwind_full ? 1.0 : 0.0) {}
+};
+
+/// d_x Delta^r (times dx) by the weighted stencil; `beta_gd`, `beta_full` give the upwind
+/// directions.
+[[gnu::always_inline]] inline double delta_derivative(const StencilWeights& w, const double* f,
+                                                      double beta_gd, double beta_full) {
+  const double plus = fd::d1_lopsided_plus(f), minus = fd::d1_lopsided_minus(f);
+  return w.centred * fd::d1_centred(f) + w.upwind_gd * (beta_gd > 0.0 ? plus : minus)
+         + w.upwind_full * (beta_full > 0.0 ? plus : minus);
+}
 
 /// Pointers to the start of each variable's array, by name (passed by value, so that the
 /// compiler keeps them in registers in the point loop).
@@ -110,10 +131,9 @@ void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftP
   const auto a = field(u, grid, Var::a);
   const double amplitude = params.A * (*h_AH - params.h);
   for (std::size_t i = 0; i < grid.n_total(); ++i) {
-    const double q = grid.r()[i] / params.width;
-    const double f = q / (1.0 + q * q);          // f(r), odd
-    const double s_r = std::sqrt(chi[i] / a[i]); // unit radial normal, even
-    beta_H[i] = f * amplitude * s_r;             // (H3)
+    const double f = shift_profile(params.profile, grid.r()[i] / params.width); // odd
+    const double s_r = shift_normal(params.normal, chi[i], a[i]);               // even
+    beta_H[i] = f * amplitude * s_r;                                            // (H3)
   }
 }
 
@@ -127,9 +147,15 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     const bool midstep_search =
         hs.variant == HorizonShiftParams::Variant::midstep_update
         && evaluations_ % static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;
-    if ((hs.search_every_substage || midstep_search) && in_window) {
-      const auto found = find_horizon_near(u, *grid_, hs.finder, h_AH_.value_or(hs.h));
-      h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+    if (hs.prescribed()) {
+      h_AH_ = hs.prescribed_h_AH(t); // open loop: the same h_AH(t) at every resolution
+    } else if ((hs.search_every_substage || midstep_search) && in_window) {
+      try {
+        const auto found = find_horizon_near(u, *grid_, hs.finder, h_AH_.value_or(hs.h));
+        h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+      } catch (const HorizonFinderError& e) {
+        throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
+      }
     }
     horizon_shift_profile(u, *grid_, hs, h_AH_, beta_H_);
     const auto beta_GD = field(u, *grid_, Var::beta);
@@ -171,6 +197,7 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   const double ko_scale = params_.ko_sigma / 64.0 * inv_dx;
   const GaugeParams gauge = params_.gauge;
   const auto variant = params_.horizon_shift.variant;
+  const StencilWeights driver_w(params_.advection.driver), delta_w(params_.advection.delta);
   const std::size_t begin = g.first_interior(), end = g.end_interior();
 
   // The output never aliases the input, which `ivdep` asserts: the loop vectorises across
@@ -178,17 +205,22 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
 #pragma GCC ivdep
   for (std::size_t i = begin; i < end; ++i) {
     PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
-    Rhs rhs;
+    const double d1_scale = inv_dx * inv_rx[i];
+    // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
+    // beta_GD alone with the horizon shift (H2).
+    Shift gd = full_shift(p);
+    const double* f = beta_GD + i;
     if constexpr (with_horizon_shift) {
-      // ... except the Gamma-driver: B follows d_t Delta^r of beta_GD alone (H2), and the
-      // evolved variable is beta_GD.
-      const double d1_scale = inv_dx * inv_rx[i];
-      const double* f = beta_GD + i;
-      Shift gd;
       gd.beta = f[0];
       gd.d_beta = fd::d1_centred(f) * d1_scale;
       gd.dd_beta = fd::d2_centred(f) * d1_scale * d1_scale + fd::d1_centred(f) * inv_dx * d2_fx[i];
-      gd.adv_Delta_r = fd::advect(gd.beta * d1_scale, in.Delta_r + i);
+    }
+    // The two beta d_r Delta^r terms, each with its stencil (AdvectionParams).
+    const double* Delta = in.Delta_r + i;
+    gd.adv_Delta_r = gd.beta * d1_scale * delta_derivative(driver_w, Delta, gd.beta, p.beta);
+    p.adv_Delta_r = p.beta * d1_scale * delta_derivative(delta_w, Delta, gd.beta, p.beta);
+    Rhs rhs;
+    if constexpr (with_horizon_shift) {
       using Variant = HorizonShiftParams::Variant;
       if (variant == Variant::no_shift_derivatives) {
         p.d_beta = gd.d_beta; // the full shift's value, but beta_GD's derivatives
@@ -204,7 +236,7 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
       rhs.beta = 0.75 * p.B + shift_advection * fd::advect(p.beta * d1_scale, f);
     } else {
-      rhs = gbssn_rhs(p, gauge);
+      rhs = gbssn_rhs(p, gauge, gd);
     }
     const double ko = ko_scale * inv_rx[i];
     out_alpha[i] = rhs.alpha + ko * fd::ko6(in.alpha + i);

@@ -14,24 +14,85 @@
 #include "horizon/apparent_horizon.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace gbssn1d {
 
+/// Radial profile f(r) of the horizon-adjusting shift, q = r/w. Each is odd in r with its
+/// largest value 1/2 or about it, and falls off like 1/q (rational) or like a Gaussian.
+enum class ShiftProfile {
+  rational,  ///< q / (1 + q^2): the published f(r) of (H3); f ~ r at the origin
+  rational3, ///< q^3 / (1 + q^4): the same fall-off, but f ~ r^3 at the origin
+  gauss,     ///< (q/2) exp((1 - q^2)/2): concentrated at r ~ w, f ~ r at the origin
+  gauss3,    ///< (q^3/2) exp(3 (1 - q^2)/2): concentrated at r ~ w, f ~ r^3 at the origin
+};
+
+/// The radial vector s^r that beta_H points along.
+enum class ShiftNormal {
+  unit,      ///< sqrt(chi/a), the unit normal of (H3); ~ |r| at a trumpet's puncture (a kink)
+  smooth,    ///< sqrt((chi + chi_smooth)/a): smooth and even at the puncture, within a few
+             ///< per cent of `unit` where chi >> chi_smooth (near and outside the horizon)
+  conformal, ///< 1/sqrt(a), the unit normal of the conformal metric: smooth and even
+};
+/// The regulator of ShiftNormal::smooth.
+inline constexpr double chi_smooth = 0.01;
+
+/// How a term beta d_r Delta^r is differenced.
+enum class AdvectionStencil {
+  upwind_gd,   ///< lopsided towards where beta_GD comes from
+  upwind_full, ///< lopsided towards where the full shift beta_GD + beta_H comes from
+  centred,     ///< 4th-order centred
+};
+
+/// f(r) of the profile, at r/w = q.
+inline double shift_profile(ShiftProfile profile, double q) {
+  switch (profile) {
+  case ShiftProfile::rational3:
+    return q * q * q / (1.0 + q * q * q * q);
+  case ShiftProfile::gauss:
+    return 0.5 * q * std::exp(0.5 * (1.0 - q * q));
+  case ShiftProfile::gauss3:
+    return 0.5 * q * q * q * std::exp(1.5 * (1.0 - q * q));
+  case ShiftProfile::rational:
+  default:
+    return q / (1.0 + q * q);
+  }
+}
+
+/// s^r of the chosen normal. chi < 0 (which a coarse evolution can produce in the innermost
+/// cell) counts as 0, so that s^r stays finite.
+inline double shift_normal(ShiftNormal normal, double chi, double a) {
+  const double chi_pos = chi > 0.0 ? chi : 0.0;
+  switch (normal) {
+  case ShiftNormal::smooth:
+    return std::sqrt((chi_pos + chi_smooth) / a);
+  case ShiftNormal::conformal:
+    return 1.0 / std::sqrt(a);
+  case ShiftNormal::unit:
+  default:
+    return std::sqrt(chi_pos / a);
+  }
+}
+
 /// The horizon-adjusting shift (equations document, Sec. 14):
 ///   beta = beta_GD + beta_H,   beta_H = f(r) A (h_AH - h) s^r,
-///   s^r = sqrt(chi/a),   f(r) = (r/w) / (1 + (r/w)^2).
-/// The evolved shift variable is beta_GD; B is driven by d_t Delta^r computed with beta_GD
-/// alone (H2), every other term sees the full beta.
+/// (H3) with f(r) = (r/w) / (1 + (r/w)^2) and s^r = sqrt(chi/a); other profiles and normals are
+/// offered for the study of the method. The evolved shift variable is beta_GD; B is driven by
+/// d_t Delta^r computed with beta_GD alone (H2), every other term sees the full beta.
 struct HorizonShiftParams {
   double A = 0.0;     ///< strength; 0 switches the horizon shift off
   double h = 0.89;    ///< desired coordinate radius of the horizon
   double width = 1.0; ///< w
+  ShiftProfile profile = ShiftProfile::rational;
+  ShiftNormal normal = ShiftNormal::unit;
   /// true: h_AH is found on the state of every RK substage (the RHS is a function of the state
   /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
   bool search_every_substage = true;
   double t_min = 0.0, t_max = -1.0; ///< substage searches only in this window (t_max < 0: none)
+  /// Open loop: h_AH(t) prescribed as a function of time (no searches); empty: closed loop.
+  std::function<double(double)> prescribed_h_AH;
   /// Deliberately inconsistent implementations, for the study of why a 3D code lost
   /// convergence; `consistent` is the method as specified above.
   enum class Variant {
@@ -46,15 +107,24 @@ struct HorizonShiftParams {
   long midstep_every = 1; ///< n of midstep_update
   HorizonFinderParams finder;
   bool active() const { return A != 0.0; }
+  bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
+};
+
+/// The differencing of the two beta d_r Delta^r terms: the one inside d_t Delta^r|beta_GD that
+/// drives B (G3)/(H2), and Delta^r's own advection in (E6).
+struct AdvectionParams {
+  AdvectionStencil driver = AdvectionStencil::upwind_gd;
+  AdvectionStencil delta = AdvectionStencil::upwind_full;
 };
 
 struct RhsParams {
   GaugeParams gauge;
   double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
+  AdvectionParams advection;
   HorizonShiftParams horizon_shift;
 };
 
-/// f(r) A (h_AH - h) sqrt(chi/a) on every point (ghosts included; odd in r like beta), or zero
+/// f(r) A (h_AH - h) s^r on every point (ghosts included; odd in r like beta), or zero
 /// everywhere without a horizon radius.
 void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
                            std::optional<double> h_AH, std::vector<double>& beta_H);

@@ -11,6 +11,8 @@
 #include "grid/grid.hpp"
 
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gbssn1d {
@@ -27,6 +29,14 @@ struct HorizonSearch {
   std::vector<MarginalSurface> surfaces;
   /// The apparent horizon: the outermost zero with Theta_+ < 0 just inside, if any.
   std::optional<MarginalSurface> horizon() const;
+};
+
+/// The finder met values it cannot work with (a non-finite Theta_+ or root, a bracket the
+/// root-finder rejects). The message says what and where; a run stops on it, with its output
+/// up to then intact.
+class HorizonFinderError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
 };
 
 struct HorizonFinderParams {

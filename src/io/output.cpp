@@ -11,8 +11,9 @@
 namespace gbssn1d {
 
 std::vector<std::string> series_columns() {
-  return {"t",        "alpha_center",    "H_L2", "H_L2_ext", "M_L2", "M_L2_ext", "G_L2",
-          "G_L2_ext", "dtalpha_max_ext", "r_ah", "M_ah"};
+  return {"t",      "alpha_center", "H_L2",   "H_L2_ext", "M_L2",     "M_L2_ext",
+          "G_L2",   "G_L2_ext",     "dtalpha_max_ext", "r_ah", "M_ah", "H_L2_R",
+          "M_L2_R", "H_L2_int",     "M_ah_err"};
 }
 
 std::vector<std::string> profile_columns() {
@@ -64,8 +65,11 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
               parameter_header
                   + "timeseries.dat: *_L2 norms over the whole grid, *_L2_ext over the fixed "
                     "coordinate region norm-rmin <= r <= norm-rmax (the same rule before and after "
-                    "a horizon forms), weighted by cell width; r_ah, M_ah: apparent horizon (NaN "
-                    "if none)\n",
+                    "a horizon forms), weighted by cell width; *_L2_R over the areal-radius window "
+                    "norm-Rmin M <= R <= norm-Rmax M (the same place in every gauge), weighted by "
+                    "areal width |dR|; H_L2_int from the puncture out to R = norm-Rint M, weighted "
+                    "by cell width; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - "
+                    "M\n",
               series_columns()),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns()),
       horizons_(dir / "horizon.dat",
@@ -79,9 +83,10 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
 void Output::write_series(const SeriesRow& row) {
   fmt::print(series_.handle(),
              "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
-             "{:.16e} {:.16e} {:.16e}\n",
+             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
              row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
-             row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah);
+             row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
+             row.H_L2_int, row.M_ah_err);
   series_.flush();
 }
 

@@ -21,6 +21,9 @@ struct SeriesRow {
   double t, alpha_center, H_L2, H_L2_ext, M_L2, M_L2_ext, G_L2, G_L2_ext;
   double dtalpha_max_ext; ///< max |d_t alpha| over the exterior region (settling)
   double r_ah, M_ah;      ///< apparent horizon (NaN when none is found)
+  double H_L2_R, M_L2_R;  ///< over the areal-radius window [norm-Rmin, norm-Rmax] M
+  double H_L2_int;        ///< near the puncture, R <= norm-Rint M
+  double M_ah_err;        ///< M_ah - M
 };
 
 /// Column names, in order.

@@ -145,20 +145,32 @@ int run_converge(const Params& base, const ConvergeOptions& options,
 
   // convergence.dat
   std::vector<std::string> cols{"t"};
-  const char* norms[] = {"H", "M", "G"};
-  for (const char* c : norms)
+  // the norms compared across members: column stem, order stem, value
+  struct Norm {
+    const char *column, *order;
+    double SeriesRow::*value;
+  };
+  const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext},
+                        {"M_L2_ext", "M", &SeriesRow::M_L2_ext},
+                        {"G_L2_ext", "G", &SeriesRow::G_L2_ext},
+                        {"H_L2_R", "H_R", &SeriesRow::H_L2_R},
+                        {"M_L2_R", "M_R", &SeriesRow::M_L2_R},
+                        {"H_L2_int", "H_int", &SeriesRow::H_L2_int}};
+  constexpr int n_norms = static_cast<int>(std::size(norms));
+  for (const auto& c : norms)
     for (std::size_t k = 0; k < m; ++k)
-      cols.push_back(fmt::format("{}_L2_ext_N{}", c, members[k].N));
-  for (const char* c : norms)
+      cols.push_back(fmt::format("{}_N{}", c.column, members[k].N));
+  for (const auto& c : norms)
     for (std::size_t k = 0; k + 1 < m; ++k)
-      cols.push_back(fmt::format("p_{}_{}_{}", c, members[k].N, members[k + 1].N));
+      cols.push_back(fmt::format("p_{}_{}_{}", c.order, members[k].N, members[k + 1].N));
   for (const auto& name : options.fields)
     for (std::size_t k = 0; k + 2 < m; ++k)
       cols.push_back(
           fmt::format("p3_{}_{}_{}_{}", name, members[k].N, members[k + 1].N, members[k + 2].N));
   const std::string header =
       base_config
-      + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the exterior norms; "
+      + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the norms (X_L2_ext: "
+                    "coordinate window, X_L2_R: areal window, H_L2_int: near the puncture); "
                     "p3_f_a_b_c solves |f_a - f_b|/|f_b - f_c| = (a^-p - b^-p)/(b^-p - c^-p) "
                     "(Sec. 15) with RMS differences of f at the coarsest grid's radii in "
                     "[norm-rmin, norm-rmax] (6th-order interpolation)\n",
@@ -167,14 +179,11 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     DataFile file(fs::path(options.out) / "convergence.dat", header, cols);
     for (std::size_t s = 0; s < n_times; ++s) {
       std::string line = fmt::format("{:.16e}", records.front().rows[s].t);
-      auto norm = [&](std::size_t k, int c) {
-        const SeriesRow& row = records[k].rows[s];
-        return c == 0 ? row.H_L2_ext : c == 1 ? row.M_L2_ext : row.G_L2_ext;
-      };
-      for (int c = 0; c < 3; ++c)
+      auto norm = [&](std::size_t k, int c) { return records[k].rows[s].*norms[c].value; };
+      for (int c = 0; c < n_norms; ++c)
         for (std::size_t k = 0; k < m; ++k)
           line += fmt::format(" {:.16e}", norm(k, c));
-      for (int c = 0; c < 3; ++c)
+      for (int c = 0; c < n_norms; ++c)
         for (std::size_t k = 0; k + 1 < m; ++k)
           line +=
               fmt::format(" {:.6e}", order_two_level(norm(k, c), norm(k + 1, c), Nd(k), Nd(k + 1)));
