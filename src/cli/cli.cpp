@@ -57,12 +57,18 @@ const std::vector<ParamSpec>& param_specs() {
        "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon"},
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)"},
       {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon (M)"},
-      {"rah-width", &Params::rah_width, "Horizon", "width w of f(r) = (r/w)/(1+(r/w)^2) (M)"},
+      {"rah-width", &Params::rah_width, "Horizon",
+       "width w of f(r) (M), for every --rah-profile but auto"},
       {"rah-profile", &Params::rah_profile, "Horizon",
-       "f(r), q = r/w: rational q/(1+q^2) (published) | rational3 q^3/(1+q^4) | gauss "
-       "(q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},
+       "f(r), q = r/w: auto (rational with w = 3 M to stretch, gauss with w = 1 M to shrink; "
+       "--rah-width is then not used) | rational q/(1+q^2) (published) | rational3 "
+       "q^3/(1+q^4) | gauss (q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},
       {"rah-normal", &Params::rah_normal, "Horizon",
-       "s^r: unit sqrt(chi/a) (published) | smooth sqrt((chi+0.01)/a) | conformal 1/sqrt(a)"},
+       "s^r: conformal 1/sqrt(a) (smooth at the puncture) | unit sqrt(chi/a) (published; "
+       "~|r| at a trumpet's puncture) | smooth sqrt((chi+chi_s)/a)"},
+      {"rah-chi-smooth", &Params::rah_chi_smooth, "Horizon",
+       "chi_s of --rah-normal smooth: the kink of sqrt(chi) at the puncture is rounded where "
+       "chi ~ chi_s"},
       {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
        "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)"},
       {"driver-advection", &Params::driver_advection, "Numerics",

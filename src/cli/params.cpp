@@ -131,8 +131,10 @@ void validate(const Params& p) {
       list += (list.empty() ? "" : ", ") + std::string(c);
     throw ParamError(flag, value, "must be one of " + list);
   };
-  require_one_of("--rah-profile", p.rah_profile, {"rational", "rational3", "gauss", "gauss3"});
+  require_one_of("--rah-profile", p.rah_profile,
+                 {"auto", "rational", "rational3", "gauss", "gauss3"});
   require_one_of("--rah-normal", p.rah_normal, {"unit", "smooth", "conformal"});
+  require_positive("--rah-chi-smooth", p.rah_chi_smooth);
   require_one_of("--driver-advection", p.driver_advection,
                  {"upwind-gd", "upwind-full", "centred"});
   require_one_of("--delta-advection", p.delta_advection, {"upwind-gd", "upwind-full", "centred"});
@@ -212,13 +214,15 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.A = p.rahA;
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
-  r.horizon_shift.profile = p.rah_profile == "rational3" ? ShiftProfile::rational3
+  r.horizon_shift.profile = p.rah_profile == "auto"        ? ShiftProfile::automatic
+                            : p.rah_profile == "rational3" ? ShiftProfile::rational3
                             : p.rah_profile == "gauss"   ? ShiftProfile::gauss
                             : p.rah_profile == "gauss3"  ? ShiftProfile::gauss3
                                                          : ShiftProfile::rational;
   r.horizon_shift.normal = p.rah_normal == "smooth"      ? ShiftNormal::smooth
                            : p.rah_normal == "conformal" ? ShiftNormal::conformal
                                                          : ShiftNormal::unit;
+  r.horizon_shift.chi_smooth = p.rah_chi_smooth;
   if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
     r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
   auto stencil = [](const std::string& s) {
@@ -290,8 +294,8 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
     t.push_back(row[col_t]);
     r_ah.push_back(row[col_r]);
   }
-  if (t.size() < 4)
-    throw ParamError(flag, path, "needs at least 4 rows");
+  if (t.size() < 5)
+    throw ParamError(flag, path, "needs at least 5 rows");
   const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
   for (std::size_t k = 1; k < t.size(); ++k)
     if (std::abs(t[k] - t[0] - static_cast<double>(k) * dt) > 1e-9 * (1.0 + std::abs(t[k])))
@@ -301,8 +305,16 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
     throw ParamError(flag, path,
                      fmt::format("covers t = {} ... {}, not the run's 0 ... {}", t.front(),
                                  t.back(), t_end));
+  // end slopes from 4th-order one-sided differences (Boost's default estimate is cruder)
+  const std::size_t m = r_ah.size() - 1;
+  const double slope_left =
+      (-25.0 * r_ah[0] + 48.0 * r_ah[1] - 36.0 * r_ah[2] + 16.0 * r_ah[3] - 3.0 * r_ah[4])
+      / (12.0 * dt);
+  const double slope_right = (25.0 * r_ah[m] - 48.0 * r_ah[m - 1] + 36.0 * r_ah[m - 2]
+                              - 16.0 * r_ah[m - 3] + 3.0 * r_ah[m - 4])
+                             / (12.0 * dt);
   auto spline = std::make_shared<boost::math::interpolators::cardinal_cubic_b_spline<double>>(
-      r_ah.begin(), r_ah.end(), t.front(), dt);
+      r_ah.begin(), r_ah.end(), t.front(), dt, slope_left, slope_right);
   return [spline](double time) { return (*spline)(time); };
 }
 

@@ -42,8 +42,9 @@ struct Params {
   double rahA = 0.0;                 ///< strength A of beta_H (0: no horizon shift)
   double rah0 = 0.89;                ///< desired coordinate radius h of the horizon (M)
   double rah_width = 1.0;            ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
-  std::string rah_profile = "rational"; ///< rational | rational3 | gauss | gauss3
-  std::string rah_normal = "unit";      ///< unit | smooth | conformal
+  std::string rah_profile = "auto";    ///< auto | rational | rational3 | gauss | gauss3
+  std::string rah_normal = "conformal"; ///< conformal | unit | smooth
+  double rah_chi_smooth = 0.05;         ///< chi_s of the smooth normal sqrt((chi + chi_s)/a)
   std::string rah_hAH_file;             ///< open loop: h_AH(t) from columns t, r_ah of a file
   std::string driver_advection = "upwind-gd";  ///< beta_GD d_r Delta^r in B's driver
   std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)

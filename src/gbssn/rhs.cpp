@@ -132,7 +132,7 @@ void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftP
   const double amplitude = params.A * (*h_AH - params.h);
   for (std::size_t i = 0; i < grid.n_total(); ++i) {
     const double f = shift_profile(params.profile, grid.r()[i] / params.width); // odd
-    const double s_r = shift_normal(params.normal, chi[i], a[i]);               // even
+    const double s_r = shift_normal(params.normal, chi[i], a[i], params.chi_smooth);               // even
     beta_H[i] = f * amplitude * s_r;                                            // (H3)
   }
 }

@@ -23,6 +23,7 @@ namespace gbssn1d {
 /// Radial profile f(r) of the horizon-adjusting shift, q = r/w. Each is odd in r with its
 /// largest value 1/2 or about it, and falls off like 1/q (rational) or like a Gaussian.
 enum class ShiftProfile {
+  automatic, ///< chosen by the direction of the move: see resolve_automatic_profile()
   rational,  ///< q / (1 + q^2): the published f(r) of (H3); f ~ r at the origin
   rational3, ///< q^3 / (1 + q^4): the same fall-off, but f ~ r^3 at the origin
   gauss,     ///< (q/2) exp((1 - q^2)/2): concentrated at r ~ w, f ~ r at the origin
@@ -32,12 +33,10 @@ enum class ShiftProfile {
 /// The radial vector s^r that beta_H points along.
 enum class ShiftNormal {
   unit,      ///< sqrt(chi/a), the unit normal of (H3); ~ |r| at a trumpet's puncture (a kink)
-  smooth,    ///< sqrt((chi + chi_smooth)/a): smooth and even at the puncture, within a few
-             ///< per cent of `unit` where chi >> chi_smooth (near and outside the horizon)
+  smooth,    ///< sqrt((chi + chi_s)/a): smooth and even at the puncture, close to `unit`
+             ///< where chi >> chi_s (HorizonShiftParams::chi_smooth)
   conformal, ///< 1/sqrt(a), the unit normal of the conformal metric: smooth and even
 };
-/// The regulator of ShiftNormal::smooth.
-inline constexpr double chi_smooth = 0.01;
 
 /// How a term beta d_r Delta^r is differenced.
 enum class AdvectionStencil {
@@ -55,6 +54,7 @@ inline double shift_profile(ShiftProfile profile, double q) {
     return 0.5 * q * std::exp(0.5 * (1.0 - q * q));
   case ShiftProfile::gauss3:
     return 0.5 * q * q * q * std::exp(1.5 * (1.0 - q * q));
+  case ShiftProfile::automatic: // resolved before use
   case ShiftProfile::rational:
   default:
     return q / (1.0 + q * q);
@@ -63,7 +63,7 @@ inline double shift_profile(ShiftProfile profile, double q) {
 
 /// s^r of the chosen normal. chi < 0 (which a coarse evolution can produce in the innermost
 /// cell) counts as 0, so that s^r stays finite.
-inline double shift_normal(ShiftNormal normal, double chi, double a) {
+inline double shift_normal(ShiftNormal normal, double chi, double a, double chi_smooth) {
   const double chi_pos = chi > 0.0 ? chi : 0.0;
   switch (normal) {
   case ShiftNormal::smooth:
@@ -87,6 +87,7 @@ struct HorizonShiftParams {
   double width = 1.0; ///< w
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
+  double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth
   /// true: h_AH is found on the state of every RK substage (the RHS is a function of the state
   /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
   bool search_every_substage = true;
@@ -109,6 +110,19 @@ struct HorizonShiftParams {
   bool active() const { return A != 0.0; }
   bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
 };
+
+/// The profile and width that ShiftProfile::automatic stands for, chosen from the experiments
+/// of docs/horizon-shift-study.md: to stretch (h >= h_AH, the horizon radius at the start), the
+/// published rational profile with w = 3 M (wide: H outside stays at the standard gauge's); to
+/// shrink (h < h_AH), the Gaussian with w = 1 M (concentrated at the horizon; wider profiles
+/// lose a clean convergence order there). Other profiles are left as they are.
+inline void resolve_automatic_profile(HorizonShiftParams& params, double h_AH, double M) {
+  if (params.profile != ShiftProfile::automatic)
+    return;
+  const bool stretch = params.h >= h_AH;
+  params.profile = stretch ? ShiftProfile::rational : ShiftProfile::gauss;
+  params.width = (stretch ? 3.0 : 1.0) * M;
+}
 
 /// The differencing of the two beta d_r Delta^r terms: the one inside d_t Delta^r|beta_GD that
 /// drives B (G3)/(H2), and Delta^r's own advection in (E6).

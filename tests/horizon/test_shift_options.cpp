@@ -1,0 +1,328 @@
+// Options of the horizon-adjusting shift (profiles, normals, open loop, advection stencils),
+// the areal-radius norms, the finder's failures, and the coarse-resolution convergence of the
+// default method (docs/horizon-shift-study.md).
+#include "diagnostics/constraints.hpp"
+#include "evolution/simulation.hpp"
+#include "fd/stencils.hpp"
+#include "horizon/apparent_horizon.hpp"
+#include "../test_support.hpp"
+
+#include <fmt/format.h>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+using namespace gbssn1d;
+
+namespace {
+
+Simulation make(Params p) {
+  resolve_defaults(p);
+  validate(p);
+  return Simulation(p);
+}
+
+Params trumpet(int n, double rmax, double tmax) {
+  Params p;
+  p.id = "1log-trumpet";
+  p.grid = "uniform";
+  p.N = n;
+  p.rmax = rmax;
+  p.tmax = tmax;
+  p.dt_series = 1.0;
+  return p;
+}
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "gbssn1d-tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+} // namespace
+
+TEST_CASE("shift profiles: odd, their stated shapes at the origin, the peak and far away") {
+  using P = ShiftProfile;
+  for (P prof : {P::rational, P::rational3, P::gauss, P::gauss3})
+    for (double q : {0.01, 0.3, 1.0, 2.5, 7.0})
+      CHECK(shift_profile(prof, -q) == -shift_profile(prof, q));
+  // closed forms at q = 1 and q = 2
+  CHECK(shift_profile(P::rational, 1.0) == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(shift_profile(P::rational, 2.0) == doctest::Approx(0.4).epsilon(1e-15));
+  CHECK(shift_profile(P::rational3, 2.0) == doctest::Approx(8.0 / 17.0).epsilon(1e-15));
+  CHECK(shift_profile(P::gauss, 1.0) == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(shift_profile(P::gauss, 2.0) == doctest::Approx(std::exp(-1.5)).epsilon(1e-15));
+  CHECK(shift_profile(P::gauss3, 1.0) == doctest::Approx(0.5).epsilon(1e-15));
+  // the Gaussians peak at q = 1
+  for (P prof : {P::gauss, P::gauss3}) {
+    CHECK(shift_profile(prof, 0.99) < 0.5);
+    CHECK(shift_profile(prof, 1.01) < 0.5);
+  }
+  // leading powers at the origin: f ~ q (rational, gauss) or q^3 (rational3, gauss3)
+  const double q = 1e-3;
+  CHECK(shift_profile(P::rational, q) / q == doctest::Approx(1.0).epsilon(1e-5));
+  CHECK(shift_profile(P::gauss, q) / q == doctest::Approx(0.5 * std::exp(0.5)).epsilon(1e-5));
+  CHECK(shift_profile(P::rational3, q) / (q * q * q) == doctest::Approx(1.0).epsilon(1e-5));
+  CHECK(shift_profile(P::gauss3, q) / (q * q * q)
+        == doctest::Approx(0.5 * std::exp(1.5)).epsilon(1e-5));
+}
+
+TEST_CASE("shift normals: their values, and the unit normal's kink at a trumpet's puncture") {
+  CHECK(shift_normal(ShiftNormal::unit, 0.25, 4.0, 0.05) == doctest::Approx(0.25));
+  CHECK(shift_normal(ShiftNormal::conformal, 0.25, 4.0, 0.05) == doctest::Approx(0.5));
+  CHECK(shift_normal(ShiftNormal::smooth, 0.25, 4.0, 0.05)
+        == doctest::Approx(std::sqrt(0.3 / 4.0)));
+  // chi < 0 (a coarse innermost cell) gives a finite s^r
+  CHECK(shift_normal(ShiftNormal::unit, -1e-8, 1.0, 0.05) == 0.0);
+
+  // On the 1+log trumpet chi ~ r^2 at the puncture: beta_H ~ r |r| with the unit normal (its
+  // second difference across r = 0 jumps), ~ r with the conformal one (smooth and odd).
+  Simulation sim = make(trumpet(400, 20.0, 0.0));
+  const Grid& g = sim.grid();
+  HorizonShiftParams hs;
+  hs.A = 0.5;
+  hs.h = 0.89;
+  std::vector<double> unit, conformal;
+  hs.normal = ShiftNormal::unit;
+  horizon_shift_profile(sim.state(), g, hs, 0.83, unit);
+  hs.normal = ShiftNormal::conformal;
+  horizon_shift_profile(sim.state(), g, hs, 0.83, conformal);
+  const std::size_t i1 = g.first_interior(), i2 = i1 + 1;
+  // beta_H(r2)/beta_H(r1) = (r2/r1)^2 for r|r|, r2/r1 for a smooth odd function
+  const double ratio = g.r()[i2] / g.r()[i1]; // = 3 on the cell-centred grid
+  CHECK(unit[i2] / unit[i1] == doctest::Approx(ratio * ratio).epsilon(0.05));
+  CHECK(conformal[i2] / conformal[i1] == doctest::Approx(ratio).epsilon(0.02));
+  // both are odd through the parity ghosts
+  for (const auto* v : {&unit, &conformal})
+    for (std::size_t i = 0; i < Grid::n_ghost; ++i)
+      CHECK((*v)[i] == doctest::Approx(-(*v)[Grid::mirror(i)]).epsilon(1e-14));
+}
+
+TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 1 M to shrink") {
+  HorizonShiftParams stretch;
+  stretch.A = 0.5;
+  stretch.h = 0.89;
+  stretch.profile = ShiftProfile::automatic;
+  HorizonShiftParams shrink = stretch;
+  shrink.h = 0.6;
+  resolve_automatic_profile(stretch, 0.83, 2.0);
+  resolve_automatic_profile(shrink, 0.83, 2.0);
+  CHECK(stretch.profile == ShiftProfile::rational);
+  CHECK(stretch.width == 6.0);
+  CHECK(shrink.profile == ShiftProfile::gauss);
+  CHECK(shrink.width == 2.0);
+  // the run resolves it from the initial horizon (0.8304 M on the 1+log trumpet)
+  Params p = trumpet(200, 20.0, 0.0);
+  p.rahA = 0.5;
+  p.rah0 = 0.6;
+  Simulation sim = make(p);
+  CHECK(sim.rhs().params().horizon_shift.profile == ShiftProfile::gauss);
+  p.rah0 = 0.89;
+  Simulation sim2 = make(p);
+  CHECK(sim2.rhs().params().horizon_shift.profile == ShiftProfile::rational);
+  CHECK(sim2.rhs().params().horizon_shift.width == 3.0);
+}
+
+TEST_CASE("the advection stencil options change exactly the term they name") {
+  // B's driver holds beta_GD d_r Delta^r; Delta^r's own equation beta d_r Delta^r. Switching a
+  // stencil must change that RHS by beta (D_new - D_old) Delta^r and nothing else.
+  Params p = trumpet(100, 20.0, 2.0);
+  p.id = "maximal-trumpet"; // its shift evolves, and with it Delta^r (zero at t = 0)
+  Simulation sim = make(p);
+  sim.run(nullptr);
+  const Grid& g = sim.grid();
+  const State& u = sim.state();
+  auto rhs_with = [&](AdvectionStencil driver, AdvectionStencil delta) {
+    RhsParams rp = sim.rhs().params();
+    rp.advection.driver = driver;
+    rp.advection.delta = delta;
+    GbssnRhs rhs(g, rp);
+    State dudt;
+    rhs(u, dudt, 0.0);
+    return dudt;
+  };
+  using S = AdvectionStencil;
+  const State base = rhs_with(S::upwind_gd, S::upwind_full);
+  const State driver_c = rhs_with(S::centred, S::upwind_full);
+  const State delta_c = rhs_with(S::upwind_gd, S::centred);
+  const auto beta = field(u, g, Var::beta);
+  const auto Delta = field(u, g, Var::Delta_r);
+  const std::size_t nt = g.n_total();
+  double max_change_B = 0;
+  for (std::size_t i = g.first_interior() + 5; i < g.end_interior() - 5; ++i) {
+    const double scale = 1.0 / (g.dx() * g.map().dr_dx(g.x()[i]));
+    const double* f = Delta.data() + i;
+    const double up = (beta[i] > 0 ? fd::d1_lopsided_plus(f) : fd::d1_lopsided_minus(f)) * scale;
+    const double centred = fd::d1_centred(f) * scale;
+    const double expected = beta[i] * (centred - up);
+    const std::size_t iB = index(Var::B) * nt + i, iD = index(Var::Delta_r) * nt + i;
+    // round-off of the O(1) right-hand sides: ~1e-15
+    CHECK(std::abs(driver_c[iB] - base[iB] - expected) < 1e-13);
+    CHECK(driver_c[iD] == base[iD]);
+    CHECK(std::abs(delta_c[iD] - base[iD] - expected) < 1e-13);
+    CHECK(delta_c[iB] == base[iB]);
+    max_change_B = std::max(max_change_B, std::abs(driver_c[iB] - base[iB]));
+  }
+  MESSAGE("largest change of d_t B by the stencil: ", max_change_B);
+  CHECK(max_change_B > 1e-8); // the stencils do differ on these data
+}
+
+TEST_CASE("--rah-hAH-file: h_AH(t) read from a file and interpolated smoothly (open loop)") {
+  const auto dir = scratch("prescribed");
+  const auto path = dir / "horizon.dat";
+  {
+    std::ofstream f(path);
+    f << "# some header\n# t r_ah R_ah\n";
+    for (int k = 0; k <= 80; ++k) {
+      const double t = 0.25 * k;
+      f << t << " " << 0.8 + 0.1 * std::sin(0.3 * t) << " 2\n";
+    }
+  }
+  const auto h = load_prescribed_horizon(path.string(), 20.0);
+  double max_error = 0;
+  for (double t = 0.0; t <= 20.0; t += 0.01)
+    max_error = std::max(max_error, std::abs(h(t) - (0.8 + 0.1 * std::sin(0.3 * t))));
+  MESSAGE("cubic B-spline of h_AH(t), dt = 0.25: max error ", max_error);
+  CHECK(max_error < 1e-5);
+  // a run uses it: beta_H follows the prescribed h_AH, not the horizon of the state
+  Params p = trumpet(200, 20.0, 2.0);
+  p.rahA = 0.5;
+  p.rah_hAH_file = path.string();
+  Simulation sim = make(p);
+  sim.run(nullptr);
+  REQUIRE(sim.horizon_radius().has_value());
+  CHECK(*sim.horizon_radius() == doctest::Approx(0.8 + 0.1 * std::sin(0.6)).epsilon(1e-6));
+  // refusals: too short, unequal spacing, no horizon
+  CHECK_THROWS_AS(load_prescribed_horizon(path.string(), 30.0), ParamError);
+  {
+    std::ofstream f(dir / "gap.dat");
+    f << "# t r_ah\n0 0.8\n1 0.8\n2 0.8\n4 0.8\n5 0.8\n";
+    std::ofstream g(dir / "nan.dat");
+    g << "# t r_ah\n0 0.8\n1 nan\n2 0.8\n3 0.8\n4 0.8\n";
+  }
+  CHECK_THROWS_AS(load_prescribed_horizon((dir / "gap.dat").string(), 1.0), ParamError);
+  CHECK_THROWS_AS(load_prescribed_horizon((dir / "nan.dat").string(), 1.0), ParamError);
+  CHECK_THROWS_AS(load_prescribed_horizon((dir / "missing.dat").string(), 1.0), ParamError);
+}
+
+TEST_CASE("areal-radius norms: weights |dR|, select by R, and the interior window") {
+  // R_k = k + 1 (uniform in R): the |dR|-weighted mean of f = R over [3, 7] is exact for a
+  // linear function on equal weights.
+  const std::size_t n = 20;
+  std::vector<double> R(n), f(n), ones(n, 1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    R[k] = static_cast<double>(k) + 1.0;
+    f[k] = R[k];
+  }
+  CHECK(l2_norm_areal(ones, R, 3.0, 7.0) == doctest::Approx(1.0));
+  // sqrt(mean of R^2 over R = 3..7) = sqrt((9+16+25+36+49)/5)
+  CHECK(l2_norm_areal(f, R, 3.0, 7.0) == doctest::Approx(std::sqrt(135.0 / 5.0)));
+  // stretching the coordinate (R sampled twice as densely on one side) does not change the
+  // norm of a function of R: the weights are |dR|, not dr
+  std::vector<double> R2, f2;
+  for (double x = 1.0; x < 5.0; x += 0.25) {
+    R2.push_back(x);
+    f2.push_back(1.0 + x);
+  }
+  for (double x = 5.0; x <= 12.0; x += 1.0) {
+    R2.push_back(x);
+    f2.push_back(1.0 + x);
+  }
+  std::vector<double> R3, f3; // the same spacings at the window's edges, another inside
+  for (double x = 1.0; x < 5.0; x += 0.25) {
+    R3.push_back(x);
+    f3.push_back(1.0 + x);
+  }
+  for (double x = 5.0; x < 8.0; x += 0.5) {
+    R3.push_back(x);
+    f3.push_back(1.0 + x);
+  }
+  for (double x = 8.0; x <= 12.0; x += 1.0) {
+    R3.push_back(x);
+    f3.push_back(1.0 + x);
+  }
+  CHECK(l2_norm_areal(f2, R2, 3.0, 10.0)
+        == doctest::Approx(l2_norm_areal(f3, R3, 3.0, 10.0)).epsilon(0.02));
+  CHECK(l2_norm_areal(f, R, 100.0, 200.0) == 0.0); // empty window
+
+  // interior: from the innermost point out to R = Rint, dr-weighted
+  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  const Grid& g = sim.grid();
+  std::vector<double> Rt(g.n_interior()), two(g.n_interior(), 2.0);
+  for (std::size_t k = 0; k < Rt.size(); ++k)
+    Rt[k] = k < 10 ? 1.5 : 3.0;
+  CHECK(l2_norm_interior(two, Rt, g, 1.8) == doctest::Approx(2.0));
+  std::vector<double> ramp(g.n_interior(), 0.0);
+  ramp[12] = 100.0; // outside the interior window
+  CHECK(l2_norm_interior(ramp, Rt, g, 1.8) == 0.0);
+  Rt[0] = 5.0; // a wormhole's other sheet: no interior window
+  CHECK(l2_norm_interior(two, Rt, g, 1.8) == 0.0);
+}
+
+TEST_CASE("the horizon finder reports non-finite data instead of crashing") {
+  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  State u = sim.state();
+  const Grid& g = sim.grid();
+  field(u, g, Var::chi)[g.first_interior() + 20] = std::numeric_limits<double>::quiet_NaN();
+  HorizonFinderParams finder;
+  try {
+    (void)find_horizons(u, g, finder);
+    FAIL("no HorizonFinderError");
+  } catch (const HorizonFinderError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("non-finite expansion") != std::string::npos);
+    // the derivative stencils spread the NaN over points 18 ... 22; the scan, from outside in,
+    // meets point 22 first
+    CHECK(what.find(fmt::format("r = {:.6g}", g.r()[g.first_interior() + 22]))
+          != std::string::npos);
+  }
+}
+
+// The published method loses convergence at coarse spacing (M/8 ... M/16), the default does
+// not: H outside the horizon (areal R in [2.5, 12] M), averaged over 10 ... 100 M, within 2x of
+// the standard gauge at M/8, M/12, M/16, and converging at order >= 3.5 over M/12, M/16, M/24.
+// (Measured on the published form: 11.6x, 2.7x, 4.1x the standard; orders 6.4, 2.3.)
+TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24") {
+  auto rms_H = [&](const std::vector<int>& Ns, double rahA) {
+    std::vector<double> out;
+    for (int n : Ns) {
+      Params p = trumpet(n, 200.0, 100.0);
+      p.rahA = rahA;
+      p.rah0 = 0.89;
+      Simulation sim = make(p);
+      double sum = 0;
+      int count = 0;
+      sim.on_series = [&](Simulation& s) {
+        if (s.time() < 10.0 - 1e-9)
+          return;
+        const double H = s.series_row(derived_profiles(s.state(), s.grid())).H_L2_R;
+        sum += H * H;
+        ++count;
+      };
+      sim.run(nullptr);
+      out.push_back(std::sqrt(sum / count));
+    }
+    return out;
+  };
+  const std::vector<int> coarse{1600, 2400, 3200};
+  const auto standard = rms_H(coarse, 0.0);
+  const auto stretch = rms_H({1600, 2400, 3200, 4800}, 0.5);
+  for (std::size_t k = 0; k < coarse.size(); ++k) {
+    MESSAGE("N = ", coarse[k], ": H_L2_R rms standard ", standard[k], ", stretched ", stretch[k],
+            ", ratio ", stretch[k] / standard[k]);
+    CHECK(stretch[k] <= 2.0 * standard[k]);
+  }
+  for (std::size_t k = 1; k + 1 < stretch.size(); ++k) {
+    const double N1 = k == 1 ? 2400 : 3200, N2 = k == 1 ? 3200 : 4800;
+    const double p = std::log(stretch[k] / stretch[k + 1]) / std::log(N2 / N1);
+    MESSAGE("order N = ", N1, " -> ", N2, ": ", p);
+    CHECK(p >= 3.5);
+    CHECK(p <= 4.6);
+  }
+}
