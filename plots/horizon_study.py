@@ -4,6 +4,7 @@
   horizon_study.py table STD FAMILY [FAMILY ...] [-y H_L2_R] [--t0 10 --t1 100]
   horizon_study.py figure FAMILY [FAMILY ...] [-y H_L2_R] [--cols 3] -o figure.png
   horizon_study.py threshold FAMILY [FAMILY ...] [--min-order 3.5] [--rmax 200]
+  horizon_study.py cost STD FAMILY [FAMILY ...] --H-target 1e-5 --M-target 1e-4
 
 Each FAMILY (and STD, the standard gauge at the same resolutions) is a converge directory
 with convergence.dat. `table` prints a row per family:
@@ -16,7 +17,14 @@ with convergence.dat. `table` prints a row per family:
 Families whose members stopped early say so (`ended t = ...`).
 `threshold` prints, for each family on a uniform grid of --rmax, the coarsest spacing
 rmax/N_k from which every three consecutive resolutions converge: both pairwise orders of the
-time averages at least --min-order, for the triple starting at N_k and every finer one.
+time averages at least --min-order, and every pairwise order at the output times in [t0, t1]
+between --min-order - 1 and 6 (an order far from the design order at some time is a
+cancellation, not convergence), for the triple starting at N_k and every finer one.
+`cost` prints, for each family, the work (cells x RK4 steps to t1, from each member's N and
+time step) needed to reach an RMS of the norm of --H-target and a largest |M_AH - M| over
+[t0, t1] of --M-target, found by interpolating log error against log work between the
+members (or extrapolating from the finest two at their order, marked '>'), and its ratio to
+the standard family's: below 1, the gauge saves resolution.
 `figure` draws the norm against t for each family, one panel each, a curve per resolution
 (a sequential colormap: darker is finer).
 """
@@ -98,10 +106,18 @@ def threshold(args):
         R = [rms(*fam[n], args.t0, args.t1) for n in Ns]
         ends = end_times(d)
         ok = []
+        def orders_in_time(j):
+            (t, a), (_, b) = fam[Ns[j]], fam[Ns[j + 1]]
+            sel = (t >= args.t0) & (t <= args.t1)
+            with np.errstate(divide='ignore', invalid='ignore'):
+                return np.log(a[sel] / b[sel]) / math.log(Ns[j + 1] / Ns[j])
+
         for k in range(len(Ns) - 2):
             finished = all(ends.get(n, args.t1) >= args.t1 - 1e-9 for n in Ns[k:k + 3])
             p = [order(R[j], R[j + 1], Ns[j], Ns[j + 1]) for j in (k, k + 1)]
-            ok.append(finished and all(x >= args.min_order for x in p))
+            steady = all(np.all((q >= args.min_order - 1) & (q <= 6)) for q in
+                         (orders_in_time(k), orders_in_time(k + 1)))
+            ok.append(finished and steady and all(x >= args.min_order for x in p))
         start = None
         for k in range(len(ok) - 1, -1, -1):
             if not ok[k]:
@@ -112,6 +128,88 @@ def threshold(args):
             print(f"{name}: none of N = {','.join(map(str, Ns))}")
         else:
             print(f"{name}: from M/{Ns[start] / args.rmax:g} (N = {Ns[start]})")
+
+
+def member_costs(directory, t1):
+    """{N: (work, max |M_ah_err| over [t0, t1], ended early)} from each member's files."""
+    out = {}
+    for name in os.listdir(directory):
+        path = os.path.join(directory, name, 'timeseries.dat')
+        if not (name.startswith('N') and os.path.exists(path)):
+            continue
+        text = read_text(path)
+        params = {}
+        for line in text.splitlines():
+            if line.startswith('# ') and ' = ' in line:
+                k, v = line[2:].split(' = ', 1)
+                params[k.strip()] = v.strip().strip('"')
+        columns, blocks = parse(text)
+        data = blocks[0][1]
+        t = data[:, columns.index('t')]
+        n = int(name[1:])
+        out[n] = (t, data[:, columns.index('M_ah_err')], params)
+    return out
+
+
+def work_of(directory, args):
+    """{N: (cells x steps, M_ah error)}: steps from the run's time step (cfl x smallest cell)."""
+    import sys
+    sys.path.insert(0, os.path.dirname(__file__))
+    res = {}
+    for n, (t, merr, params) in member_costs(directory, args.t1).items():
+        rmax, cfl = float(params['rmax']), float(params['cfl'])
+        if params['grid'] == 'uniform':
+            dr_min = rmax / n
+        else:
+            # sinh map r = rmax sinh(s x)/sinh(s): the innermost cell is the smallest; its
+            # width is --dr-inner of this member
+            dr_min = float(params['dr-inner'])
+        steps = math.ceil(args.t1 / (cfl * dr_min))
+        sel = (t >= args.t0) & (t <= args.t1) & np.isfinite(merr)
+        m = float(np.max(np.abs(merr[sel]))) if sel.any() else float('nan')
+        res[n] = (n * steps, m, t[-1] < args.t1 - 1e-9)
+    return res
+
+
+def needed(work, err, target):
+    """Work at which err reaches target: log-log interpolation between members, or
+    extrapolation beyond the finest pair at its observed order ('>' marks it)."""
+    pts = sorted((w, e) for w, e in zip(work, err) if e > 0 and math.isfinite(e))
+    if not pts:
+        return float('nan'), '?'
+    for (w1, e1), (w2, e2) in zip(pts, pts[1:]):
+        if (e1 - target) * (e2 - target) <= 0 and e1 != e2:
+            f = math.log(target / e1) / math.log(e2 / e1)
+            return math.exp(math.log(w1) + f * math.log(w2 / w1)), ''
+    if pts[0][1] <= target:
+        return pts[0][0], '<'
+    (w1, e1), (w2, e2) = pts[-2], pts[-1]
+    if e2 >= e1:
+        return float('nan'), '?'
+    f = math.log(target / e1) / math.log(e2 / e1)
+    return math.exp(math.log(w1) + f * math.log(w2 / w1)), '>'
+
+
+def cost(args):
+    rows = []
+    for d in [args.std] + args.families:
+        fam = load(d, args.y)
+        wk = work_of(d, args)
+        Ns = [n for n in sorted(fam) if n in wk and not wk[n][2]]
+        H = [rms(*fam[n], args.t0, args.t1) for n in Ns]
+        W = [wk[n][0] for n in Ns]
+        Merr = [wk[n][1] for n in Ns]
+        wH, fH = needed(W, H, args.H_target)
+        wM, fM = needed(W, Merr, args.M_target)
+        rows.append((os.path.basename(os.path.normpath(d)), wH, fH, wM, fM, Ns, H, Merr))
+    std = rows[0]
+    print(f"# work = cells x RK4 steps to t = {args.t1:g} M to reach: rms {args.y} = "
+          f"{args.H_target:g} over t in [{args.t0:g}, {args.t1:g}] M; max |M_AH - M| = "
+          f"{args.M_target:g}; ratio to {std[0]} (< 1: fewer cells and steps)")
+    for name, wH, fH, wM, fM, Ns, H, Merr in rows:
+        print(f"{name}: H: {fH}{wH:.3g} (x{wH / std[1]:.2f}) | M_AH: {fM}{wM:.3g} "
+              f"(x{wM / std[3]:.2f}) | N {','.join(map(str, Ns))}: H "
+              f"{' '.join(f'{x:.1e}' for x in H)}, M_AH err {' '.join(f'{x:.1e}' for x in Merr)}")
 
 
 def figure(args):
@@ -157,12 +255,17 @@ def main():
     th.add_argument('families', nargs='+')
     th.add_argument('--min-order', type=float, default=3.5)
     th.add_argument('--rmax', type=float, default=200.0)
-    for p in (t, f, th):
+    c = sub.add_parser('cost')
+    c.add_argument('std')
+    c.add_argument('families', nargs='+')
+    c.add_argument('--H-target', type=float, default=1e-5)
+    c.add_argument('--M-target', type=float, default=1e-4)
+    for p in (t, f, th, c):
         p.add_argument('-y', default='H_L2_R')
         p.add_argument('--t0', type=float, default=10.0)
         p.add_argument('--t1', type=float, default=100.0)
     a = ap.parse_args()
-    {'table': table, 'figure': figure, 'threshold': threshold}[a.what](a)
+    {'table': table, 'figure': figure, 'threshold': threshold, 'cost': cost}[a.what](a)
 
 
 if __name__ == '__main__':

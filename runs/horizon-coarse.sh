@@ -7,6 +7,7 @@
 #   bash runs/horizon-coarse.sh reproduce   # published form vs defaults, M/8, M/12, M/16 (~2 min)
 #   bash runs/horizon-coarse.sh mechanism   # experiments (a)-(e) on the 1+log stretch (~3 min)
 #   bash runs/horizon-coarse.sh threshold   # h = 0.5 ... 2, M/8 ... M/32, both forms (~15 min)
+#   bash runs/horizon-coarse.sh cost        # work to reach an error, uniform and sinh (~8 min)
 #
 # Tables are printed (plots/horizon_study.py table: RMS of H_L2_R over t in [10, 100] M per N,
 # pairwise orders of those, the range of pairwise orders over time, the ratio to the standard
@@ -17,7 +18,8 @@ cd "$(dirname "$0")/.."
 py=/usr/bin/python3
 out=out/horizon-coarse
 mkdir -p "$out"
-common=(--grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
+common=(--rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
+grid=(--grid uniform) # the cost stage sets a sinh grid for its sinh families
 # the published method: f = r/(1+r^2), the unit normal sqrt(chi/a)
 published=(--rah-profile rational --rah-width 1 --rah-normal unit)
 
@@ -26,7 +28,7 @@ family() { # family NAME "N list" [evolve flags]: one converge run, kept if alre
   shift 2
   [ -f "$out/$name/convergence.dat" ] && return 0
   rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "${common[@]}" "$@" \
+  build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
     >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
 }
 table() { $py plots/horizon_study.py table "$@"; }
@@ -56,7 +58,7 @@ mechanism)
   # (a) open loop: h_AH(t) of a fine closed-loop run, the same function at every resolution
   if [ ! -f "$out/fine-stretch-published/horizon.dat" ]; then
     rm -rf "$out/fine-stretch-published"
-    build/gbssn1d evolve "${common[@]}" --N 6400 --dt-series 0.25 "${s[@]}" "${published[@]}" \
+    build/gbssn1d evolve "${common[@]}" "${grid[@]}" --N 6400 --dt-series 0.25 "${s[@]}" "${published[@]}" \
       --out "$out/fine-stretch-published" 2>/dev/null
   fi
   family a-open-loop $coarse "${s[@]}" "${published[@]}" \
@@ -104,8 +106,25 @@ threshold)
   table "$out/t-standard" "$out"/t-*/ | tee "$out/threshold-table.txt"
   $py plots/horizon_study.py threshold "$out"/t-*/ --min-order 3.5
   ;;
+cost)
+  # uniform: the threshold families; sinh: one map at every N (dr-inner scales as 1/N), from
+  # about M/12 near the horizon at N = 300 to M/33 at N = 800
+  [ -f "$out/t-standard/convergence.dat" ] || bash "$0" threshold >/dev/null
+  grid=(--grid sinh --dr-inner 0.08)
+  family s-standard 300,400,600,800 --id 1log-trumpet
+  for h in 0.6 0.89 1.2 2.0; do
+    family "s-h$h" 300,400,600,800 --id 1log-trumpet --rahA 0.5 --rah0 $h
+  done
+  for target in "1e-5 1e-4" "1e-6 1e-5"; do
+    set -- $target
+    echo "== uniform grids"
+    $py plots/horizon_study.py cost "$out/t-standard" "$out"/t-h*[0-9] --H-target $1 --M-target $2
+    echo "== sinh grids"
+    $py plots/horizon_study.py cost "$out/s-standard" "$out"/s-h* --H-target $1 --M-target $2
+  done
+  ;;
 *)
-  echo "usage: $0 reproduce|mechanism|threshold" >&2
+  echo "usage: $0 reproduce|mechanism|threshold|cost" >&2
   exit 2
   ;;
 esac

@@ -60,7 +60,8 @@ const std::vector<ParamSpec>& param_specs() {
       {"rah-width", &Params::rah_width, "Horizon",
        "width w of f(r) (M), for every --rah-profile but auto"},
       {"rah-profile", &Params::rah_profile, "Horizon",
-       "f(r), q = r/w: auto (rational with w = 3 M to stretch, gauss with w = 1 M to shrink; "
+       "f(r), q = r/w: auto (rational with w = 3 M to stretch, rah0 >= 0.8304 M; gauss with "
+       "w = 1 M to shrink; "
        "--rah-width is then not used) | rational q/(1+q^2) (published) | rational3 "
        "q^3/(1+q^4) | gauss (q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},
       {"rah-normal", &Params::rah_normal, "Horizon",

@@ -223,6 +223,7 @@ RhsParams rhs_params(const Params& p) {
                            : p.rah_normal == "conformal" ? ShiftNormal::conformal
                                                          : ShiftNormal::unit;
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;
+  resolve_automatic_profile(r.horizon_shift, p.M);
   if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
     r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
   auto stencil = [](const std::string& s) {

@@ -29,21 +29,7 @@ Schedule make_schedule(const Params& p, const Grid& grid) {
 Simulation::Simulation(const Params& p)
     : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
       diagnostic_rhs_(*grid_, rhs_params(p)), u_(initial_data(*grid_, initial_data_params(p))),
-      schedule_(make_schedule(p, *grid_)), ah_every_(ah_every_steps(p)) {
-  // --rah-profile auto: stretch or shrink, decided once by the horizon of the initial data
-  RhsParams rp = rhs_.params();
-  auto& hs = rp.horizon_shift;
-  if (hs.active() && hs.profile == ShiftProfile::automatic) {
-    std::optional<double> h_AH0;
-    if (hs.prescribed())
-      h_AH0 = hs.prescribed_h_AH(0.0);
-    else if (const auto found = horizons().horizon())
-      h_AH0 = found->r;
-    resolve_automatic_profile(hs, h_AH0.value_or(0.0), p.M); // no horizon yet: stretch
-    rhs_ = GbssnRhs(*grid_, rp);
-    diagnostic_rhs_ = GbssnRhs(*grid_, rp);
-  }
-}
+      schedule_(make_schedule(p, *grid_)), ah_every_(ah_every_steps(p)) {}
 
 bool Simulation::in_search_window(double t) const {
   return t >= params_.ah_tmin && (params_.ah_tmax < 0.0 || t <= params_.ah_tmax);

@@ -111,15 +111,20 @@ struct HorizonShiftParams {
   bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
 };
 
+/// Coordinate radius of the apparent horizon of the stationary 1+log trumpet, 0.8304 M: where
+/// 1+log slicing with the Gamma-driver puts the horizon of Schwarzschild in the end (all three
+/// initial data sets approach it; the maximal trumpet slowly).
+inline constexpr double standard_horizon_radius = 0.8304;
+
 /// The profile and width that ShiftProfile::automatic stands for, chosen from the experiments
-/// of docs/horizon-shift-study.md: to stretch (h >= h_AH, the horizon radius at the start), the
+/// of docs/horizon-shift-study.md: to stretch (h >= 0.8304 M, the standard horizon), the
 /// published rational profile with w = 3 M (wide: H outside stays at the standard gauge's); to
-/// shrink (h < h_AH), the Gaussian with w = 1 M (concentrated at the horizon; wider profiles
+/// shrink (h < 0.8304 M), the Gaussian with w = 1 M (concentrated at the horizon; wider profiles
 /// lose a clean convergence order there). Other profiles are left as they are.
-inline void resolve_automatic_profile(HorizonShiftParams& params, double h_AH, double M) {
+inline void resolve_automatic_profile(HorizonShiftParams& params, double M) {
   if (params.profile != ShiftProfile::automatic)
     return;
-  const bool stretch = params.h >= h_AH;
+  const bool stretch = params.h >= standard_horizon_radius * M;
   params.profile = stretch ? ShiftProfile::rational : ShiftProfile::gauss;
   params.width = (stretch ? 3.0 : 1.0) * M;
 }

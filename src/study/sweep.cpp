@@ -83,9 +83,11 @@ std::string last_line(const fs::path& file) {
   return last;
 }
 
-/// Final r_ah, max |M_ah - M_ah(first)|, max H_L2_ext of a member's timeseries.dat.
+/// Final r_ah, max |M_ah - M_ah(first)|, max |M_ah - M|, max H_L2_ext and H_L2_R, and the last
+/// time of a member's timeseries.dat.
 struct MemberResult {
-  double r_ah = NAN, M_ah_drift = NAN, H_max = NAN, H_final = NAN;
+  double r_ah = NAN, M_ah_drift = NAN, M_ah_err = NAN, H_max = NAN, H_final = NAN, H_R_max = NAN,
+         t_end = NAN;
 };
 
 MemberResult read_result(const fs::path& series) {
@@ -116,8 +118,13 @@ MemberResult read_result(const fs::path& series) {
     const double drift = std::abs(row["M_ah"] - M0);
     if (std::isfinite(drift))
       res.M_ah_drift = std::isnan(res.M_ah_drift) ? drift : std::max(res.M_ah_drift, drift);
+    const double err = std::abs(row["M_ah_err"]);
+    if (std::isfinite(err))
+      res.M_ah_err = std::isnan(res.M_ah_err) ? err : std::max(res.M_ah_err, err);
     res.H_max = std::isnan(res.H_max) ? row["H_L2_ext"] : std::max(res.H_max, row["H_L2_ext"]);
+    res.H_R_max = std::isnan(res.H_R_max) ? row["H_L2_R"] : std::max(res.H_R_max, row["H_L2_R"]);
     res.H_final = row["H_L2_ext"];
+    res.t_end = row["t"];
   }
   return res;
 }
@@ -267,7 +274,8 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       resolution_axis = axis.flags;
   }
   const bool with_resolutions = !resolution_axis.empty();
-  for (const char* c : {"status", "r_ah_final", "M_ah_drift", "H_L2_ext_max", "wall_s"})
+  for (const char* c : {"status", "t_end", "r_ah_final", "M_ah_drift", "M_ah_err_max",
+                        "H_L2_ext_max", "H_L2_R_max", "wall_s"})
     cols.emplace_back(c);
   if (with_resolutions)
     cols.emplace_back("order_H_final");
@@ -311,7 +319,8 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
   DataFile summary(dir / "summary.dat",
                    fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
-                               "M_ah_drift = max |M_ah - M_ah(first)|; H_L2_ext_max over the run; "
+                               "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
+                               "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
                                "order_H_final fitted over N for members that differ only in N\n",
                                members.size(), fmt::join(options.sweeps, " ")),
                    cols);
@@ -319,8 +328,10 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     std::string line;
     for (const auto& [flag, value] : members[k].values)
       line += value + " ";
-    line += fmt::format("{} {:.10e} {:.6e} {:.6e} {:.3f}", statuses[k], results[k].r_ah,
-                        results[k].M_ah_drift, results[k].H_max, walls[k]);
+    const MemberResult& res = results[k];
+    line += fmt::format("{} {:.6g} {:.10e} {:.6e} {:.6e} {:.6e} {:.6e} {:.3f}", statuses[k],
+                        res.t_end, res.r_ah, res.M_ah_drift, res.M_ah_err, res.H_max, res.H_R_max,
+                        walls[k]);
     if (with_resolutions)
       line += fmt::format(" {:.4f}", orders[k]);
     line += " " + reasons[k] + "\n";

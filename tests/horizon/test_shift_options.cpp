@@ -107,26 +107,31 @@ TEST_CASE("shift normals: their values, and the unit normal's kink at a trumpet'
 TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 1 M to shrink") {
   HorizonShiftParams stretch;
   stretch.A = 0.5;
-  stretch.h = 0.89;
+  stretch.h = 1.7; // M = 2: the standard horizon is at 1.6608
   stretch.profile = ShiftProfile::automatic;
   HorizonShiftParams shrink = stretch;
-  shrink.h = 0.6;
-  resolve_automatic_profile(stretch, 0.83, 2.0);
-  resolve_automatic_profile(shrink, 0.83, 2.0);
+  shrink.h = 1.6;
+  resolve_automatic_profile(stretch, 2.0);
+  resolve_automatic_profile(shrink, 2.0);
   CHECK(stretch.profile == ShiftProfile::rational);
   CHECK(stretch.width == 6.0);
   CHECK(shrink.profile == ShiftProfile::gauss);
   CHECK(shrink.width == 2.0);
-  // the run resolves it from the initial horizon (0.8304 M on the 1+log trumpet)
+  // an explicit profile keeps its width
+  HorizonShiftParams fixed = stretch;
+  fixed.profile = ShiftProfile::gauss3;
+  fixed.width = 0.7;
+  resolve_automatic_profile(fixed, 2.0);
+  CHECK(fixed.profile == ShiftProfile::gauss3);
+  CHECK(fixed.width == 0.7);
+  // the run's parameters resolve it
   Params p = trumpet(200, 20.0, 0.0);
   p.rahA = 0.5;
   p.rah0 = 0.6;
-  Simulation sim = make(p);
-  CHECK(sim.rhs().params().horizon_shift.profile == ShiftProfile::gauss);
+  CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
   p.rah0 = 0.89;
-  Simulation sim2 = make(p);
-  CHECK(sim2.rhs().params().horizon_shift.profile == ShiftProfile::rational);
-  CHECK(sim2.rhs().params().horizon_shift.width == 3.0);
+  CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::rational);
+  CHECK(rhs_params(p).horizon_shift.width == 3.0);
 }
 
 TEST_CASE("the advection stencil options change exactly the term they name") {
@@ -250,6 +255,10 @@ TEST_CASE("areal-radius norms: weights |dR|, select by R, and the interior windo
   CHECK(l2_norm_areal(f2, R2, 3.0, 10.0)
         == doctest::Approx(l2_norm_areal(f3, R3, 3.0, 10.0)).epsilon(0.02));
   CHECK(l2_norm_areal(f, R, 100.0, 200.0) == 0.0); // empty window
+  // a wormhole: R falls to a throat and rises again; only the outer sheet counts
+  std::vector<double> Rw{9.0, 6.0, 4.0, 3.0, 2.0, 3.0, 4.0, 6.0, 9.0};
+  std::vector<double> fw{50.0, 50.0, 50.0, 50.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  CHECK(l2_norm_areal(fw, Rw, 2.5, 12.0) == doctest::Approx(1.0));
 
   // interior: from the innermost point out to R = Rint, dr-weighted
   Simulation sim = make(trumpet(200, 20.0, 0.0));

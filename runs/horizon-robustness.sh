@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The default horizon-adjusting shift (rahA = 0.5) on every data set, for targets h from 0.5 M
+# to 2 M, and the standard gauge (rahA = 0), to t = 1000 M: on uniform grids of spacing M/8
+# and M/16 (rmax = 200 M) and on the default sinh grid (N = 400, dr-inner = 0.02 M,
+# rmax = 100 M). Prints each sweep's summary.dat: status, t_end, r_ah_final, |r_ah/h - 1|,
+# M_ah_err_max = max |M_AH - M|, H_L2_R_max (outer sheet, areal radius 2.5 M <= R <= 12 M).
+# About 20 minutes on 2 cores.
+#
+#   bash runs/horizon-robustness.sh [tmax]      (default 1000)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+tmax=${1:-1000}
+out=out/horizon-robustness
+mkdir -p "$out"
+axes=(--sweep id=1log-trumpet,maximal-trumpet,wormhole
+  --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6,0.5:0.89,0.5:1.2,0.5:1.5,0.5:2.0)
+run=(--tmax "$tmax" --dt-series 1 --dt-profiles "$tmax")
+build/gbssn1d sweep -j "$(nproc)" --out "$out/uniform" "${axes[@]}" "${run[@]}" \
+  --sweep N=1600,3200 --grid uniform --rmax 200 || true
+build/gbssn1d sweep -j "$(nproc)" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
+  --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
+for s in uniform default-grid; do
+  echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
+  # columns by name from the header line (the last '#' line)
+  awk '/^#/ { n = split(substr($0, 3), names, " "); for (i = 1; i <= n; i++) c[names[i]] = i; next }
+       !printed++ { print "id rahA rah0 N status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
+       { h = $c["rah0"]; r = $c["r_ah_final"]
+         printf "%s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h,
+                ("N" in c ? $c["N"] : 400), $c["status"], $c["t_end"], r,
+                $c["rahA"] == 0 ? 0 : (r > h ? r / h - 1 : 1 - r / h),
+                $c["M_ah_err_max"], $c["H_L2_R_max"], $c["wall_s"] }' \
+    "$out/$s/summary.dat" | column -t
+done
