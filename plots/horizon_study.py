@@ -228,12 +228,15 @@ def figure(args):
         colors = plt.cm.viridis(np.linspace(0.85, 0.0, len(Ns)))
         for color, N in zip(colors, Ns):
             t, v = fam[N]
-            ax.semilogy(t, v, color=color, label=f'N = {N}')
+            spacing = f' (M/{N / args.rmax:g})' if args.rmax > 0 else ''
+            ax.semilogy(t, v, color=color, label=f'N = {N}{spacing}')
         ax.set_title(os.path.basename(os.path.normpath(d)), fontsize=9)
         ax.set_xlabel('t (M)')
         ax.legend(fontsize=7)
+    labels = {'H_L2_R': 'L2 norm of H, 2.5 M <= R <= 12 M', 'H_L2_ext': 'L2 norm of H (coordinate window)',
+              'H_L2_int': 'L2 norm of H near the puncture'}
     for ax in axes[:, 0]:
-        ax.set_ylabel(args.y)
+        ax.set_ylabel(labels.get(args.y, args.y), fontsize=9)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
     fig.tight_layout()
@@ -251,6 +254,8 @@ def main():
     f.add_argument('families', nargs='+')
     f.add_argument('--cols', type=int, default=3)
     f.add_argument('-o', '--output', required=True)
+    f.add_argument('--rmax', type=float, default=200.0,
+                   help='outer radius of the uniform grids, for the spacing in the legend (0: none)')
     th = sub.add_parser('threshold')
     th.add_argument('families', nargs='+')
     th.add_argument('--min-order', type=float, default=3.5)

@@ -102,9 +102,16 @@ threshold)
     family "t-h$h-published" $all --id $id --rahA 0.5 --rah0 $h "${published[@]}"
     family "t-h$h" $all --id $id --rahA 0.5 --rah0 $h
   done
+  # maximal-trumpet data: the default method, M/8 ... M/24
+  family "tm-standard" 1600,2400,3200,4800 --id maximal-trumpet
+  for h in 0.5 0.6 0.89 1.2 2.0; do
+    family "tm-h$h" 1600,2400,3200,4800 --id maximal-trumpet --rahA 0.5 --rah0 $h
+  done
   echo "== 1+log trumpet, M/8 ... M/32 (N = $all)"
   table "$out/t-standard" "$out"/t-*/ | tee "$out/threshold-table.txt"
-  $py plots/horizon_study.py threshold "$out"/t-*/ --min-order 3.5
+  echo "== maximal trumpet, M/8 ... M/24"
+  table "$out/tm-standard" "$out"/tm-*/ | tee -a "$out/threshold-table.txt"
+  $py plots/horizon_study.py threshold "$out"/t-*/ "$out"/tm-*/ --min-order 3.5
   ;;
 cost)
   # uniform: the threshold families; sinh: one map at every N (dr-inner scales as 1/N), from

@@ -2,7 +2,7 @@
 # The default horizon-adjusting shift (rahA = 0.5) on every data set, for targets h from 0.5 M
 # to 2 M, and the standard gauge (rahA = 0), to t = 1000 M: on uniform grids of spacing M/8
 # and M/16 (rmax = 200 M) and on the default sinh grid (N = 400, dr-inner = 0.02 M,
-# rmax = 100 M). Prints each sweep's summary.dat: status, t_end, r_ah_final, |r_ah/h - 1|,
+# rmax = 100 M; there with and without --rah-ramp 20). Prints each sweep's summary.dat: status, t_end, r_ah_final, |r_ah/h - 1|,
 # M_ah_err_max = max |M_AH - M|, H_L2_R_max (outer sheet, areal radius 2.5 M <= R <= 12 M).
 # About 20 minutes on 2 cores.
 #
@@ -19,15 +19,16 @@ run=(--tmax "$tmax" --dt-series 1 --dt-profiles "$tmax")
 build/gbssn1d sweep -j "$(nproc)" --out "$out/uniform" "${axes[@]}" "${run[@]}" \
   --sweep N=1600,3200 --grid uniform --rmax 200 || true
 build/gbssn1d sweep -j "$(nproc)" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
-  --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
+  --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
 for s in uniform default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
   # columns by name from the header line (the last '#' line)
   awk '/^#/ { n = split(substr($0, 3), names, " "); for (i = 1; i <= n; i++) c[names[i]] = i; next }
-       !printed++ { print "id rahA rah0 N status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
+       !printed++ { print "id rahA rah0 N ramp status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
        { h = $c["rah0"]; r = $c["r_ah_final"]
-         printf "%s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h,
-                ("N" in c ? $c["N"] : 400), $c["status"], $c["t_end"], r,
+         printf "%s %s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h,
+                ("N" in c ? $c["N"] : 400), ("rah-ramp" in c ? $c["rah-ramp"] : 0), $c["status"],
+                $c["t_end"], r,
                 $c["rahA"] == 0 ? 0 : (r > h ? r / h - 1 : 1 - r / h),
                 $c["M_ah_err_max"], $c["H_L2_R_max"], $c["wall_s"] }' \
     "$out/$s/summary.dat" | column -t

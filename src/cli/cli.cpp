@@ -59,6 +59,8 @@ const std::vector<ParamSpec>& param_specs() {
       {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon (M)"},
       {"rah-width", &Params::rah_width, "Horizon",
        "width w of f(r) (M), for every --rah-profile but auto"},
+      {"rah-ramp", &Params::rah_ramp, "Horizon",
+       "T (M): the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
       {"rah-profile", &Params::rah_profile, "Horizon",
        "f(r), q = r/w: auto (rational with w = 3 M to stretch, rah0 >= 0.8304 M; gauss with "
        "w = 1 M to shrink; "

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -135,8 +135,10 @@ void validate(const Params& p) {
                  {"auto", "rational", "rational3", "gauss", "gauss3"});
   require_one_of("--rah-normal", p.rah_normal, {"unit", "smooth", "conformal"});
   require_positive("--rah-chi-smooth", p.rah_chi_smooth);
-  require_one_of("--driver-advection", p.driver_advection,
-                 {"upwind-gd", "upwind-full", "centred"});
+  require_finite("--rah-ramp", p.rah_ramp);
+  if (p.rah_ramp < 0.0)
+    throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
+  require_one_of("--driver-advection", p.driver_advection, {"upwind-gd", "upwind-full", "centred"});
   require_one_of("--delta-advection", p.delta_advection, {"upwind-gd", "upwind-full", "centred"});
   require_finite("--ah-tmin", p.ah_tmin);
   require_finite("--ah-tmax", p.ah_tmax);
@@ -214,11 +216,12 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.A = p.rahA;
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
+  r.horizon_shift.ramp = p.rah_ramp;
   r.horizon_shift.profile = p.rah_profile == "auto"        ? ShiftProfile::automatic
                             : p.rah_profile == "rational3" ? ShiftProfile::rational3
-                            : p.rah_profile == "gauss"   ? ShiftProfile::gauss
-                            : p.rah_profile == "gauss3"  ? ShiftProfile::gauss3
-                                                         : ShiftProfile::rational;
+                            : p.rah_profile == "gauss"     ? ShiftProfile::gauss
+                            : p.rah_profile == "gauss3"    ? ShiftProfile::gauss3
+                                                           : ShiftProfile::rational;
   r.horizon_shift.normal = p.rah_normal == "smooth"      ? ShiftNormal::smooth
                            : p.rah_normal == "conformal" ? ShiftNormal::conformal
                                                          : ShiftNormal::unit;
@@ -291,7 +294,8 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
     if (row.size() <= std::max(col_t, col_r))
       throw ParamError(flag, path, fmt::format("has a short row at t = {}", t.size()));
     if (!std::isfinite(row[col_r]))
-      throw ParamError(flag, path, fmt::format("has no horizon (r_ah = NaN) at t = {}", row[col_t]));
+      throw ParamError(flag, path,
+                       fmt::format("has no horizon (r_ah = NaN) at t = {}", row[col_t]));
     t.push_back(row[col_t]);
     r_ah.push_back(row[col_r]);
   }
@@ -303,9 +307,9 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
       throw ParamError(flag, path,
                        fmt::format("its times are not equally spaced (row {}: t = {})", k, t[k]));
   if (t.front() > 0.0 || t.back() < t_end - 1e-9 * (1.0 + t_end))
-    throw ParamError(flag, path,
-                     fmt::format("covers t = {} ... {}, not the run's 0 ... {}", t.front(),
-                                 t.back(), t_end));
+    throw ParamError(
+        flag, path,
+        fmt::format("covers t = {} ... {}, not the run's 0 ... {}", t.front(), t.back(), t_end));
   // end slopes from 4th-order one-sided differences (Boost's default estimate is cruder)
   const std::size_t m = r_ah.size() - 1;
   const double slope_left =

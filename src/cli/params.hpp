@@ -39,19 +39,20 @@ struct Params {
   double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
   double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
   // apparent horizon and the horizon-adjusting shift (Sec. 6, Sec. 14)
-  double rahA = 0.0;                 ///< strength A of beta_H (0: no horizon shift)
-  double rah0 = 0.89;                ///< desired coordinate radius h of the horizon (M)
-  double rah_width = 1.0;            ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
-  std::string rah_profile = "auto";    ///< auto | rational | rational3 | gauss | gauss3
-  std::string rah_normal = "conformal"; ///< conformal | unit | smooth
-  double rah_chi_smooth = 0.05;         ///< chi_s of the smooth normal sqrt((chi + chi_s)/a)
-  std::string rah_hAH_file;             ///< open loop: h_AH(t) from columns t, r_ah of a file
-  std::string driver_advection = "upwind-gd";  ///< beta_GD d_r Delta^r in B's driver
+  double rahA = 0.0;                          ///< strength A of beta_H (0: no horizon shift)
+  double rah0 = 0.89;                         ///< desired coordinate radius h of the horizon (M)
+  double rah_width = 1.0;                     ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
+  double rah_ramp = 0.0;                      ///< T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
+  std::string rah_profile = "auto";           ///< auto | rational | rational3 | gauss | gauss3
+  std::string rah_normal = "conformal";       ///< conformal | unit | smooth
+  double rah_chi_smooth = 0.05;               ///< chi_s of the smooth normal sqrt((chi + chi_s)/a)
+  std::string rah_hAH_file;                   ///< open loop: h_AH(t) from columns t, r_ah of a file
+  std::string driver_advection = "upwind-gd"; ///< beta_GD d_r Delta^r in B's driver
   std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
-  std::string ah_every = "substage"; ///< substage | step | n (every n steps)
-  double ah_tmin = 0.0;              ///< searches are made for ah-tmin <= t ...
-  double ah_tmax = -1.0;             ///< ... <= ah-tmax; < 0: until the end
-  double ah_tol = 1e-12;             ///< root-finder tolerance in r (M)
+  std::string ah_every = "substage";           ///< substage | step | n (every n steps)
+  double ah_tmin = 0.0;                        ///< searches are made for ah-tmin <= t ...
+  double ah_tmax = -1.0;                       ///< ... <= ah-tmax; < 0: until the end
+  double ah_tol = 1e-12;                       ///< root-finder tolerance in r (M)
   /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
   std::string rah_variant = "consistent";
   // output

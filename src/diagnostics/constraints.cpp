@@ -41,13 +41,13 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
   return width > 0.0 ? std::sqrt(sum / width) : 0.0;
 }
 
-double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal,
-                     double Rmin, double Rmax) {
+double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
+                     double Rmax) {
   const std::size_t n = values.size();
   // the outer sheet: outside the smallest areal radius (a wormhole's throat; the innermost
   // point of a trumpet), so that the other sheet's points with the same R do not count
-  const std::size_t throat = static_cast<std::size_t>(
-      std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());
+  const std::size_t throat =
+      static_cast<std::size_t>(std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());
   double sum = 0.0, width = 0.0;
   for (std::size_t k = throat; k < n; ++k) {
     if (!(R_areal[k] >= Rmin && R_areal[k] <= Rmax))

@@ -26,8 +26,8 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
 /// |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the same place in
 /// every gauge, so norms of runs with different shifts compare. Returns 0 when no point lies in
 /// the window.
-double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal,
-                     double Rmin, double Rmax);
+double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
+                     double Rmax);
 
 /// L2 norm near the puncture: over the points from the innermost one outwards while the areal
 /// radius stays <= Rmax (inside the horizon when Rmax < 2M), weighted by the cell widths dr

@@ -67,7 +67,7 @@ std::optional<double> Simulation::horizon_radius() {
 
 std::vector<double> Simulation::horizon_shift() {
   std::vector<double> beta_H;
-  horizon_shift_profile(u_, *grid_, rhs_.params().horizon_shift, horizon_radius(), beta_H);
+  horizon_shift_profile(u_, *grid_, rhs_.params().horizon_shift, horizon_radius(), beta_H, t_);
   return beta_H;
 }
 

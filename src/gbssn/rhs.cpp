@@ -123,17 +123,17 @@ PointData point_data(const State& u, const Grid& grid, std::size_t i) {
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {}
 
 void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
-                           std::optional<double> h_AH, std::vector<double>& beta_H) {
+                           std::optional<double> h_AH, std::vector<double>& beta_H, double t) {
   beta_H.assign(grid.n_total(), 0.0);
   if (!h_AH || params.A == 0.0)
     return;
   const auto chi = field(u, grid, Var::chi);
   const auto a = field(u, grid, Var::a);
-  const double amplitude = params.A * (*h_AH - params.h);
+  const double amplitude = params.strength(t) * (*h_AH - params.h);
   for (std::size_t i = 0; i < grid.n_total(); ++i) {
-    const double f = shift_profile(params.profile, grid.r()[i] / params.width); // odd
-    const double s_r = shift_normal(params.normal, chi[i], a[i], params.chi_smooth);               // even
-    beta_H[i] = f * amplitude * s_r;                                            // (H3)
+    const double f = shift_profile(params.profile, grid.r()[i] / params.width);      // odd
+    const double s_r = shift_normal(params.normal, chi[i], a[i], params.chi_smooth); // even
+    beta_H[i] = f * amplitude * s_r;                                                 // (H3)
   }
 }
 
@@ -157,7 +157,7 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
         throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
       }
     }
-    horizon_shift_profile(u, *grid_, hs, h_AH_, beta_H_);
+    horizon_shift_profile(u, *grid_, hs, h_AH_, beta_H_, t);
     const auto beta_GD = field(u, *grid_, Var::beta);
     beta_full_.resize(grid_->n_total());
     for (std::size_t i = 0; i < beta_full_.size(); ++i)

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -85,6 +86,7 @@ struct HorizonShiftParams {
   double A = 0.0;     ///< strength; 0 switches the horizon shift off
   double h = 0.89;    ///< desired coordinate radius of the horizon
   double width = 1.0; ///< w
+  double ramp = 0.0;  ///< T: the strength grows as A (1 - exp(-(t/T)^2)) (0: A from t = 0)
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
   double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth
@@ -108,6 +110,10 @@ struct HorizonShiftParams {
   long midstep_every = 1; ///< n of midstep_update
   HorizonFinderParams finder;
   bool active() const { return A != 0.0; }
+  /// The strength at time t.
+  double strength(double t) const {
+    return ramp > 0.0 ? A * (1.0 - std::exp(-(t / ramp) * (t / ramp))) : A;
+  }
   bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
 };
 
@@ -146,7 +152,8 @@ struct RhsParams {
 /// f(r) A (h_AH - h) s^r on every point (ghosts included; odd in r like beta), or zero
 /// everywhere without a horizon radius.
 void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
-                           std::optional<double> h_AH, std::vector<double>& beta_H);
+                           std::optional<double> h_AH, std::vector<double>& beta_H,
+                           double t = std::numeric_limits<double>::infinity());
 
 /// Fields, derivatives and advection terms at grid point i (needs i - 3 ... i + 3).
 PointData point_data(const State& u, const Grid& grid, std::size_t i);

@@ -56,18 +56,18 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
       break;
     const double f_lo = theta[lo], f_hi = theta[k];
     if (!std::isfinite(f_lo) || !std::isfinite(f_hi))
-      throw HorizonFinderError(fmt::format(
-          "the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
-          std::isfinite(f_lo) ? f_hi : f_lo,
-          grid.r()[grid.first_interior() + (std::isfinite(f_lo) ? k : lo)]));
+      throw HorizonFinderError(
+          fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
+                      std::isfinite(f_lo) ? f_hi : f_lo,
+                      grid.r()[grid.first_interior() + (std::isfinite(f_lo) ? k : lo)]));
     if ((f_lo < 0.0) == (f_hi < 0.0) && f_lo != 0.0)
       continue;
     const std::size_t k0 = std::max(lagrange6_start(lo, n), fill_lo);
     for (std::size_t j = k0; j < k0 + stencil; ++j)
       if (!std::isfinite(theta[j]))
-        throw HorizonFinderError(fmt::format(
-            "the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}", theta[j],
-            grid.r()[grid.first_interior() + j]));
+        throw HorizonFinderError(
+            fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
+                        theta[j], grid.r()[grid.first_interior() + j]));
     auto theta_of_x = [&](double xi) { return lagrange6(x, theta, k0, xi); };
     double x_root;
     if (f_lo == 0.0) {
@@ -82,15 +82,14 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
             theta_of_x, x[lo], x[k], theta_of_x(x[lo]), theta_of_x(x[k]), done, iterations);
         x_root = 0.5 * (a + b);
       } catch (const std::exception& e) {
-        throw HorizonFinderError(
-            fmt::format("the horizon finder failed between r = {:.6g} and {:.6g}: {}",
-                        grid.r()[grid.first_interior() + lo], grid.r()[grid.first_interior() + k],
-                        e.what()));
+        throw HorizonFinderError(fmt::format(
+            "the horizon finder failed between r = {:.6g} and {:.6g}: {}",
+            grid.r()[grid.first_interior() + lo], grid.r()[grid.first_interior() + k], e.what()));
       }
       if (!std::isfinite(x_root))
-        throw HorizonFinderError(
-            fmt::format("the horizon finder returned a non-finite root between r = {:.6g} and {:.6g}",
-                        grid.r()[grid.first_interior() + lo], grid.r()[grid.first_interior() + k]));
+        throw HorizonFinderError(fmt::format(
+            "the horizon finder returned a non-finite root between r = {:.6g} and {:.6g}",
+            grid.r()[grid.first_interior() + lo], grid.r()[grid.first_interior() + k]));
     }
     MarginalSurface s;
     s.r = grid.map().r(x_root);

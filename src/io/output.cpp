@@ -11,9 +11,9 @@
 namespace gbssn1d {
 
 std::vector<std::string> series_columns() {
-  return {"t",      "alpha_center", "H_L2",   "H_L2_ext", "M_L2",     "M_L2_ext",
-          "G_L2",   "G_L2_ext",     "dtalpha_max_ext", "r_ah", "M_ah", "H_L2_R",
-          "M_L2_R", "H_L2_int",     "M_ah_err"};
+  return {"t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
+          "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
+          "M_ah",     "H_L2_R",       "M_L2_R",   "H_L2_int",        "M_ah_err"};
 }
 
 std::vector<std::string> profile_columns() {

@@ -150,12 +150,10 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     const char *column, *order;
     double SeriesRow::*value;
   };
-  const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext},
-                        {"M_L2_ext", "M", &SeriesRow::M_L2_ext},
-                        {"G_L2_ext", "G", &SeriesRow::G_L2_ext},
-                        {"H_L2_R", "H_R", &SeriesRow::H_L2_R},
-                        {"M_L2_R", "M_R", &SeriesRow::M_L2_R},
-                        {"H_L2_int", "H_int", &SeriesRow::H_L2_int}};
+  const Norm norms[] = {
+      {"H_L2_ext", "H", &SeriesRow::H_L2_ext}, {"M_L2_ext", "M", &SeriesRow::M_L2_ext},
+      {"G_L2_ext", "G", &SeriesRow::G_L2_ext}, {"H_L2_R", "H_R", &SeriesRow::H_L2_R},
+      {"M_L2_R", "M_R", &SeriesRow::M_L2_R},   {"H_L2_int", "H_int", &SeriesRow::H_L2_int}};
   constexpr int n_norms = static_cast<int>(std::size(norms));
   for (const auto& c : norms)
     for (std::size_t k = 0; k < m; ++k)

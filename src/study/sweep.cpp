@@ -317,21 +317,22 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
           orders[k] = order_fitted(N, E);
     }
   }
-  DataFile summary(dir / "summary.dat",
-                   fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
-                               "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
-                               "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
-                               "order_H_final fitted over N for members that differ only in N\n",
-                               members.size(), fmt::join(options.sweeps, " ")),
-                   cols);
+  DataFile summary(
+      dir / "summary.dat",
+      fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
+                  "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
+                  "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
+                  "order_H_final fitted over N for members that differ only in N\n",
+                  members.size(), fmt::join(options.sweeps, " ")),
+      cols);
   for (std::size_t k = 0; k < members.size(); ++k) {
     std::string line;
     for (const auto& [flag, value] : members[k].values)
       line += value + " ";
     const MemberResult& res = results[k];
-    line += fmt::format("{} {:.6g} {:.10e} {:.6e} {:.6e} {:.6e} {:.6e} {:.3f}", statuses[k],
-                        res.t_end, res.r_ah, res.M_ah_drift, res.M_ah_err, res.H_max, res.H_R_max,
-                        walls[k]);
+    line +=
+        fmt::format("{} {:.6g} {:.10e} {:.6e} {:.6e} {:.6e} {:.6e} {:.3f}", statuses[k], res.t_end,
+                    res.r_ah, res.M_ah_drift, res.M_ah_err, res.H_max, res.H_R_max, walls[k]);
     if (with_resolutions)
       line += fmt::format(" {:.4f}", orders[k]);
     line += " " + reasons[k] + "\n";

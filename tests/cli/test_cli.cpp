@@ -98,6 +98,18 @@ TEST_CASE("unknown choices and flags are refused") {
   check_refused("--no-such-flag 3", "--no-such-flag");
 }
 
+TEST_CASE("the horizon-shift study options refuse bad values by name") {
+  check_refused("--rah-profile bogus", "--rah-profile");
+  check_refused("--rah-normal tangent", "--rah-normal");
+  check_refused("--rah-chi-smooth 0", "--rah-chi-smooth");
+  check_refused("--rah-ramp -1", "--rah-ramp");
+  check_refused("--driver-advection sideways", "--driver-advection");
+  check_refused("--delta-advection sideways", "--delta-advection");
+  check_refused("--norm-Rmin 5 --norm-Rmax 4", "--norm-Rmax");
+  check_refused("--norm-Rint 0", "--norm-Rint");
+  check_refused("--rahA 0.5 --rah-hAH-file /no/such/horizon.dat", "--rah-hAH-file");
+}
+
 TEST_CASE("malformed or missing config files are refused") {
   const fs::path cfg = scratch("bad.toml");
   std::ofstream(cfg) << "N = 100\nbogus-key = 3\n";

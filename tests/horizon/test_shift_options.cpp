@@ -1,11 +1,11 @@
 // Options of the horizon-adjusting shift (profiles, normals, open loop, advection stencils),
 // the areal-radius norms, the finder's failures, and the coarse-resolution convergence of the
 // default method (docs/horizon-shift-study.md).
+#include "../test_support.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
 #include "fd/stencils.hpp"
 #include "horizon/apparent_horizon.hpp"
-#include "../test_support.hpp"
 
 #include <fmt/format.h>
 
@@ -102,6 +102,27 @@ TEST_CASE("shift normals: their values, and the unit normal's kink at a trumpet'
   for (const auto* v : {&unit, &conformal})
     for (std::size_t i = 0; i < Grid::n_ghost; ++i)
       CHECK((*v)[i] == doctest::Approx(-(*v)[Grid::mirror(i)]).epsilon(1e-14));
+}
+
+TEST_CASE("--rah-ramp: the strength grows as A (1 - exp(-(t/T)^2))") {
+  HorizonShiftParams hs;
+  hs.A = 0.5;
+  hs.h = 0.89;
+  CHECK(hs.strength(0.0) == 0.5); // no ramp
+  hs.ramp = 20.0;
+  CHECK(hs.strength(0.0) == 0.0);
+  CHECK(hs.strength(20.0) == doctest::Approx(0.5 * (1.0 - std::exp(-1.0))).epsilon(1e-15));
+  CHECK(hs.strength(200.0) == doctest::Approx(0.5).epsilon(1e-15));
+  // beta_H scales with it
+  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  std::vector<double> full, ramped;
+  hs.ramp = 0.0;
+  horizon_shift_profile(sim.state(), sim.grid(), hs, 0.83, full, 10.0);
+  hs.ramp = 20.0;
+  horizon_shift_profile(sim.state(), sim.grid(), hs, 0.83, ramped, 10.0);
+  const std::size_t i = sim.grid().first_interior() + 30;
+  REQUIRE(full[i] != 0.0);
+  CHECK(ramped[i] / full[i] == doctest::Approx(1.0 - std::exp(-0.25)).epsilon(1e-14));
 }
 
 TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 1 M to shrink") {
