@@ -127,7 +127,7 @@ cost)
     echo "== uniform grids"
     $py plots/horizon_study.py cost "$out/t-standard" "$out"/t-h*[0-9] --H-target $1 --M-target $2
     echo "== sinh grids"
-    $py plots/horizon_study.py cost "$out/s-standard" "$out"/s-h* --H-target $1 --M-target $2
+    $py plots/horizon_study.py cost "$out/s-standard" "$out"/s-h*[0-9] --H-target $1 --M-target $2
   done
   ;;
 *)

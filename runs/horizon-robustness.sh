@@ -22,14 +22,15 @@ build/gbssn1d sweep -j "$(nproc)" --out "$out/default-grid" "${axes[@]}" "${run[
   --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
 for s in uniform default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
-  # columns by name from the header line (the last '#' line)
-  awk '/^#/ { n = split(substr($0, 3), names, " "); for (i = 1; i <= n; i++) c[names[i]] = i; next }
+  # columns by name from the header line (the last '#' line); N is a column of the uniform
+  # sweep only, rah-ramp of the default-grid sweep only
+  awk '/^#/ { n = split(substr($0, 3), names, " "); split("", c)
+              for (i = 1; i <= n; i++) c[names[i]] = i; next }
        !printed++ { print "id rahA rah0 N ramp status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
        { h = $c["rah0"]; r = $c["r_ah_final"]
-         printf "%s %s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h,
-                ("N" in c ? $c["N"] : 400), ("rah-ramp" in c ? $c["rah-ramp"] : 0), $c["status"],
-                $c["t_end"], r,
-                $c["rahA"] == 0 ? 0 : (r > h ? r / h - 1 : 1 - r / h),
+         N = ("N" in c) ? $(c["N"]) : 400; ramp = ("rah-ramp" in c) ? $(c["rah-ramp"]) : 0
+         printf "%s %s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h, N, ramp,
+                $c["status"], $c["t_end"], r, $c["rahA"] == 0 ? 0 : (r > h ? r / h - 1 : 1 - r / h),
                 $c["M_ah_err_max"], $c["H_L2_R_max"], $c["wall_s"] }' \
     "$out/$s/summary.dat" | column -t
 done
