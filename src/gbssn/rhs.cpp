@@ -162,14 +162,32 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     beta_full_.resize(grid_->n_total());
     for (std::size_t i = 0; i < beta_full_.size(); ++i)
       beta_full_[i] = beta_GD[i] + beta_H_[i];
-    interior<true>(u, dudt);
+    using V = HorizonShiftParams::Variant;
+    switch (hs.variant) { // dispatched once per call, not per point
+    case V::consistent:
+    case V::midstep_update: // differs only in when h_AH is searched
+      interior<true, V::consistent>(u, dudt);
+      break;
+    case V::no_shift_derivatives:
+      interior<true, V::no_shift_derivatives>(u, dudt);
+      break;
+    case V::no_shift_second_derivatives:
+      interior<true, V::no_shift_second_derivatives>(u, dudt);
+      break;
+    case V::delta_rhs_from_gd:
+      interior<true, V::delta_rhs_from_gd>(u, dudt);
+      break;
+    case V::driver_full_shift:
+      interior<true, V::driver_full_shift>(u, dudt);
+      break;
+    }
   }
   outer_boundary(u, dudt);
   origin_ghosts(dudt);
   ++evaluations_;
 }
 
-template <bool with_horizon_shift>
+template <bool with_horizon_shift, HorizonShiftParams::Variant variant>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
@@ -196,7 +214,6 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   // Kreiss-Oliger: sigma / (64 h) times the 6th difference, h = local dr = r_x dx.
   const double ko_scale = params_.ko_sigma / 64.0 * inv_dx;
   const GaugeParams gauge = params_.gauge;
-  const auto variant = params_.horizon_shift.variant;
   const StencilWeights driver_w(params_.advection.driver), delta_w(params_.advection.delta);
   const std::size_t begin = g.first_interior(), end = g.end_interior();
 
@@ -222,16 +239,16 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
     Rhs rhs;
     if constexpr (with_horizon_shift) {
       using Variant = HorizonShiftParams::Variant;
-      if (variant == Variant::no_shift_derivatives) {
+      if constexpr (variant == Variant::no_shift_derivatives) {
         p.d_beta = gd.d_beta; // the full shift's value, but beta_GD's derivatives
         p.dd_beta = gd.dd_beta;
-      } else if (variant == Variant::no_shift_second_derivatives) {
+      } else if constexpr (variant == Variant::no_shift_second_derivatives) {
         p.dd_beta = gd.dd_beta;
-      } else if (variant == Variant::driver_full_shift) {
+      } else if constexpr (variant == Variant::driver_full_shift) {
         gd = full_shift(p);
       }
       rhs = gbssn_rhs(p, gauge, gd);
-      if (variant == Variant::delta_rhs_from_gd)
+      if constexpr (variant == Variant::delta_rhs_from_gd)
         rhs.Delta_r = rhs_Delta_r(p, metric_pieces(p), gd);
       const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
       rhs.beta = 0.75 * p.B + shift_advection * fd::advect(p.beta * d1_scale, f);

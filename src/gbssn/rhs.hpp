@@ -175,7 +175,10 @@ public:
   void set_horizon_radius(std::optional<double> h_AH) { h_AH_ = h_AH; }
 
 private:
-  template <bool with_horizon_shift>
+  /// The point loop; the horizon shift and its variant are template parameters, so that each
+  /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
+  template <bool with_horizon_shift,
+            HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const State& u, State& dudt) const;
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;
