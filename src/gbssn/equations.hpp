@@ -2,8 +2,8 @@
 // (Brown's covariant form, Lagrangian choice d_t det(gbar) = 0, flat spherical reference
 // metric), chi = e^{-4 phi} form, A_b = -A_a/2.
 //
-// Equation labels (A1), (E2), (C3), (G1) ... refer to ../shared/docs/gbssn1d-equations.md,
-// which is also where the verified symbolic reference (verify_gbssn1d_equations.py) lives.
+// Equation labels (A1), (E2), (C3), (G1) ... refer to docs/gbssn1d-equations.md; its verified
+// symbolic reference is docs/verify_gbssn1d_equations.py.
 // Everything here is a function of the fields and their radial derivatives at one point;
 // derivatives, upwinded advection and dissipation are computed by the caller (gbssn/rhs.cpp).
 #pragma once

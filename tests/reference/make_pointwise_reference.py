@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Reference values for the point-wise right-hand side, from the verified symbolic equations.
 
-Evaluates the functions of ../shared/tools/verify_gbssn1d_equations.py (phi form, A_b = -A_a/2,
+Evaluates the functions of docs/verify_gbssn1d_equations.py (phi form, A_b = -A_a/2,
 phi = -ln(chi)/4) on smooth, generic test profiles at sample radii, and writes the fields,
 their first and second radial derivatives and every right-hand side / constraint to
 tests/data/pointwise_reference.dat (30 significant digits). The C++ test feeds the same fields
@@ -17,7 +17,7 @@ import sympy as sp
 
 here = os.path.dirname(os.path.abspath(__file__))
 script = (sys.argv[1] if len(sys.argv) > 1 else
-          os.path.join(here, '..', '..', '..', 'shared', 'tools', 'verify_gbssn1d_equations.py'))
+          os.path.join(here, '..', '..', 'docs', 'verify_gbssn1d_equations.py'))
 source = open(script).read()
 # Only the 1D formulas (Section 1 of the script): stop before its checks and 3D machinery.
 cut = source.index('# 2. Independent 3D machinery')
