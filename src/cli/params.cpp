@@ -24,6 +24,10 @@ namespace {
 constexpr double cfl_max = 1.0;
 /// RK4 stability limit of the Gamma-driver damping term, eta dt < 2.78 (Schnetter 2010).
 constexpr double eta_dt_max = 2.78;
+/// Largest grid accepted: 9 fields on about 6 state-sized buffers (state, RK4 stages, output).
+constexpr int N_max = 10'000'000;
+/// Most time steps accepted in one run (a typo in --tmax or --dt-series, not a real run).
+constexpr double steps_max = 1e9;
 
 std::string num(double v) {
   return fmt::format("{}", v);
@@ -43,7 +47,7 @@ void require_positive(const std::string& flag, double v) {
 } // namespace
 
 void resolve_defaults(Params& p) {
-  if (p.eta < 0.0 && std::isfinite(p.eta) && p.M > 0.0)
+  if (p.eta == eta_default && p.M > 0.0) // only the default stands for 2/M; -3 is refused
     p.eta = 2.0 / p.M;
   if (p.norm_rmax < 0.0 && std::isfinite(p.norm_rmax) && p.rmax > 0.0)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
@@ -54,6 +58,10 @@ void validate(const Params& p) {
     throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
   if (p.N < 16)
     throw ParamError("--N", std::to_string(p.N), "must be at least 16 cells");
+  if (p.N > N_max)
+    throw ParamError("--N", std::to_string(p.N),
+                     fmt::format("needs about {:.0f} GB of memory; at most {} cells are accepted",
+                                 8.0 * 9 * 6 * p.N / 1e9, N_max));
   require_positive("--M", p.M);
   require_positive("--rmax", p.rmax);
   if (p.grid != "uniform" && p.grid != "sinh")
@@ -160,6 +168,19 @@ void validate(const Params& p) {
 
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = p.cfl * make_grid(p).min_spacing();
+  // The step count (the step is the CFL step, shortened to divide --dt-series).
+  const double steps_per_series = std::ceil(p.dt_series / dt - 1e-9);
+  const double n_steps = std::ceil(p.tmax / (p.dt_series / steps_per_series) - 1e-9);
+  if (n_steps > steps_max) {
+    if (p.dt_series < dt)
+      throw ParamError("--dt-series", num(p.dt_series),
+                       fmt::format("is below the time step {} and would take {:.3g} steps to "
+                                   "--tmax = {} (at most {:.0e})",
+                                   dt, n_steps, p.tmax, steps_max));
+    throw ParamError(
+        "--tmax", num(p.tmax),
+        fmt::format("would take {:.3g} steps of {} (at most {:.0e})", n_steps, dt, steps_max));
+  }
   if (p.eta * dt > eta_dt_max)
     throw ParamError("--cfl", num(p.cfl),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "

@@ -11,6 +11,9 @@
 
 namespace gbssn1d {
 
+/// The value of Params::eta that stands for its default, 2/M (resolve_defaults).
+inline constexpr double eta_default = -1.0;
+
 struct Params {
   // grid
   int N = 400;
@@ -22,7 +25,7 @@ struct Params {
   double M = 1.0;
   std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
   // gauge
-  double eta = -1.0; ///< Gamma-driver damping; < 0 means the default 2/M
+  double eta = eta_default; ///< Gamma-driver damping; eta_default stands for 2/M
   bool advective_shift = false;
   bool non_advective_lapse = false;
   // numerics

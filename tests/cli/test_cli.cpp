@@ -85,6 +85,10 @@ TEST_CASE("bad numbers are refused, naming the parameter and why") {
   check_refused("--ko-sigma -1", "--ko-sigma");
   check_refused("--tmax -1", "--tmax");
   check_refused("--N abc", "--N");
+  check_refused("--eta -3", "--eta");
+  check_refused("--N 1000000000", "--N");
+  check_refused("--tmax 10 --dt-series 1e-10", "--dt-series");
+  check_refused("--tmax 1e308", "--tmax");
 }
 
 TEST_CASE("unknown choices and flags are refused") {
