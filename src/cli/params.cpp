@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string_view>
 #include <unistd.h>
+#include <utility>
 
 namespace gbssn1d {
 
@@ -28,6 +29,35 @@ constexpr double eta_dt_max = 2.78;
 constexpr int N_max = 10'000'000;
 /// Most time steps accepted in one run (a typo in --tmax or --dt-series, not a real run).
 constexpr double steps_max = 1e9;
+
+/// The names a choice flag accepts and what each stands for: one table serves the validation,
+/// its message and the conversion, so they cannot drift apart.
+template <class E>
+using Choices = std::initializer_list<std::pair<std::string_view, E>>;
+
+const Choices<ShiftProfile> profile_choices{{"auto", ShiftProfile::automatic},
+                                            {"rational", ShiftProfile::rational},
+                                            {"rational3", ShiftProfile::rational3},
+                                            {"gauss", ShiftProfile::gauss},
+                                            {"gauss3", ShiftProfile::gauss3}};
+const Choices<ShiftNormal> normal_choices{{"conformal", ShiftNormal::conformal},
+                                          {"unit", ShiftNormal::unit},
+                                          {"smooth", ShiftNormal::smooth}};
+const Choices<AdvectionStencil> stencil_choices{{"upwind-gd", AdvectionStencil::upwind_gd},
+                                                {"upwind-full", AdvectionStencil::upwind_full},
+                                                {"centred", AdvectionStencil::centred}};
+
+/// The value `name` stands for; ParamError naming `flag` and the accepted names otherwise.
+template <class E>
+E choice(const std::string& flag, const std::string& name, const Choices<E>& choices) {
+  std::string list;
+  for (const auto& [n, value] : choices) {
+    if (n == name)
+      return value;
+    list += (list.empty() ? "" : ", ") + std::string(n);
+  }
+  throw ParamError(flag, name, "must be one of " + list);
+}
 
 std::string num(double v) {
   return fmt::format("{}", v);
@@ -130,24 +160,14 @@ void validate(const Params& p) {
       throw ParamError("--ah-every", p.ah_every,
                        "must be 'substage', 'step' or a positive number of steps");
   }
-  auto require_one_of = [](const std::string& flag, const std::string& value,
-                           std::initializer_list<std::string_view> choices) {
-    if (std::find(choices.begin(), choices.end(), value) != choices.end())
-      return;
-    std::string list;
-    for (auto c : choices)
-      list += (list.empty() ? "" : ", ") + std::string(c);
-    throw ParamError(flag, value, "must be one of " + list);
-  };
-  require_one_of("--rah-profile", p.rah_profile,
-                 {"auto", "rational", "rational3", "gauss", "gauss3"});
-  require_one_of("--rah-normal", p.rah_normal, {"unit", "smooth", "conformal"});
+  (void)choice("--rah-profile", p.rah_profile, profile_choices);
+  (void)choice("--rah-normal", p.rah_normal, normal_choices);
   require_positive("--rah-chi-smooth", p.rah_chi_smooth);
   require_finite("--rah-ramp", p.rah_ramp);
   if (p.rah_ramp < 0.0)
     throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
-  require_one_of("--driver-advection", p.driver_advection, {"upwind-gd", "upwind-full", "centred"});
-  require_one_of("--delta-advection", p.delta_advection, {"upwind-gd", "upwind-full", "centred"});
+  (void)choice("--driver-advection", p.driver_advection, stencil_choices);
+  (void)choice("--delta-advection", p.delta_advection, stencil_choices);
   require_finite("--ah-tmin", p.ah_tmin);
   require_finite("--ah-tmax", p.ah_tmax);
   if (p.ah_tmin < 0.0)
@@ -238,25 +258,14 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.ramp = p.rah_ramp;
-  r.horizon_shift.profile = p.rah_profile == "auto"        ? ShiftProfile::automatic
-                            : p.rah_profile == "rational3" ? ShiftProfile::rational3
-                            : p.rah_profile == "gauss"     ? ShiftProfile::gauss
-                            : p.rah_profile == "gauss3"    ? ShiftProfile::gauss3
-                                                           : ShiftProfile::rational;
-  r.horizon_shift.normal = p.rah_normal == "smooth"      ? ShiftNormal::smooth
-                           : p.rah_normal == "conformal" ? ShiftNormal::conformal
-                                                         : ShiftNormal::unit;
+  r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
+  r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;
   resolve_automatic_profile(r.horizon_shift, p.M);
   if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
     r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
-  auto stencil = [](const std::string& s) {
-    return s == "centred"       ? AdvectionStencil::centred
-           : s == "upwind-full" ? AdvectionStencil::upwind_full
-                                : AdvectionStencil::upwind_gd;
-  };
-  r.advection.driver = stencil(p.driver_advection);
-  r.advection.delta = stencil(p.delta_advection);
+  r.advection.driver = choice("--driver-advection", p.driver_advection, stencil_choices);
+  r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
   r.horizon_shift.finder.tolerance = p.ah_tol;
   r.horizon_shift.t_min = p.ah_tmin;
