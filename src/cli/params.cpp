@@ -1,16 +1,16 @@
 #include "cli/params.hpp"
 
+#include "io/table.hpp"
+
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
-#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <cmath>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string_view>
 #include <unistd.h>
 #include <utility>
@@ -291,43 +291,24 @@ double time_step(const Params& p, const Grid& grid) {
 
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {
   const std::string flag = "--rah-hAH-file";
-  std::ifstream in(path);
-  if (!in)
+  Table table;
+  try {
+    table = read_table(path);
+  } catch (const std::runtime_error&) {
     throw ParamError(flag, path, "cannot be read");
-  std::vector<std::string> columns;
+  }
+  const auto col_t = table.column("t"), col_r = table.column("r_ah");
+  if (!col_t || !col_r)
+    throw ParamError(flag, path, "needs the columns 't' and 'r_ah'");
   std::vector<double> t, r_ah;
-  std::size_t col_t = 0, col_r = 0;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty())
-      continue;
-    if (line[0] == '#') {
-      std::istringstream names(line.substr(1));
-      columns.clear();
-      for (std::string c; names >> c;)
-        columns.push_back(c);
-      continue;
-    }
-    if (t.empty()) { // the last '#' line before the data names the columns
-      const auto where = [&](const char* name) {
-        const auto it = std::find(columns.begin(), columns.end(), name);
-        if (it == columns.end())
-          throw ParamError(flag, path, fmt::format("has no column '{}'", name));
-        return static_cast<std::size_t>(it - columns.begin());
-      };
-      col_t = where("t");
-      col_r = where("r_ah");
-    }
-    std::istringstream values(line);
-    std::vector<double> row;
-    for (std::string v; values >> v;)
-      row.push_back(std::strtod(v.c_str(), nullptr));
-    if (row.size() <= std::max(col_t, col_r))
-      throw ParamError(flag, path, fmt::format("has a short row at t = {}", t.size()));
-    if (!std::isfinite(row[col_r]))
+  for (const auto& row : table.rows) {
+    if (row.size() <= std::max(*col_t, *col_r))
+      throw ParamError(flag, path, fmt::format("has a short data row (row {})", t.size() + 1));
+    if (!std::isfinite(row[*col_r]))
       throw ParamError(flag, path,
-                       fmt::format("has no horizon (r_ah = NaN) at t = {}", row[col_t]));
-    t.push_back(row[col_t]);
-    r_ah.push_back(row[col_r]);
+                       fmt::format("has no horizon (r_ah = NaN) at t = {}", row[*col_t]));
+    t.push_back(row[*col_t]);
+    r_ah.push_back(row[*col_r]);
   }
   if (t.size() < 5)
     throw ParamError(flag, path, "needs at least 5 rows");

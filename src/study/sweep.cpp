@@ -3,6 +3,7 @@
 #include "cli/cli.hpp"
 #include "cli/params.hpp"
 #include "io/output.hpp"
+#include "io/table.hpp"
 #include "study/orders.hpp"
 
 #include <fmt/format.h>
@@ -92,39 +93,31 @@ struct MemberResult {
 
 MemberResult read_result(const fs::path& series) {
   MemberResult res;
-  std::ifstream in(series);
-  std::vector<std::string> cols;
-  std::string line, last_comment;
+  Table table;
+  try {
+    table = read_table(series);
+  } catch (const std::runtime_error&) {
+    return res; // no output: every figure stays NaN
+  }
   double M0 = NAN;
-  while (std::getline(in, line)) {
-    if (line.empty())
-      continue;
-    if (line[0] == '#') {
-      last_comment = line;
-      continue;
-    }
-    if (cols.empty())
-      cols = split(last_comment.substr(2), ' ');
-    std::istringstream values(line);
-    std::map<std::string, double> row;
-    for (const auto& c : cols) {
-      std::string v;
-      values >> v;
-      row[c] = std::strtod(v.c_str(), nullptr);
-    }
-    res.r_ah = row["r_ah"];
-    if (std::isnan(M0) && std::isfinite(row["M_ah"]))
-      M0 = row["M_ah"];
-    const double drift = std::abs(row["M_ah"] - M0);
+  for (const auto& values : table.rows) {
+    auto row = [&](const char* name) {
+      const auto c = table.column(name);
+      return c && *c < values.size() ? values[*c] : NAN;
+    };
+    res.r_ah = row("r_ah");
+    if (std::isnan(M0) && std::isfinite(row("M_ah")))
+      M0 = row("M_ah");
+    const double drift = std::abs(row("M_ah") - M0);
     if (std::isfinite(drift))
       res.M_ah_drift = std::isnan(res.M_ah_drift) ? drift : std::max(res.M_ah_drift, drift);
-    const double err = std::abs(row["M_ah_err"]);
+    const double err = std::abs(row("M_ah_err"));
     if (std::isfinite(err))
       res.M_ah_err = std::isnan(res.M_ah_err) ? err : std::max(res.M_ah_err, err);
-    res.H_max = std::isnan(res.H_max) ? row["H_L2_ext"] : std::max(res.H_max, row["H_L2_ext"]);
-    res.H_R_max = std::isnan(res.H_R_max) ? row["H_L2_R"] : std::max(res.H_R_max, row["H_L2_R"]);
-    res.H_final = row["H_L2_ext"];
-    res.t_end = row["t"];
+    res.H_max = std::isnan(res.H_max) ? row("H_L2_ext") : std::max(res.H_max, row("H_L2_ext"));
+    res.H_R_max = std::isnan(res.H_R_max) ? row("H_L2_R") : std::max(res.H_R_max, row("H_L2_R"));
+    res.H_final = row("H_L2_ext");
+    res.t_end = row("t");
   }
   return res;
 }

@@ -1,8 +1,10 @@
 // `converge` and `sweep` as users run them.
 #include "../test_support.hpp"
+#include "io/table.hpp"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -60,6 +62,17 @@ TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field di
   const std::size_t last = t.rows.size() - 1;
   CHECK(t.at(last, "t") == 3.0);
   for (const char* c : {"p_H_600_900", "p_H_900_1200", "p_M_900_1200", "p3_chi_600_900_1200"}) {
+    INFO(c << " = " << t.at(last, c));
+    CHECK(t.at(last, c) == doctest::Approx(4.0).epsilon(0.1));
+  }
+  // the areal-radius norms: each member's own value, and their pairwise orders near 4
+  const auto member = gbssn1d::read_table(out / "N900" / "timeseries.dat");
+  const auto H_R_900 = member.rows.back()[*member.column("H_L2_R")];
+  CHECK(t.at(last, "H_L2_R_N900") == H_R_900);
+  CHECK(t.at(last, "p_H_R_900_1200")
+        == doctest::Approx(std::log(H_R_900 / t.at(last, "H_L2_R_N1200")) / std::log(1200.0 / 900))
+               .epsilon(1e-5));
+  for (const char* c : {"p_H_R_600_900", "p_H_R_900_1200", "p_M_R_900_1200"}) {
     INFO(c << " = " << t.at(last, c));
     CHECK(t.at(last, c) == doctest::Approx(4.0).epsilon(0.1));
   }
@@ -123,6 +136,21 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
   CHECK(rows[2].find("delta-rhs-from-gd 0.25 blew-up") == 0);
   CHECK(rows[2].find("non-finite") != std::string::npos);
   CHECK(fs::exists(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat"));
+  { // the summary's figures are those of the member's timeseries.dat
+    const auto summary = gbssn1d::read_table(out / "summary.dat");
+    const auto series =
+        gbssn1d::read_table(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat");
+    double err_max = 0, H_R_max = 0;
+    for (const auto& row : series.rows) {
+      err_max = std::max(err_max, std::abs(row[*series.column("M_ah_err")]));
+      H_R_max = std::max(H_R_max, row[*series.column("H_L2_R")]);
+    }
+    const auto& first = summary.rows.front();
+    CHECK(first[*summary.column("t_end")] == 30.0);
+    CHECK(first[*summary.column("M_ah_err_max")] == doctest::Approx(err_max).epsilon(1e-6));
+    CHECK(first[*summary.column("H_L2_R_max")] == doctest::Approx(H_R_max).epsilon(1e-6));
+    CHECK(err_max > 0.0);
+  }
 
   // a second run skips finished members
   const auto stamp =
