@@ -28,7 +28,7 @@ Schedule make_schedule(const Params& p, const Grid& grid) {
 
 Simulation::Simulation(const Params& p)
     : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
-      diagnostic_rhs_(*grid_, rhs_params(p)), u_(initial_data(*grid_, initial_data_params(p))),
+      diagnostic_rhs_(rhs_), u_(initial_data(*grid_, initial_data_params(p))),
       schedule_(make_schedule(p, *grid_)), ah_every_(ah_every_steps(p)) {}
 
 bool Simulation::in_search_window(double t) const {
