@@ -4,7 +4,9 @@
 # and M/16 (rmax = 200 M) and on the default sinh grid (N = 400, dr-inner = 0.02 M,
 # rmax = 100 M; there with and without --rah-ramp 20). Prints each sweep's summary.dat: status, t_end, r_ah_final, |r_ah/h - 1|,
 # M_ah_err_max = max |M_AH - M|, H_L2_R_max (outer sheet, areal radius 2.5 M <= R <= 12 M).
-# About 20 minutes on 2 cores.
+# Wormhole shrinks are run once more with --eta 1: with the default eta = 2/M the Gamma-driver
+# does not settle on wormhole data (docs/horizon-shift-study.md, Sec. 4).
+# About 25 minutes on 2 cores.
 #
 #   bash runs/horizon-robustness.sh [tmax]      (default 1000)
 set -euo pipefail
@@ -20,7 +22,12 @@ build/gbssn1d sweep -j "$(nproc)" --out "$out/uniform" "${axes[@]}" "${run[@]}" 
   --sweep N=1600,3200 --grid uniform --rmax 200 || true
 build/gbssn1d sweep -j "$(nproc)" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
   --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
-for s in uniform default-grid; do
+shrinks=(--id wormhole --eta 1 --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6)
+build/gbssn1d sweep -j "$(nproc)" --out "$out/wormhole-eta1-uniform" "${shrinks[@]}" "${run[@]}" \
+  --sweep N=1600,3200 --grid uniform --rmax 200 || true
+build/gbssn1d sweep -j "$(nproc)" --out "$out/wormhole-eta1-default-grid" "${shrinks[@]}" \
+  "${run[@]}" --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
+for s in uniform default-grid wormhole-eta1-uniform wormhole-eta1-default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
   # columns by name from the header line (the last '#' line); N is a column of the uniform
   # sweep only, rah-ramp of the default-grid sweep only
@@ -28,8 +35,9 @@ for s in uniform default-grid; do
               for (i = 1; i <= n; i++) c[names[i]] = i; next }
        !printed++ { print "id rahA rah0 N ramp status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
        { h = $c["rah0"]; r = $c["r_ah_final"]
+         id = ("id" in c) ? $(c["id"]) : "wormhole(eta=1)"
          N = ("N" in c) ? $(c["N"]) : 400; ramp = ("rah-ramp" in c) ? $(c["rah-ramp"]) : 0
-         printf "%s %s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", $c["id"], $c["rahA"], h, N, ramp,
+         printf "%s %s %s %s %s %s %s %.5f %.1e %.1e %.1e %s\n", id, $c["rahA"], h, N, ramp,
                 $c["status"], $c["t_end"], r, $c["rahA"] == 0 ? 0 : (r > h ? r / h - 1 : 1 - r / h),
                 $c["M_ah_err_max"], $c["H_L2_R_max"], $c["wall_s"] }' \
     "$out/$s/summary.dat" | column -t

@@ -44,6 +44,9 @@ const std::vector<ParamSpec>& param_specs() {
        "1+log without advection: d_t alpha = -2 alpha K"},
       {"cfl", &Params::cfl, "Numerics", "dt = cfl * smallest spacing, in (0, 1]"},
       {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
+      {"chi-floor", &Params::chi_floor, "Numerics",
+       "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
+       "cross chi = 0 at the innermost cell during the lapse collapse"},
       {"tmax", &Params::tmax, "Time", "final time (M); 0 writes the initial data only"},
       {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat (M)"},
       {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat (M)"},
@@ -131,6 +134,8 @@ int evolve(Params p, bool print_config) {
     return 0;
   }
   validate_output_dir(p);
+  for (const auto& w : warnings(p))
+    fmt::print(stderr, "gbssn1d: warning: {}\n", w);
 
   Simulation sim(p); // initial data are computed before anything is written
   sim.show_progress = true;

@@ -83,6 +83,21 @@ void resolve_defaults(Params& p) {
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
 }
 
+std::vector<std::string> warnings(const Params& p) {
+  std::vector<std::string> w;
+  // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
+  // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
+  // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
+  if (p.id == "wormhole" && p.rahA > 0.0 && p.rah0 < standard_horizon_radius * p.M
+      && p.eta > 1.0 / p.M)
+    w.push_back(fmt::format(
+        "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
+        "then drifts and such runs went non-finite after 100-200 M; --eta 1 held them to 1000 M "
+        "(docs/horizon-shift-study.md, Sec. 4)",
+        num(p.rah0), num(p.eta)));
+  return w;
+}
+
 void validate(const Params& p) {
   if (p.N <= 0)
     throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
@@ -127,6 +142,9 @@ void validate(const Params& p) {
   require_finite("--ko-sigma", p.ko_sigma);
   if (p.ko_sigma < 0.0 || p.ko_sigma > 1.0)
     throw ParamError("--ko-sigma", num(p.ko_sigma), "must lie in [0, 1]");
+  require_finite("--chi-floor", p.chi_floor);
+  if (p.chi_floor < 0.0 || p.chi_floor >= 1.0)
+    throw ParamError("--chi-floor", num(p.chi_floor), "must lie in [0, 1)");
 
   require_finite("--tmax", p.tmax);
   if (p.tmax < 0.0)

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -31,6 +32,7 @@ struct Params {
   // numerics
   double cfl = 0.25;
   double ko_sigma = 0.1;
+  double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
   // time
   double tmax = 10.0;
   double dt_series = 0.25;
@@ -79,6 +81,9 @@ void resolve_defaults(Params& p);
 
 /// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.
 void validate(const Params& p);
+
+/// Valid but known-bad combinations, each a sentence for stderr (the run goes ahead).
+std::vector<std::string> warnings(const Params& p);
 
 /// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
 /// --force; not writable). Creates nothing.

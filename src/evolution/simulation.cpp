@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -132,6 +133,14 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
 void Simulation::step(double dt) {
   stepper_.do_step(std::ref(rhs_), u_, t_, dt);
   t_ += dt;
+  apply_chi_floor(u_, *grid_, params_.chi_floor);
+}
+
+void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
+  if (chi_floor <= 0.0)
+    return;
+  for (double& chi : field(u, grid, Var::chi))
+    chi = std::max(chi, chi_floor);
 }
 
 void Simulation::check_finite() const {

@@ -36,6 +36,11 @@ struct Schedule {
 };
 Schedule make_schedule(const Params& p, const Grid& grid);
 
+/// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
+/// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,
+/// and the (d_r chi)^2 / chi terms of (R1)-(R4) then diverge; docs/horizon-shift-study.md Sec. 4.
+void apply_chi_floor(State& u, const Grid& grid, double chi_floor);
+
 class Simulation {
 public:
   /// Builds the grid, the right-hand side and the initial data. `p` must be validated.
@@ -65,7 +70,7 @@ public:
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
   bool show_progress = false;
 
-  /// One RK4 step of size dt.
+  /// One RK4 step of size dt, then the chi floor (apply_chi_floor).
   void step(double dt);
 
   /// The horizon radius h_AH that the horizon shift uses for the current state: found on it

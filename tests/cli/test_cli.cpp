@@ -83,6 +83,8 @@ TEST_CASE("bad numbers are refused, naming the parameter and why") {
   check_refused("--M inf", "--M");
   check_refused("--eta nan", "--eta");
   check_refused("--ko-sigma -1", "--ko-sigma");
+  check_refused("--chi-floor -1e-5", "--chi-floor");
+  check_refused("--chi-floor 1", "--chi-floor");
   check_refused("--tmax -1", "--tmax");
   check_refused("--N abc", "--N");
   check_refused("--eta -3", "--eta");

@@ -8,11 +8,13 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <tuple>
 #include <unistd.h>
+#include <utility>
 
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
@@ -203,4 +205,65 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   CHECK(profiles.columns == profile_columns());
   CHECK(profiles.rows.size() == 100);
   fs::remove_all(dir);
+}
+
+TEST_CASE("the chi floor raises chi below it and leaves the rest alone; 0 switches it off") {
+  Params p;
+  p.grid = "uniform";
+  p.N = 16;
+  p.rmax = 8.0;
+  const Grid g = make_grid(validated(p));
+  State u = make_state(g);
+  auto chi = field(u, g, Var::chi);
+  for (std::size_t i = 0; i < chi.size(); ++i)
+    chi[i] = 1e-3 * (static_cast<double>(i) - 5.0); // negative, zero and positive values
+  const State before = u;
+  apply_chi_floor(u, g, 0.0);
+  CHECK(u == before);
+  apply_chi_floor(u, g, 2.5e-3);
+  for (std::size_t i = 0; i < chi.size(); ++i)
+    CHECK(chi[i] == std::max(field(before, g, Var::chi)[i], 2.5e-3));
+  for (const auto& entry : registry)
+    if (entry.var != Var::chi)
+      CHECK(std::ranges::equal(field(u, g, entry.var), field(before, g, entry.var)));
+}
+
+// docs/horizon-shift-study.md Sec. 4: wormhole data with the horizon shift (h = 1.2 M, default
+// grid) go non-finite at the innermost cell at t of about 6.8 M once chi there has crossed zero;
+// with the default floor the same run passes the lapse collapse.
+TEST_CASE("wormhole with the horizon shift: without the chi floor the innermost cell blows up") {
+  Params p;
+  p.id = "wormhole";
+  p.rahA = 0.5;
+  p.rah0 = 1.2;
+  p.tmax = 9.0;
+  p.dt_series = 0.25;
+  auto run = [&](double floor) {
+    Params q = p;
+    q.chi_floor = floor;
+    Simulation sim(validated(q));
+    double chi_min = 1.0;
+    sim.on_series = [&](Simulation& s) { // after steps (the initial data are not floored)
+      if (s.time() == 0.0)
+        return;
+      const auto chi = field(std::as_const(s.state()), s.grid(), Var::chi);
+      chi_min = std::min(chi_min, *std::ranges::min_element(chi.subspan(s.grid().first_interior(),
+                                                                        s.grid().n_interior())));
+    };
+    try {
+      sim.run(nullptr);
+    } catch (const NonFiniteError& e) {
+      return std::tuple(e.t, e.r, chi_min);
+    }
+    return std::tuple(sim.time(), -1.0, chi_min);
+  };
+  const auto [t_off, r_off, chi_min_off] = run(0.0);
+  CHECK(chi_min_off < 0.0); // chi crosses zero at the innermost cell ...
+  CHECK(t_off > 5.0);       // ... and the run fails during the lapse collapse
+  CHECK(t_off < 9.0);
+  CHECK(r_off == doctest::Approx(0.01).epsilon(0.01)); // the innermost cell
+  const auto [t_on, r_on, chi_min_on] = run(Params{}.chi_floor);
+  CHECK(t_on == 9.0);
+  CHECK(r_on < 0.0);
+  CHECK(chi_min_on >= Params{}.chi_floor);
 }

@@ -356,3 +356,24 @@ TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24
     CHECK(p <= 4.6);
   }
 }
+
+TEST_CASE("a wormhole shrink with eta > 1/M is warned about; eta = 1/M, trumpets and stretches "
+          "are not") {
+  Params p;
+  p.id = "wormhole";
+  p.rahA = 0.5;
+  p.rah0 = 0.6;
+  Params q = p;
+  resolve_defaults(q);
+  REQUIRE(warnings(q).size() == 1);
+  CHECK(warnings(q)[0].find("--eta 1") != std::string::npos);
+  q.eta = 1.0;
+  CHECK(warnings(q).empty());
+  for (auto change : {+[](Params& x) { x.id = "1log-trumpet"; }, +[](Params& x) { x.rah0 = 0.9; },
+                      +[](Params& x) { x.rahA = 0.0; }}) {
+    Params r = p;
+    change(r);
+    resolve_defaults(r);
+    CHECK(warnings(r).empty());
+  }
+}
