@@ -157,14 +157,8 @@ def work_of(directory, args):
     sys.path.insert(0, os.path.dirname(__file__))
     res = {}
     for n, (t, merr, params) in member_costs(directory, args.t1).items():
-        rmax, cfl = float(params['rmax']), float(params['cfl'])
-        if params['grid'] == 'uniform':
-            dr_min = rmax / n
-        else:
-            # sinh map r = rmax sinh(s x)/sinh(s): the innermost cell is the smallest; its
-            # width is --dr-inner of this member
-            dr_min = float(params['dr-inner'])
-        steps = math.ceil(args.t1 / (cfl * dr_min))
+        # the header records the run's time step (cfl x smallest cell); t1 may end before tmax
+        steps = math.ceil(args.t1 / float(params['dt']) - 1e-9)
         sel = (t >= args.t0) & (t <= args.t1) & np.isfinite(merr)
         m = float(np.max(np.abs(merr[sel]))) if sel.any() else float('nan')
         res[n] = (n * steps, m, t[-1] < args.t1 - 1e-9)

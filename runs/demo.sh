@@ -13,7 +13,7 @@ rm -rf demo && mkdir -p demo
 echo "== wormhole (precollapsed lapse) -> 1+log trumpet, t = 300 M"
 $g evolve --id wormhole --lapse0 precollapsed --grid sinh --N 400 --rmax 600 --dr-inner 0.02 \
   --tmax 300 --dt-series 1 --dt-profiles 5 --out demo/wormhole
-$g evolve --id 1log-trumpet --tmax 0 --grid sinh --N 4000 --dr-inner 0.0005 --rmax 200 \
+$g evolve --id 1log-trumpet --tmax 0 --grid sinh --N 4000 --dr-inner 0.005 --rmax 200 \
   --out demo/trumpet-reference 2>/dev/null
 $py plots/plot_profiles.py demo/wormhole/profiles.dat -y alpha --times 0,5,10,20,50,300 \
   --xmax 10 --title "lapse: wormhole collapsing onto the trumpet" -o demo/lapse_profiles.png
@@ -38,7 +38,7 @@ $py plots/constraint_orders.py demo/converge/N{600,900,1200}/timeseries.dat --ti
 
 echo "== sweep: horizon shift strength x target radius (1+log trumpet data, t = 40 M)"
 $g sweep -j 2 --out demo/sweep --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet \
-  --grid sinh --N 300 --rmax 100 --dr-inner 0.025 --tmax 40 --dt-series 0.5
+  --grid sinh --N 300 --rmax 100 --dr-inner 0.01875 --tmax 40 --dt-series 0.5
 grep -v '^# [a-z]' demo/sweep/summary.dat | sed -n '/^# rahA/,$p'
 $py plots/plot_horizons.py demo/sweep/*/horizon.dat --label-by rahA,rah0 --target \
   --title "sweep: r_AH(t)" -o demo/sweep_r_ah.png

@@ -114,10 +114,10 @@ threshold)
   $py plots/horizon_study.py threshold "$out"/t-*/ "$out"/tm-*/ --min-order 3.5
   ;;
 cost)
-  # uniform: the threshold families; sinh: one map at every N (dr-inner scales as 1/N), from
+  # uniform: the threshold families; sinh: one map at every N (--dr-inner 0.06 at N = 400), from
   # about M/12 near the horizon at N = 300 to M/33 at N = 800
   [ -f "$out/t-standard/convergence.dat" ] || bash "$0" threshold >/dev/null
-  grid=(--grid sinh --dr-inner 0.08)
+  grid=(--grid sinh --dr-inner 0.06)
   family s-standard 300,400,600,800 --id 1log-trumpet
   for h in 0.6 0.89 1.2 2.0; do
     family "s-h$h" 300,400,600,800 --id 1log-trumpet --rahA 0.5 --rah0 $h

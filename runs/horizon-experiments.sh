@@ -12,8 +12,7 @@ jobs=()
 for cfg in runs/horizon-*.toml; do
   name=$(basename "$cfg" .toml)
   for n in 400 800; do
-    dr=$($py -c "print(8/$n)")
-    jobs+=("build/gbssn1d evolve --config $cfg --N $n --dr-inner $dr --out $out/$name-N$n")
+    jobs+=("build/gbssn1d evolve --config $cfg --N $n --out $out/$name-N$n")
   done
 done
 # a member that blows up is a result, not a reason to stop: its stderr says where and when

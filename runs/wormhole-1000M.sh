@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 out=out/wormhole-1000M
 rm -rf "$out" out/trumpet-reference
 /usr/bin/time -f "wall %e s" build/gbssn1d evolve --config runs/wormhole-1000M.toml --out "$out"
-build/gbssn1d evolve --id 1log-trumpet --tmax 0 --grid sinh --N 8000 --dr-inner 0.0005 \
+build/gbssn1d evolve --id 1log-trumpet --tmax 0 --grid sinh --N 8000 --dr-inner 0.01 \
   --rmax 200 --out out/trumpet-reference 2>/dev/null
 py=/usr/bin/python3
 $py plots/compare_trumpet.py "$out/profiles.dat" out/trumpet-reference/profiles.dat \

@@ -32,7 +32,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"N", &Params::N, "Grid", "number of cells"},
       {"rmax", &Params::rmax, "Grid", "outer radius (M)"},
       {"grid", &Params::grid, "Grid", "radial grid: uniform | sinh"},
-      {"dr-inner", &Params::dr_inner, "Grid", "innermost cell width of the sinh grid (M)"},
+      {"dr-inner", &Params::dr_inner, "Grid",
+       "innermost cell width (M) of the sinh grid at N = 400; it fixes the map r(x), so at N "
+       "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)"},
       {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
       {"M", &Params::M, "Initial data", "black-hole mass"},
       {"lapse0", &Params::lapse0, "Initial data",
@@ -146,7 +148,7 @@ int evolve(Params p, bool print_config) {
     std::ofstream cfg(dir / "config.toml");
     cfg << header_text("") << config;
   }
-  Output out(dir, config);
+  Output out(dir, config + sim.run_facts());
   const auto start = std::chrono::steady_clock::now();
   try {
     sim.run(&out);
@@ -357,8 +359,8 @@ int run_cli(int argc, char** argv) {
   converge_cmd->add_option("--order", converge_options.order, "order used to scale the profiles")
       ->capture_default_str();
   converge_cmd->allow_extras();
-  converge_cmd->footer("Every other flag is an evolve flag (see `gbssn1d evolve --help`). On a "
-                       "sinh grid --dr-inner belongs to the first N and scales as 1/N.");
+  converge_cmd->footer("Every other flag is an evolve flag (see `gbssn1d evolve --help`). Every "
+                       "member lives on the same map (uniform, or sinh fixed by --dr-inner).");
 
   // sweep: the Cartesian product of flag values
   SweepOptions sweep_options;

@@ -29,6 +29,7 @@ constexpr double eta_dt_max = 2.78;
 constexpr int N_max = 10'000'000;
 /// Most time steps accepted in one run (a typo in --tmax or --dt-series, not a real run).
 constexpr double steps_max = 1e9;
+constexpr double rows_max = 1e7; ///< rows of timeseries.dat (at most about 3 GB)
 
 /// The names a choice flag accepts and what each stands for: one table serves the validation,
 /// its message and the conversion, so they cannot drift apart.
@@ -113,12 +114,12 @@ void validate(const Params& p) {
     throw ParamError("--grid", p.grid, "must be 'uniform' or 'sinh'");
   if (p.grid == "sinh") {
     require_positive("--dr-inner", p.dr_inner);
-    const double needed = p.dr_inner * p.N;
+    const double needed = p.dr_inner * sinh_reference_N;
     if (!(p.rmax > needed))
       throw ParamError("--rmax", num(p.rmax),
-                       fmt::format("too small for the grid: a sinh grid of --N = {} cells with "
-                                   "--dr-inner = {} needs --rmax > {}",
-                                   p.N, p.dr_inner, needed));
+                       fmt::format("too small for the grid: the sinh map with --dr-inner = {} "
+                                   "(the innermost width at N = {}) needs --rmax > {}",
+                                   p.dr_inner, sinh_reference_N, needed));
   }
   if (!(p.rmax >= 4.0 * p.M))
     throw ParamError("--rmax", num(p.rmax),
@@ -206,19 +207,21 @@ void validate(const Params& p) {
 
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = p.cfl * make_grid(p).min_spacing();
-  // The step count (the step is the CFL step, shortened to divide --dt-series).
-  const double steps_per_series = std::ceil(p.dt_series / dt - 1e-9);
-  const double n_steps = std::ceil(p.tmax / (p.dt_series / steps_per_series) - 1e-9);
-  if (n_steps > steps_max) {
-    if (p.dt_series < dt)
-      throw ParamError("--dt-series", num(p.dt_series),
-                       fmt::format("is below the time step {} and would take {:.3g} steps to "
-                                   "--tmax = {} (at most {:.0e})",
-                                   dt, n_steps, p.tmax, steps_max));
+  // The step count (the step is the CFL step whatever the output cadence) and the row counts.
+  const double n_steps = std::ceil(p.tmax / dt - 1e-9);
+  if (n_steps > steps_max)
     throw ParamError(
         "--tmax", num(p.tmax),
         fmt::format("would take {:.3g} steps of {} (at most {:.0e})", n_steps, dt, steps_max));
-  }
+  if (p.tmax / p.dt_series > rows_max)
+    throw ParamError("--dt-series", num(p.dt_series),
+                     fmt::format("would write {:.3g} rows to --tmax = {} (at most {:.0e})",
+                                 p.tmax / p.dt_series, p.tmax, rows_max));
+  if (p.tmax / p.dt_profiles > rows_max / 100.0)
+    throw ParamError(
+        "--dt-profiles", num(p.dt_profiles),
+        fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
+                    p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
   if (p.eta * dt > eta_dt_max)
     throw ParamError("--cfl", num(p.cfl),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
@@ -253,7 +256,8 @@ Grid make_grid(const Params& p) {
   const auto n = static_cast<std::size_t>(p.N);
   if (p.grid == "uniform")
     return Grid(RadialMap::uniform(p.rmax), n);
-  return Grid(RadialMap::sinh(p.rmax, p.dr_inner, n), n);
+  // One map for every N (the shape is fixed at the reference N): --N alone refines.
+  return Grid(RadialMap::sinh(p.rmax, p.dr_inner, sinh_reference_N), n);
 }
 
 InitialDataParams initial_data_params(const Params& p) {

@@ -12,6 +12,10 @@
 
 namespace gbssn1d {
 
+/// The sinh grid is one map for every N: --dr-inner is its innermost cell width at this N, so
+/// that at N cells every spacing is (sinh_reference_N / N) times the reference grid's.
+inline constexpr int sinh_reference_N = 400;
+
 /// The value of Params::eta that stands for its default, 2/M (resolve_defaults).
 inline constexpr double eta_default = -1.0;
 
@@ -20,7 +24,7 @@ struct Params {
   int N = 400;
   double rmax = 100.0;
   std::string grid = "sinh"; ///< uniform | sinh
-  double dr_inner = 0.02;    ///< innermost cell width of the sinh grid (M)
+  double dr_inner = 0.02;    ///< innermost cell width of the sinh grid at N = sinh_reference_N (M)
   // initial data
   std::string id = "wormhole"; ///< wormhole | maximal-trumpet | 1log-trumpet
   double M = 1.0;

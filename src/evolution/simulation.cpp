@@ -19,12 +19,19 @@ NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_)
 
 Schedule make_schedule(const Params& p, const Grid& grid) {
   Schedule s;
-  const double dt_cfl = time_step(p, grid);
-  s.steps_per_series = static_cast<long>(std::ceil(p.dt_series / dt_cfl - 1e-9));
-  s.dt = p.dt_series / static_cast<double>(s.steps_per_series);
-  s.steps_per_profile = std::max(1L, std::lround(p.dt_profiles / s.dt));
+  s.dt = time_step(p, grid);
   s.n_steps = static_cast<long>(std::ceil(p.tmax / s.dt - 1e-9));
   return s;
+}
+
+void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
+                         double dt, double theta, State& out) {
+  const double s = theta, s2 = s * s, s3 = s2 * s;
+  const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h01 = -2.0 * s3 + 3.0 * s2;
+  const double h10 = (s3 - 2.0 * s2 + s) * dt, h11 = (s3 - s2) * dt;
+  out.resize(u0.size());
+  for (std::size_t i = 0; i < u0.size(); ++i)
+    out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
 }
 
 Simulation::Simulation(const Params& p)
@@ -130,8 +137,19 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
   return row;
 }
 
+std::string Simulation::run_facts() const {
+  return fmt::format("dt = {:.17g}\nsteps = {}\ndr-min = {:.17g}\n", schedule_.dt,
+                     schedule_.n_steps, grid_->min_spacing());
+}
+
 void Simulation::step(double dt) {
   stepper_.do_step(std::ref(rhs_), u_, t_, dt);
+  t_ += dt;
+  apply_chi_floor(u_, *grid_, params_.chi_floor);
+}
+
+void Simulation::step(double dt, const State& dudt) {
+  stepper_.do_step(std::ref(rhs_), u_, dudt, t_, dt);
   t_ += dt;
   apply_chi_floor(u_, *grid_, params_.chi_floor);
 }
@@ -153,39 +171,90 @@ void Simulation::check_finite() const {
 
 void Simulation::run(Output* out) {
   const Schedule& s = schedule_;
-  auto write = [&](bool series, bool profiles) {
-    if (!out || !(series || profiles))
-      return;
-    const DerivedProfiles d = derived_profiles(u_, *grid_);
-    if (series) {
-      const HorizonSearch found = horizons();
-      report_horizon(found.horizon());
-      out->write_series(series_row(d, found));
-      out->write_horizons(t_, found);
-    }
-    if (profiles)
-      out->write_profiles(t_, u_, *grid_, d, horizon_shift());
+  const double t_end = params_.tmax;
+  // Output times: k dt_series, k dt_profiles and tmax, each written once (to round-off).
+  long k_series = 1, k_profiles = 1;
+  auto next_series = [&] {
+    return std::min(static_cast<double>(k_series) * params_.dt_series, t_end);
   };
+  auto next_profiles = [&] {
+    return std::min(static_cast<double>(k_profiles) * params_.dt_profiles, t_end);
+  };
+  auto write = [&](bool series, bool profiles) {
+    if (out && (series || profiles)) {
+      const DerivedProfiles d = derived_profiles(u_, *grid_);
+      if (series) {
+        const HorizonSearch found = horizons();
+        report_horizon(found.horizon());
+        out->write_series(series_row(d, found));
+        out->write_horizons(t_, found);
+      }
+      if (profiles)
+        out->write_profiles(t_, u_, *grid_, d, horizon_shift());
+    }
+    if (series && on_series)
+      on_series(*this);
+  };
+  // Writes every output time in (t_prev, t_]: on the step itself, or between the steps from
+  // the Hermite interpolant of (u_prev_, dudt_prev_) and (u_, dudt_now_). The diagnostics read
+  // u_ and t_, so the interpolated state stands in for them while it is written.
+  auto write_due = [&](double t_prev, bool have_dense) {
+    const double tol = 1e-9 * s.dt;
+    while (true) {
+      const double t_out = std::min(next_series(), next_profiles());
+      if (t_out > t_ + tol)
+        return;
+      const bool series = std::abs(next_series() - t_out) <= tol;
+      const bool profiles = std::abs(next_profiles() - t_out) <= tol;
+      if (std::abs(t_out - t_) <= tol || !have_dense) {
+        write(series, profiles);
+      } else {
+        hermite_interpolate(u_prev_, dudt_prev_, u_, dudt_now_, t_ - t_prev,
+                            (t_out - t_prev) / (t_ - t_prev), u_out_);
+        std::swap(u_, u_out_);
+        const double t_step = std::exchange(t_, t_out);
+        write(series, profiles);
+        t_ = t_step;
+        std::swap(u_, u_out_);
+      }
+      const bool at_end = t_out >= t_end - tol;
+      if (series)
+        ++k_series;
+      if (profiles)
+        ++k_profiles;
+      if (at_end)
+        return;
+    }
+  };
+
   check_finite();
   update_held_horizon();
   write(true, true);
-  if (on_series)
-    on_series(*this);
-  const double t_end = params_.tmax;
+  if (s.n_steps == 0)
+    return;
   const auto start = std::chrono::steady_clock::now();
   auto last_report = start;
   const bool progress = show_progress && ::isatty(STDERR_FILENO);
+  dudt_now_.resize(u_.size());
+  rhs_(u_, dudt_now_, t_); // RK4's first stage of the first step
   for (long n = 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
-    step(last ? t_end - t_ : s.dt);
-    t_ = last ? t_end : static_cast<double>(n) * s.dt; // no accumulated round-off in t
+    const double t_prev = t_;
+    // Keep the step's start for output between the steps (cheap copies, only when needed).
+    const double t_next = last ? t_end : static_cast<double>(n) * s.dt;
+    const bool dense = std::min(next_series(), next_profiles()) < t_next - 1e-9 * s.dt;
+    if (dense) {
+      u_prev_ = u_;
+      dudt_prev_ = dudt_now_;
+    }
+    step(t_next - t_, dudt_now_);
+    t_ = t_next; // no accumulated round-off in t
     check_finite();
     if (ah_every_ > 0 && n % ah_every_ == 0)
       update_held_horizon();
-    const bool series = last || n % s.steps_per_series == 0;
-    write(series, last || n % s.steps_per_profile == 0);
-    if (series && on_series)
-      on_series(*this);
+    if (!last || dense)
+      rhs_(u_, dudt_now_, t_); // the next step's first stage, and d_t u for the interpolant
+    write_due(t_prev, dense);
     if (progress && (n % 64 == 0 || last)) {
       const auto now = std::chrono::steady_clock::now();
       if (last || now - last_report > std::chrono::milliseconds(500)) {

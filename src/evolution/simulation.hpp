@@ -26,15 +26,19 @@ public:
   std::string var;
 };
 
-/// The time stepping of a run: constant dt chosen so that the series cadence is a whole number
-/// of steps; the last step is shortened to end exactly at tmax.
+/// The time stepping of a run: dt = cfl x smallest spacing, whatever the output cadence; the
+/// last step is shortened to end exactly at tmax. Output between steps is interpolated
+/// (Simulation::run).
 struct Schedule {
   double dt;
-  long steps_per_series;
-  long steps_per_profile;
   long n_steps;
 };
 Schedule make_schedule(const Params& p, const Grid& grid);
+
+/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
+/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
+void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
+                         double dt, double theta, State& out);
 
 /// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
 /// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,
@@ -59,8 +63,11 @@ public:
   /// The same, with the horizons of the current state already found.
   SeriesRow series_row(const DerivedProfiles& d, const HorizonSearch& found);
 
-  /// Evolve to tmax, writing into `out` (if given). Throws NonFiniteError after writing the
-  /// last finite output, leaving the files complete.
+  /// Evolve to tmax, writing into `out` (if given) at t = k dt_series (series) and
+  /// k dt_profiles (profiles) and at tmax. An output time between two steps t_n < t < t_n+1
+  /// gets the cubic Hermite interpolant of u_n, u_n+1 and their d_t u (RK4's dense output,
+  /// error O(dt^4), the order of the scheme); on a step it gets the state itself. Throws
+  /// NonFiniteError after writing the last finite output, leaving the files complete.
   void run(Output* out);
 
   /// Called after every series output (and at t = 0), e.g. to sample the state for a
@@ -70,8 +77,14 @@ public:
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
   bool show_progress = false;
 
+  /// Facts of this run for the output headers, as "key = value" lines: the time step dt, the
+  /// number of steps to tmax and the smallest cell width dr-min.
+  std::string run_facts() const;
+
   /// One RK4 step of size dt, then the chi floor (apply_chi_floor).
   void step(double dt);
+  /// The same with d_t u at the current state already evaluated (RK4's first stage).
+  void step(double dt, const State& dudt);
 
   /// The horizon radius h_AH that the horizon shift uses for the current state: found on it
   /// (substage mode) or the value held since the last search. nullopt: no horizon (beta_H = 0).
@@ -100,6 +113,7 @@ private:
   GbssnRhs diagnostic_rhs_; ///< separate, so RHS evaluations of the evolution stay countable
   State dudt_;
   State u_;
+  State u_prev_, dudt_prev_, dudt_now_, u_out_; ///< for output between steps (run)
   double t_ = 0.0;
   Schedule schedule_;
   boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers

@@ -60,9 +60,7 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
   std::vector<Params> members;
   for (int n : options.N) {
     Params p = base;
-    p.N = n;
-    if (p.grid == "sinh")
-      p.dr_inner = base.dr_inner * options.N.front() / n;
+    p.N = n; // the map does not depend on N, so this is a refinement on either grid
     p.out = (fs::path(options.out) / fmt::format("N{}", n)).string();
     p.force = true;
     resolve_defaults(p);
@@ -115,7 +113,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
             H_samples.push_back(interpolate_at_radius(s.grid(), H, r));
           rec.H_samples.push_back(std::move(H_samples));
         };
-        Output out(p.out, config_text(p)); // the member's own configuration
+        Output out(p.out, config_text(p) + sim.run_facts()); // the member's own configuration
         sim.run(&out);
       } catch (const std::exception& e) {
         rec.error = e.what();

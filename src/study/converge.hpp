@@ -20,8 +20,8 @@ struct ConvergeOptions {
   double order = 4.0;               ///< order assumed for the scaled profiles
 };
 
-/// The members' parameters: `base` at each N; on a sinh grid dr_inner scales as 1/N (with its
-/// given value at the first N) so that every member lives on the same map. Validates all.
+/// The members' parameters: `base` at each N (the grid's map does not depend on N, so every
+/// member lives on the same map). Validates all.
 std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options);
 
 /// Runs the members and writes DIR/N<n>/ (each member's usual output), DIR/convergence.dat,

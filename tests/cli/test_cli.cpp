@@ -74,7 +74,7 @@ TEST_CASE("bad numbers are refused, naming the parameter and why") {
   check_refused("--N -5", "--N");
   check_refused("--rmax -3", "--rmax");
   check_refused("--rmax 0", "--rmax");
-  check_refused("--grid sinh --N 1000 --dr-inner 0.01 --rmax 5", "--rmax");
+  check_refused("--grid sinh --N 1000 --dr-inner 0.02 --rmax 7.9", "--rmax"); // needs > 400 x 0.02
   check_refused("--grid uniform --rmax 2", "--rmax");
   check_refused("--cfl 2", "--cfl");
   check_refused("--cfl 0", "--cfl");

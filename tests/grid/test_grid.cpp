@@ -1,5 +1,6 @@
 // The radial grid: cell centres, parity mirrors, the sinh map, and radial derivatives through
 // the chain rule (fitted order 4 on uniform and sinh grids).
+#include "cli/params.hpp"
 #include "gbssn/rhs.hpp"
 #include "grid/grid.hpp"
 
@@ -123,4 +124,33 @@ TEST_CASE("radial derivatives of a quartic are exact on the uniform grid") {
     CHECK(std::abs(p.d_chi - p4_1(g.r()[i])) < 1e-12);
     CHECK(std::abs(p.dd_chi - p4_2(g.r()[i])) < 1e-12);
   }
+}
+
+// Issue: the sinh grid of --N alone must refine. The map is fixed at the reference N, so the
+// grid of 2N cells has every spacing halved: dr_2N(x) at x and x + dx/2 sums to dr_N at x's cell.
+TEST_CASE("sinh grid of the CLI: doubling --N halves every spacing (one map for every N)") {
+  Params p;
+  p.grid = "sinh";
+  p.rmax = 100.0;
+  p.dr_inner = 0.02;
+  p.N = 300;
+  const Grid coarse = make_grid(p);
+  p.N = 600;
+  const Grid fine = make_grid(p);
+  CHECK(coarse.map().stretch() == fine.map().stretch());
+  // the innermost cell at N = 400 is --dr-inner wide
+  p.N = sinh_reference_N;
+  CHECK(make_grid(p).map().dr_dx(0.0) * make_grid(p).dx() == doctest::Approx(0.02).epsilon(1e-12));
+  // each coarse cell is the union of two fine cells: widths add up exactly in x, and the
+  // cell-centre spacings of the fine grid are half the coarse one's to O(dx^2)
+  for (std::size_t i = 0; i < coarse.n_interior(); ++i) {
+    const std::size_t ic = coarse.first_interior() + i, jf = fine.first_interior() + 2 * i;
+    const double width_coarse = coarse.map().r(coarse.x()[ic] + 0.5 * coarse.dx())
+                                - coarse.map().r(coarse.x()[ic] - 0.5 * coarse.dx());
+    const double width_fine = fine.map().r(fine.x()[jf + 1] + 0.5 * fine.dx())
+                              - fine.map().r(fine.x()[jf] - 0.5 * fine.dx());
+    CHECK(width_fine == doctest::Approx(width_coarse).epsilon(1e-12));
+    CHECK(fine.dr()[jf] / coarse.dr()[ic] == doctest::Approx(0.5).epsilon(0.01));
+  }
+  CHECK(fine.min_spacing() / coarse.min_spacing() == doctest::Approx(0.5).epsilon(1e-4));
 }

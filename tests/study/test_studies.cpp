@@ -187,14 +187,14 @@ TEST_CASE("sweep refuses a --sweep that names no flag") {
 TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted orders") {
   const fs::path out = scratch("sweep_tied");
   REQUIRE(run("sweep -j 2 --out " + out.string()
-              + " --sweep N,dr-inner=200:0.04,400:0.02 --sweep rahA=0,0.5 --id 1log-trumpet"
-                " --grid sinh --rmax 60 --tmax 3 --rah0 0.7")
+              + " --sweep N=200,400 --sweep rahA,rah0=0:0.89,0.5:0.7 --id 1log-trumpet"
+                " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3")
           == 0);
   const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
-  CHECK(rows[0].find("200 0.04 0 ok") == 0);
-  CHECK(rows[3].find("400 0.02 0.5 ok") == 0);
-  CHECK(fs::exists(out / "N=200_dr-inner=0.04_rahA=0.5" / "horizon.dat"));
+  CHECK(rows[0].find("200 0 0.89 ok") == 0);
+  CHECK(rows[3].find("400 0.5 0.7 ok") == 0);
+  CHECK(fs::exists(out / "N=200_rahA=0.5_rah0=0.7" / "horizon.dat"));
   // the fitted order of the final H over N = 200, 400 is near 4 for both rahA
   for (const auto& row : rows) {
     std::istringstream words(row);
@@ -206,7 +206,7 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
     CHECK(order == doctest::Approx(4.0).epsilon(0.15));
   }
   std::string err;
-  CHECK(run("sweep --out " + out.string() + " --sweep N,dr-inner=200:0.04,400", &err) == 2);
+  CHECK(run("sweep --out " + out.string() + " --sweep rahA,rah0=0:0.89,0.5", &err) == 2);
   CHECK(err.find("joined by ':'") != std::string::npos);
   fs::remove_all(out);
 }
