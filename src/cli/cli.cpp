@@ -1,4 +1,5 @@
 #include "cli/cli.hpp"
+#include "core/stop_signal.hpp"
 
 #include "evolution/simulation.hpp"
 #include "study/converge.hpp"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -149,19 +151,34 @@ int evolve(Params p, bool print_config) {
     cfg << header_text("") << config;
   }
   Output out(dir, config + sim.run_facts());
+  install_stop_handlers();
   const auto start = std::chrono::steady_clock::now();
+  // How the run ended goes to stderr and, as the last line, into timeseries.dat.
+  auto stopped = [&](const std::string& prefix, const std::string& what, const std::string& kept,
+                     int status) {
+    fmt::print(stderr, "gbssn1d: {}{}; {} in {}\n", prefix, what, kept, p.out);
+    out.write_end(fmt::format("stopped: {}", what));
+    return status;
+  };
   try {
     sim.run(&out);
   } catch (const NonFiniteError& e) {
-    fmt::print(stderr, "gbssn1d: error: {}; output up to the last finite state kept in {}\n",
-               e.what(), p.out);
-    return 3;
+    return stopped("error: ", e.what(), "output up to the last finite state kept", 3);
   } catch (const HorizonFinderError& e) {
-    fmt::print(stderr, "gbssn1d: error: {}; output up to then kept in {}\n", e.what(), p.out);
-    return 3;
+    return stopped("error: ", e.what(), "output up to then kept", 3);
+  } catch (const Interrupted& e) {
+    return stopped("", e.what(), "output up to then kept", 128 + e.signal);
+  } catch (const OutputError& e) {
+    fmt::print(stderr, "gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
+    try {
+      out.write_end(fmt::format("stopped: {}", e.what())); // other files may still take it
+    } catch (const OutputError&) {
+    }
+    return 1;
   }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.write_end(fmt::format("completed at t = {}", sim.time()));
   fmt::print(stderr, "gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n",
              sim.time(), wall, sim.schedule().n_steps, sim.rhs().evaluations());
   return 0;
@@ -318,6 +335,9 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
 } // namespace
 
 int run_cli(int argc, char** argv) {
+  // A file-size limit then fails the write (EFBIG, reported by the checked flush) instead of
+  // killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
                "black hole",
                "gbssn1d"};

@@ -1,5 +1,7 @@
 #include "evolution/simulation.hpp"
 
+#include "core/stop_signal.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,6 +18,17 @@ NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_)
     : std::runtime_error(fmt::format(
         "the evolution became non-finite at t = {:.6g}, r = {:.6g} in {}", t_, r_, var_)),
       t(t_), r(r_), var(var_) {}
+
+NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_, double value,
+                               const std::string& why)
+    : std::runtime_error(fmt::format("the evolution left the physical range at t = {:.6g}, "
+                                     "r = {:.6g}: {} = {:.6g} ({})",
+                                     t_, r_, var_, value, why)),
+      t(t_), r(r_), var(var_) {}
+
+Interrupted::Interrupted(int signal_, double t_)
+    : std::runtime_error(fmt::format("interrupted by {} at t = {:.6g}", signal_name(signal_), t_)),
+      signal(signal_), t(t_) {}
 
 Schedule make_schedule(const Params& p, const Grid& grid) {
   Schedule s;
@@ -167,6 +180,14 @@ void Simulation::check_finite() const {
     for (const auto& entry : registry)
       if (!std::isfinite(field(u_, g, entry.var)[i]))
         throw NonFiniteError(t_, g.r()[i], std::string(entry.name));
+  const auto chi = field(u_, g, Var::chi), alpha = field(u_, g, Var::alpha);
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    if (!(chi[i] > 0.0))
+      throw NonFiniteError(t_, g.r()[i], "chi", chi[i], "must be > 0; see --chi-floor");
+    if (alpha[i] < alpha_min || alpha[i] > alpha_max)
+      throw NonFiniteError(t_, g.r()[i], "alpha", alpha[i],
+                           fmt::format("must lie in [{}, {}]", alpha_min, alpha_max));
+  }
 }
 
 void Simulation::run(Output* out) {
@@ -255,6 +276,8 @@ void Simulation::run(Output* out) {
     if (!last || dense)
       rhs_(u_, dudt_now_, t_); // the next step's first stage, and d_t u for the interpolant
     write_due(t_prev, dense);
+    if (const int signal = stop_signal(); signal != 0 && !last)
+      throw Interrupted(signal, t_);
     if (progress && (n % 64 == 0 || last)) {
       const auto now = std::chrono::steady_clock::now();
       if (last || now - last_report > std::chrono::milliseconds(500)) {

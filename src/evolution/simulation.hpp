@@ -18,12 +18,24 @@
 
 namespace gbssn1d {
 
-/// Thrown when the state stops being finite; says where and when.
+/// Thrown when the state stops being finite, or chi or alpha leaves its physical range
+/// (Simulation::check_finite); says what, where and when.
 class NonFiniteError : public std::runtime_error {
 public:
   NonFiniteError(double t, double r, const std::string& var);
+  /// A finite value outside its range: "`var` = value at r, t: `why`".
+  NonFiniteError(double t, double r, const std::string& var, double value, const std::string& why);
   double t, r;
   std::string var;
+};
+
+/// Thrown between steps after SIGTERM or SIGINT (core/stop_signal.hpp), once the output due
+/// up to the current step is written.
+class Interrupted : public std::runtime_error {
+public:
+  Interrupted(int signal, double t);
+  int signal;
+  double t;
 };
 
 /// The time stepping of a run: dt = cfl x smallest spacing, whatever the output cadence; the
@@ -63,7 +75,8 @@ public:
   /// The same, with the horizons of the current state already found.
   SeriesRow series_row(const DerivedProfiles& d, const HorizonSearch& found);
 
-  /// Evolve to tmax, writing into `out` (if given) at t = k dt_series (series) and
+  /// Evolve to tmax (stopping between steps on SIGTERM/SIGINT: Interrupted), writing into `out`
+  /// (if given) at t = k dt_series (series) and
   /// k dt_profiles (profiles) and at tmax. An output time between two steps t_n < t < t_n+1
   /// gets the cubic Hermite interpolant of u_n, u_n+1 and their d_t u (RK4's dense output,
   /// error O(dt^4), the order of the scheme); on a step it gets the state itself. Throws
@@ -94,8 +107,13 @@ public:
   /// Every marginal surface of the current state.
   HorizonSearch horizons() const;
 
-  /// The first non-finite value of the state, if any: throws NonFiniteError.
+  /// The first non-finite value of the state, or a chi <= 0, alpha < alpha_min or
+  /// alpha > alpha_max: throws NonFiniteError.
   void check_finite() const;
+  /// The 1+log lapse is positive; wormhole data undershoot to about -6e-4 at the innermost cell
+  /// on the default grid during the collapse and recover, so only a clear excursion stops a run.
+  static constexpr double alpha_min = -0.01;
+  static constexpr double alpha_max = 10.0; ///< alpha <= 1 in these spacetimes
 
 private:
   bool in_search_window(double t) const;

@@ -4,6 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
+#include <system_error>
+
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -39,10 +43,12 @@ std::string header_text(const std::string& parameter_header) {
 }
 
 DataFile::DataFile(const std::filesystem::path& path, const std::string& parameter_header,
-                   const std::vector<std::string>& columns) {
+                   const std::vector<std::string>& columns)
+    : path_(path) {
   file_ = std::fopen(path.c_str(), "w");
   if (!file_)
-    throw std::runtime_error("cannot open " + path.string() + " for writing");
+    throw OutputError(
+        fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(errno)));
   std::string text = header_text(parameter_header) + "#";
   for (const auto& c : columns)
     text += " " + c;
@@ -57,7 +63,9 @@ DataFile::~DataFile() {
 }
 
 void DataFile::flush() {
-  std::fflush(file_);
+  if (std::fflush(file_) != 0 || std::ferror(file_))
+    throw OutputError(fmt::format("cannot write {}: {}", path_.string(),
+                                  errno != 0 ? std::strerror(errno) : "write error"));
 }
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
@@ -81,12 +89,11 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
                 horizon_columns()) {}
 
 void Output::write_series(const SeriesRow& row) {
-  fmt::print(series_.handle(),
-             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
-             "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
-             row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
-             row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
-             row.H_L2_int, row.M_ah_err);
+  series_.print("{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
+                "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
+                row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+                row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
+                row.H_L2_int, row.M_ah_err);
   series_.flush();
 }
 
@@ -100,21 +107,25 @@ void Output::write_horizons(double t, const HorizonSearch& search) {
       others.push_back(&s);
   auto r_of = [&](std::size_t k) { return k < others.size() ? others[k]->r : nan; };
   auto R_of = [&](std::size_t k) { return k < others.size() ? others[k]->R_areal : nan; };
-  fmt::print(
-      horizons_.handle(), "{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e}\n", t,
-      horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan, horizon ? horizon->mass : nan,
-      search.surfaces.size(), r_of(0), R_of(0), r_of(1), R_of(1));
+  horizons_.print("{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e}\n", t,
+                  horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan,
+                  horizon ? horizon->mass : nan, search.surfaces.size(), r_of(0), R_of(0), r_of(1),
+                  R_of(1));
   horizons_.flush();
+}
+
+void Output::write_end(const std::string& how) {
+  series_.print("# end: {}\n", how);
+  series_.flush();
 }
 
 void Output::write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
                             const std::vector<double>& beta_H) {
-  std::FILE* f = profiles_.handle();
   // gnuplot's `index` separates blocks by two blank lines.
   if (!first_block_)
-    fmt::print(f, "\n\n");
+    profiles_.print("\n\n");
   first_block_ = false;
-  fmt::print(f, "# t = {:.16e}\n", t);
+  profiles_.print("# t = {:.16e}\n", t);
   fmt::memory_buffer line;
   for (std::size_t k = 0; k < grid.n_interior(); ++k) {
     const std::size_t i = grid.first_interior() + k;
@@ -128,7 +139,7 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]})
       fmt::format_to(std::back_inserter(line), " {:.16e}", v);
     line.push_back('\n');
-    std::fwrite(line.data(), 1, line.size(), f);
+    profiles_.write(line.data(), line.size());
   }
   profiles_.flush();
 }

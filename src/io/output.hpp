@@ -9,9 +9,13 @@
 #include "grid/grid.hpp"
 #include "horizon/apparent_horizon.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gbssn1d {
@@ -31,7 +35,14 @@ std::vector<std::string> series_columns();
 std::vector<std::string> profile_columns();
 std::vector<std::string> horizon_columns();
 
-/// A text file with the standard header. Closes on destruction.
+/// A write that failed (full disk, file-size limit, I/O error): names the file and the reason.
+class OutputError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A text file with the standard header. Closes on destruction. Every flush is checked: a
+/// failed write throws OutputError.
 class DataFile {
 public:
   DataFile(const std::filesystem::path& path, const std::string& parameter_header,
@@ -39,10 +50,18 @@ public:
   ~DataFile();
   DataFile(const DataFile&) = delete;
   DataFile& operator=(const DataFile&) = delete;
-  std::FILE* handle() { return file_; }
+  /// Buffered writes; failures surface at the next flush().
+  template <class... T>
+  void print(fmt::format_string<T...> format, T&&... args) {
+    const std::string text = fmt::format(format, std::forward<T>(args)...);
+    write(text.data(), text.size());
+  }
+  void write(const char* data, std::size_t size) { std::fwrite(data, 1, size, file_); }
+  /// Flushes and throws OutputError if any write since the last check failed.
   void flush();
 
 private:
+  std::filesystem::path path_;
   std::FILE* file_ = nullptr;
 };
 
@@ -58,6 +77,9 @@ public:
   void write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
                       const std::vector<double>& beta_H);
   void write_horizons(double t, const HorizonSearch& search);
+  /// The last line of timeseries.dat: "# end: <how the run ended>" (completed, interrupted,
+  /// stopped), so that a reader can tell a complete file from one cut short.
+  void write_end(const std::string& how);
 
 private:
   DataFile series_;

@@ -1,5 +1,7 @@
 #include "study/converge.hpp"
 
+#include "core/stop_signal.hpp"
+
 #include "cli/cli.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
@@ -122,6 +124,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       }
     }
   };
+  install_stop_handlers(); // members stop between steps; the partial files stay
   std::vector<std::thread> pool;
   for (int j = 0; j < std::max(1, options.jobs); ++j)
     pool.emplace_back(worker);
@@ -194,8 +197,9 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                                                            Nd(k), Nd(k + 1), Nd(k + 2)));
         }
       line += "\n";
-      std::fputs(line.c_str(), file.handle());
+      file.write(line.data(), line.size());
     }
+    file.flush(); // checked: a failed write throws OutputError
   }
 
   // scaled_H.dat: H at the common radii, finer members times (N_k/N_0)^order
@@ -231,9 +235,12 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                                records[k].H_samples[s][j] * std::pow(Nd(k) / Nd(0), options.order));
         block += "\n";
       }
-      std::fputs(block.c_str(), file.handle());
+      file.write(block.data(), block.size());
     }
+    file.flush();
   }
+  if (const int signal = stop_signal(); signal != 0)
+    return 128 + signal;
   for (const auto& rec : records)
     if (!rec.error.empty())
       return 3;

@@ -2,6 +2,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/params.hpp"
+#include "core/stop_signal.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"
 #include "study/orders.hpp"
@@ -10,8 +11,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -51,7 +54,9 @@ std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
-/// Runs the executable with `args`, stdout and stderr into `log`; returns the exit status.
+/// Runs the executable with `args`, stdout and stderr into `log`; returns the exit status
+/// (-1 if it could not start, 128 + n if signal n ended it). A SIGTERM/SIGINT sent to the
+/// sweep is passed on to the member, which then stops like an interrupted evolve.
 int spawn_and_wait(const std::string& exe, const std::vector<std::string>& args,
                    const fs::path& log) {
   std::vector<std::string> all{exe};
@@ -71,8 +76,45 @@ int spawn_and_wait(const std::string& exe, const std::vector<std::string>& args,
   if (rc != 0)
     return -1;
   int status = 0;
-  waitpid(pid, &status, 0);
+  bool forwarded = false;
+  while (true) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid || (done < 0 && errno != EINTR))
+      break;
+    if (const int signal = stop_signal(); signal != 0 && !forwarded) {
+      ::kill(pid, signal);
+      forwarded = true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (WIFSIGNALED(status))
+    return 128 + WTERMSIG(status);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// A member's status file, "status wall reason": read back on a rerun of the sweep; a
+/// missing, empty or broken file, or an interrupted member, counts as not done.
+bool member_done(const fs::path& status_file) {
+  std::ifstream in(status_file);
+  std::string status;
+  double wall = 0.0;
+  std::string reason;
+  if (!(in >> status >> wall >> reason))
+    return false;
+  return status == "ok" || status == "invalid" || status == "blew-up" || status == "failed";
+}
+
+/// Written whole or not at all (temporary file, then rename).
+void write_status(const fs::path& status_file, const std::string& text) {
+  const fs::path tmp = status_file.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << text;
+    out.flush();
+    if (!out)
+      throw OutputError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, status_file);
 }
 
 std::string last_line(const fs::path& file) {
@@ -216,14 +258,17 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
 
   const fs::path dir(options.out);
   fs::create_directories(dir / "logs");
+  install_stop_handlers();
   std::atomic<std::size_t> next{0};
   std::mutex mutex;
   auto worker = [&] {
     for (std::size_t k = next++; k < members.size(); k = next++) {
       const SweepMember& m = members[k];
       const fs::path status_file = dir / "logs" / (m.name + ".status");
-      if (fs::exists(status_file))
+      if (member_done(status_file))
         continue; // finished in an earlier run of the same sweep
+      if (stop_signal() != 0)
+        continue; // interrupted: start nothing new (a rerun resumes)
       // Invalid values are caught here, before a subprocess is started.
       std::string status = "ok", reason = "-";
       double wall = 0.0;
@@ -241,12 +286,18 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
         const fs::path log = dir / "logs" / (m.name + ".log");
         const int rc = spawn_and_wait(exe, m.args, log);
         wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (rc != 0) {
+        if (rc > 128 && stop_signal() != 0) {
+          status = "interrupted";
+          reason = "interrupted by " + signal_name(rc - 128);
+        } else if (rc != 0) {
           status = rc == 3 ? "blew-up" : "failed";
           reason = last_line(log);
+          if (reason.empty())
+            reason =
+                rc > 128 ? "killed by " + signal_name(rc - 128) : fmt::format("exit status {}", rc);
         }
       }
-      std::ofstream(status_file) << status << ' ' << wall << ' ' << token(reason) << '\n';
+      write_status(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
       const std::lock_guard lock(mutex);
       fmt::print(stderr, "gbssn1d sweep: {} {} ({:.1f} s){}\n", m.name, status, wall,
                  status == "ok" ? "" : ": " + reason);
@@ -329,7 +380,20 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     if (with_resolutions)
       line += fmt::format(" {:.4f}", orders[k]);
     line += " " + reasons[k] + "\n";
-    std::fputs(line.c_str(), summary.handle());
+    summary.write(line.data(), line.size());
+  }
+  summary.flush(); // checked: a failed write throws OutputError
+  if (const int signal = stop_signal(); signal != 0) {
+    fmt::print(stderr, "gbssn1d sweep: interrupted by {}; rerun the same command to finish\n",
+               signal_name(signal));
+    return 128 + signal;
+  }
+  const auto bad = std::count_if(statuses.begin(), statuses.end(),
+                                 [](const std::string& s) { return s != "ok"; });
+  if (bad > 0) {
+    fmt::print(stderr, "gbssn1d sweep: {} of {} members did not complete (see summary.dat)\n", bad,
+               members.size());
+    return 3;
   }
   return 0;
 }

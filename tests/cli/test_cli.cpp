@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -185,4 +186,77 @@ TEST_CASE("--tmax 0 writes the initial data; the written config repeats a run ex
   CHECK(profiles.find("\n\n\n") == std::string::npos); // one block only
   for (const auto& d : {a, b, c})
     fs::remove_all(d);
+}
+
+TEST_CASE("timeseries.dat ends with how the run ended: completed or stopped") {
+  const fs::path out = scratch("end");
+  REQUIRE(run("evolve --id 1log-trumpet --N 100 --rmax 20 --tmax 1 --out " + out.string()).status
+          == 0);
+  std::string text = slurp(out / "timeseries.dat");
+  CHECK(text.substr(text.rfind("# end:")) == "# end: completed at t = 1\n");
+  fs::remove_all(out);
+  // --cfl 1 is unstable: the lapse leaves its range; stopped, with variable, place and time
+  const Result r =
+      run("evolve --grid uniform --N 100 --rmax 20 --cfl 1 --tmax 50 --out " + out.string());
+  CHECK(r.status == 3);
+  text = slurp(out / "timeseries.dat");
+  const std::string last = text.substr(text.rfind("# end:"));
+  INFO(last);
+  CHECK(last.find("# end: stopped: the evolution left the physical range at t = ") == 0);
+  CHECK(last.find("alpha = ") != std::string::npos);
+  CHECK(last.find(", r = ") != std::string::npos);
+  CHECK(
+      std::count(text.begin() + static_cast<std::ptrdiff_t>(text.rfind("# end:")), text.end(), '\n')
+      == 1);
+  fs::remove_all(out);
+}
+
+TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, exits 143") {
+  const fs::path out = scratch("sigterm");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+                            " --tmax 2000 --dt-profiles 1 --out "
+                          + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
+                          + "/horizon.dat ]; do sleep 0.1; done; sleep 0.5; kill -TERM $p; "
+                            "wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 143);
+  const std::string text = slurp(out / "timeseries.dat");
+  CHECK(text.substr(text.rfind("# end:")).find("# end: stopped: interrupted by SIGTERM at t = ")
+        == 0);
+  // every profile row is whole: 17 columns
+  std::ifstream profiles(out / "profiles.dat");
+  int rows = 0;
+  for (std::string line; std::getline(profiles, line);) {
+    if (line.empty() || line[0] == '#')
+      continue;
+    std::istringstream words(line);
+    int n = 0;
+    for (std::string w; words >> w;)
+      ++n;
+    CHECK(n == 17);
+    ++rows;
+  }
+  CHECK(rows >= 3200);
+  CHECK(rows % 3200 == 0);
+  fs::remove_all(out);
+}
+
+TEST_CASE("a write that fails (file-size limit) stops the run with a message naming the file") {
+  const fs::path out = scratch("fsize");
+  REQUIRE(run("evolve --id 1log-trumpet --tmax 5 --dt-profiles 1 --out " + out.string()).status
+          == 0); // the same run without the limit
+  fs::remove_all(out);
+  const std::string cmd = "sh -c 'ulimit -f 64; " + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --id 1log-trumpet --tmax 5 --dt-profiles 1 --out "
+                          + out.string() + " 2>" + out.string() + ".err'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 1);
+  const std::string err = slurp(out.string() + ".err");
+  CHECK(err.find("cannot write") != std::string::npos);
+  CHECK(err.find("profiles.dat") != std::string::npos);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".err");
 }

@@ -127,7 +127,9 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
         " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 30 --dt-series 1"
         " --rahA 0.5 --rah0 0.6";
   std::string err;
-  REQUIRE(run(sweep, &err) == 0);
+  // members that did not complete make the sweep's exit status 3, and it says how many
+  REQUIRE(run(sweep, &err) == 3);
+  CHECK(err.find("members did not complete") != std::string::npos);
   const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
   CHECK(rows[0].find("consistent 0.25 ok") == 0);
@@ -155,12 +157,15 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
   // a second run skips finished members
   const auto stamp =
       fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat");
-  REQUIRE(run(sweep, &err) == 0);
+  REQUIRE(run(sweep, &err) == 3);
   CHECK(err.find("consistent_cfl=0.25 ok") == std::string::npos); // nothing reran
   CHECK(fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat") == stamp);
   // an unfinished member (no status) is rerun
   fs::remove(out / "logs" / "rah-variant=consistent_cfl=0.25.status");
-  REQUIRE(run(sweep, &err) == 0);
+  // ... and so is one whose status file is empty (a write cut short)
+  std::ofstream(out / "logs" / "rah-variant=delta-rhs-from-gd_cfl=0.25.status").flush();
+  REQUIRE(run(sweep, &err) == 3);
+  CHECK(err.find("rah-variant=delta-rhs-from-gd_cfl=0.25 blew-up") != std::string::npos);
   CHECK(err.find("rah-variant=consistent_cfl=0.25 ok") != std::string::npos);
 
   // the same sweep as task lines for GNU parallel or a Slurm array
