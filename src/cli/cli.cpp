@@ -9,10 +9,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <variant>
 
@@ -124,6 +127,10 @@ void add_options(CLI::App& app, Params& p) {
             opt = app.add_flag(flag, p.*member, spec.help);
           else
             opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
+          if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::string>)
+            opt->check([](const std::string& v) {
+              return v.empty() ? std::string("needs a number, not an empty value") : std::string();
+            });
           opt->group(spec.group);
         },
         spec.member);
@@ -144,7 +151,7 @@ int evolve(Params p, bool print_config) {
   Simulation sim(p); // initial data are computed before anything is written
   sim.show_progress = true;
   const std::filesystem::path dir(p.out);
-  std::filesystem::create_directories(dir);
+  create_output_dir("--out", dir);
   const std::string config = config_text(p);
   {
     std::ofstream cfg(dir / "config.toml");
@@ -195,6 +202,15 @@ std::string config_text(const Params& p) {
 
 namespace {
 
+/// Non-printable bytes of a text as \xNN, for messages that quote user input.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s)
+    out += (c >= 0x20 && c < 0x7f) ? std::string(1, static_cast<char>(c))
+                                   : fmt::format("\\x{:02x}", c);
+  return out;
+}
+
 /// Arguments after expanding `--config FILE` (or --config=FILE) of the evolve subcommand into
 /// `--key=value` arguments placed before the command line's own, so that flags override the
 /// file. CLI11 2.1 does not read config files given to a subcommand, hence this step; the file
@@ -227,9 +243,16 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
       const bool known = std::any_of(param_specs().begin(), param_specs().end(),
                                      [&](const ParamSpec& s) { return key == s.name; });
       if (!known)
-        throw ParamError("--config", path, fmt::format("unknown key '{}'", key));
+        throw ParamError("--config", path, fmt::format("unknown key '{}'", printable(key)));
       if (item.inputs.size() != 1)
         throw ParamError("--config", path, fmt::format("key '{}' needs exactly one value", key));
+      const auto& spec = *std::find_if(param_specs().begin(), param_specs().end(),
+                                       [&](const ParamSpec& s) { return key == s.name; });
+      if (std::holds_alternative<bool Params::*>(spec.member) && item.inputs.front() != "true"
+          && item.inputs.front() != "false")
+        throw ParamError("--config", path,
+                         fmt::format("key '{}' must be true or false, not '{}'", key,
+                                     printable(item.inputs.front())));
       from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
     }
   }
@@ -266,12 +289,51 @@ Params parse_evolve_args(const std::vector<std::string>& args) {
 
 namespace {
 
+/// A whole string as a number, or ParamError naming `flag` (no partial reads: "40.5" is not
+/// an integer, "1x" not a number).
+template <class T>
+T parse_number(const std::string& flag, const std::string& list, const std::string& item,
+               const std::string& what) {
+  T value{};
+  const char* end = item.data() + item.size();
+  const auto [ptr, ec] = std::from_chars(item.data(), end, value);
+  if (item.empty() || ec != std::errc() || ptr != end)
+    throw ParamError(flag, list, fmt::format("'{}' is not {}", item, what));
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value))
+      throw ParamError(flag, list, fmt::format("'{}' is not a finite number", item));
+  return value;
+}
+
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');)
     out.push_back(item);
   return out;
+}
+
+/// -j: at least 1, at most jobs_max (threads and processes beyond that only thrash).
+void check_jobs(int jobs) {
+  constexpr int jobs_max = 1024;
+  if (jobs < 1 || jobs > jobs_max)
+    throw ParamError("-j", std::to_string(jobs), fmt::format("must lie in [1, {}]", jobs_max));
+}
+
+/// A flag given twice on the command line is refused (a --config file's values may be
+/// overridden once by the command line; --sweep is meant to repeat).
+void refuse_repeated_flags(const std::vector<std::string>& args) {
+  std::set<std::string> seen;
+  for (const auto& a : args) {
+    if (a.rfind("--", 0) != 0 || a == "--")
+      continue;
+    const std::string name = a.substr(0, a.find('='));
+    if (name == "--sweep")
+      continue;
+    if (!seen.insert(name).second)
+      throw ParamError(name, "is given more than once (a flag may be given once; flags given "
+                             "with --config may be overridden once)");
+  }
 }
 
 /// The evolve flags given to converge/sweep; refuses those the study sets itself.
@@ -289,36 +351,32 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
              const std::vector<std::string>& evolve_args) {
   ConvergeOptions options = options_in;
   options.N.clear();
-  for (const auto& n : split_list(N_list)) {
-    try {
-      options.N.push_back(std::stoi(n));
-    } catch (const std::exception&) {
-      throw ParamError("--N", N_list, "must be a comma-separated list of cell counts");
-    }
-  }
+  for (const auto& n : split_list(N_list))
+    options.N.push_back(parse_number<int>("--N", N_list, n, "a whole number of cells"));
   if (!factors.empty()) { // a base N and factors: N_k = round(N * f_k)
     if (options.N.size() != 1)
       throw ParamError("--factors", factors, "needs a single base --N");
     const int base_N = options.N.front();
     options.N.clear();
     for (const auto& f : split_list(factors)) {
-      double factor = 0;
-      try {
-        factor = std::stod(f);
-      } catch (const std::exception&) {
-        throw ParamError("--factors", factors, "must be a comma-separated list of numbers");
-      }
+      const double factor = parse_number<double>("--factors", factors, f, "a number");
       if (!(factor > 0))
         throw ParamError("--factors", factors, "factors must be > 0");
-      options.N.push_back(static_cast<int>(std::lround(base_N * factor)));
+      const double n = base_N * factor;
+      if (std::abs(n - std::round(n)) > 1e-9 * n || n > 1e7)
+        throw ParamError(
+            "--factors", factors,
+            fmt::format("--N {} x {} = {} is not a whole number of cells", base_N, f, n));
+      options.N.push_back(static_cast<int>(std::lround(n)));
     }
   }
   options.fields = split_list(fields);
   options.scaled_times.clear();
   for (const auto& t : split_list(times))
-    options.scaled_times.push_back(std::stod(t));
-  if (options.jobs < 1)
-    throw ParamError("-j", std::to_string(options.jobs), "must be at least 1");
+    options.scaled_times.push_back(parse_number<double>("--scaled-times", times, t, "a time"));
+  if (!std::isfinite(options.order) || options.order <= 0.0)
+    throw ParamError("--order", fmt::format("{}", options.order), "must be a finite number > 0");
+  check_jobs(options.jobs);
   Params base = parse_evolve_args(evolve_args);
   base.N = options.N.front(); // the first member; each member sets its own
   base.out = options.out;
@@ -401,6 +459,7 @@ int run_cli(int argc, char** argv) {
 
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
+    refuse_repeated_flags(args);
     args = expand_config(args);
     std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
     app.parse(args);
@@ -427,8 +486,7 @@ int run_cli(int argc, char** argv) {
       return converge(converge_options, N_list, factors, fields, scaled_times,
                       pass_through(*converge_cmd, {"N", "out", "force"}));
     if (sweep_cmd->parsed()) {
-      if (sweep_options.jobs < 1)
-        throw ParamError("-j", std::to_string(sweep_options.jobs), "must be at least 1");
+      check_jobs(sweep_options.jobs);
       const auto evolve_args = pass_through(*sweep_cmd, {"out", "force"});
       parse_evolve_args(evolve_args); // common flags must parse before anything runs
       return run_sweep(sweep_options, evolve_args);

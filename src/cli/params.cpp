@@ -29,7 +29,8 @@ constexpr double eta_dt_max = 2.78;
 constexpr int N_max = 10'000'000;
 /// Most time steps accepted in one run (a typo in --tmax or --dt-series, not a real run).
 constexpr double steps_max = 1e9;
-constexpr double rows_max = 1e7; ///< rows of timeseries.dat (at most about 3 GB)
+constexpr double rows_max = 1e7;
+constexpr double rmax_over_M_max = 1e6; ///< rows of timeseries.dat (at most about 3 GB)
 
 /// The names a choice flag accepts and what each stands for: one table serves the validation,
 /// its message and the conversion, so they cannot drift apart.
@@ -110,6 +111,17 @@ void validate(const Params& p) {
                                  8.0 * 9 * 6 * p.N / 1e9, N_max));
   require_positive("--M", p.M);
   require_positive("--rmax", p.rmax);
+  // Everything scales with M; an outer boundary beyond 1e6 M only overflows the grid's map.
+  if (p.rmax > rmax_over_M_max * p.M) {
+    if (p.M < 1e-3 || p.M > 1e3)
+      throw ParamError("--M", num(p.M),
+                       fmt::format("gives --rmax / M = {:.3g}, above {:.0e}: lengths are in units "
+                                   "of M, so keep M of order 1",
+                                   p.rmax / p.M, rmax_over_M_max));
+    throw ParamError(
+        "--rmax", num(p.rmax),
+        fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
+  }
   if (p.grid != "uniform" && p.grid != "sinh")
     throw ParamError("--grid", p.grid, "must be 'uniform' or 'sinh'");
   if (p.grid == "sinh") {
@@ -250,6 +262,13 @@ void validate_output_dir(const Params& p) {
     parent = parent.parent_path();
   if (parent.empty() || !fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK | X_OK))
     throw ParamError("--out", p.out, "cannot be created: parent directory is not writable");
+}
+
+void create_output_dir(const std::string& flag, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw ParamError(flag, dir.string(), "cannot be created: " + ec.message());
 }
 
 Grid make_grid(const Params& p) {

@@ -5,6 +5,7 @@
 #include "grid/grid.hpp"
 #include "initial_data/initial_data.hpp"
 
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -74,6 +75,9 @@ class ParamError : public std::runtime_error {
 public:
   ParamError(const std::string& flag, const std::string& value, const std::string& why)
       : std::runtime_error(flag + " = " + value + " is invalid: " + why), flag_(flag) {}
+  /// "flag: message", for errors that are not about one value.
+  ParamError(const std::string& flag, const std::string& message)
+      : std::runtime_error(flag + ": " + message), flag_(flag) {}
   const std::string& flag() const { return flag_; }
 
 private:
@@ -92,6 +96,10 @@ std::vector<std::string> warnings(const Params& p);
 /// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
 /// --force; not writable). Creates nothing.
 void validate_output_dir(const Params& p);
+
+/// create_directories(dir), or ParamError naming `flag` and the reason (no filesystem_error
+/// text leaks out).
+void create_output_dir(const std::string& flag, const std::filesystem::path& dir);
 
 // Conversions of the validated parameters into the pieces the code uses.
 Grid make_grid(const Params& p);

@@ -90,7 +90,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   for (const auto& name : options.fields)
     fields.push_back(*var_from_name(name));
 
-  fs::create_directories(options.out);
+  create_output_dir("--out", options.out);
   std::vector<MemberRecord> records(m);
   std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
@@ -99,7 +99,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       MemberRecord& rec = records[k];
       try {
         const Params& p = members[k];
-        fs::create_directories(p.out);
+        create_output_dir("--out", p.out);
         Simulation sim(p);
         sim.on_series = [&](Simulation& s) {
           const DerivedProfiles d = derived_profiles(s.state(), s.grid());

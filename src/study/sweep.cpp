@@ -20,6 +20,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <set>
 #include <spawn.h>
 #include <sstream>
 #include <sys/wait.h>
@@ -236,9 +237,38 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     axes.push_back(parse_sweep_axis(s));
   if (axes.empty())
     throw ParamError("--sweep", "''", "give at least one flag=values list");
+  {
+    std::set<std::string> flags; // a flag on two axes would mislabel the members
+    for (const auto& axis : axes)
+      for (const auto& flag : axis.flags)
+        if (!flags.insert(flag).second)
+          throw ParamError("--sweep", flag, "is swept more than once (one axis per flag)");
+  }
   if (options.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
   const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
+  // A value common to all members that no member can run with is a usage error: refused
+  // before anything is launched or written.
+  {
+    std::string first_error;
+    bool any_valid = false;
+    for (const auto& m : members) {
+      try {
+        std::vector<std::string> args(m.args.begin() + 1, m.args.end());
+        Params p = parse_evolve_args(args);
+        resolve_defaults(p);
+        validate(p);
+        any_valid = true;
+        break;
+      } catch (const ParamError& e) {
+        if (first_error.empty())
+          first_error = e.what();
+      }
+    }
+    if (!any_valid && !first_error.empty())
+      throw ParamError("--sweep", fmt::format("{}", fmt::join(options.sweeps, " ")),
+                       "no member is valid: " + first_error);
+  }
   const std::string exe = fs::canonical("/proc/self/exe").string();
 
   if (!options.emit_tasks.empty()) {
@@ -257,7 +287,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
 
   const fs::path dir(options.out);
-  fs::create_directories(dir / "logs");
+  create_output_dir("--out", dir / "logs");
   install_stop_handlers();
   std::atomic<std::size_t> next{0};
   std::mutex mutex;

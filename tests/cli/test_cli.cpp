@@ -59,8 +59,11 @@ int count_lines(const std::string& s) {
 /// A refused run: non-zero exit, one line on stderr that names `flag`, no output directory.
 void check_refused(const std::string& args, const std::string& flag) {
   const fs::path out = scratch("out");
-  const Result r = run("evolve --tmax 0 --out " + out.string() + " " + args);
+  const std::string tmax = args.find("--tmax") == std::string::npos ? "--tmax 0 " : "";
+  const Result r = run("evolve " + tmax + "--out " + out.string() + " " + args);
   INFO("args: " << args << "\nstderr: " << r.err);
+  if (flag != "more than once")
+    CHECK(r.err.find("more than once") == std::string::npos); // refused for its own reason
   CHECK(r.status != 0);
   CHECK(count_lines(r.err) == 1);
   CHECK(r.err.find(flag) != std::string::npos);
@@ -259,4 +262,56 @@ TEST_CASE("a write that fails (file-size limit) stops the run with a message nam
   CHECK(err.find("profiles.dat") != std::string::npos);
   fs::remove_all(out);
   fs::remove(out.string() + ".err");
+}
+
+namespace {
+
+/// A refused study command (`cmd` is the whole command line after the executable, with --out
+/// given as OUT): exit status 2, one line naming `flag`, nothing written.
+void check_study_refused(const std::string& cmd, const std::string& flag) {
+  const fs::path out = scratch("study_out");
+  std::string line = cmd;
+  line.replace(line.find("OUT"), 3, out.string());
+  const Result r = run(line);
+  INFO("command: " << line << "\nstderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find(flag) != std::string::npos);
+  CHECK(r.err.find("what()") == std::string::npos); // no leaked exception texts
+  CHECK(r.err.find("stod") == std::string::npos);
+  CHECK(r.err.find("filesystem error") == std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
+
+} // namespace
+
+TEST_CASE("input guards: lists, repeats, config values, sweep axes, -j, misleading messages") {
+  check_study_refused("converge --N 40.5,80,160 --tmax 1 --out OUT", "--N");
+  check_study_refused("converge --N 40 --factors 1,1.5,2.01 --tmax 1 --out OUT", "--factors");
+  check_study_refused("converge --N 40,80,160 --order nan --tmax 1 --out OUT", "--order");
+  check_study_refused("converge --N 40,80,160 --scaled-times 1,x --tmax 1 --out OUT",
+                      "--scaled-times");
+  check_study_refused("converge --N 40,80,160 -j 100000 --tmax 1 --out OUT", "-j");
+  check_study_refused("sweep -j 100000 --sweep N=100,200 --tmax 0 --out OUT", "-j");
+  check_study_refused("sweep --sweep cfl=0.2,0.3 --sweep cfl=0.25 --tmax 0 --out OUT", "cfl");
+  check_study_refused("sweep --sweep N=100,200 --cfl 7 --tmax 0 --out OUT", "--cfl");
+  check_study_refused("sweep --sweep N=100 --tmax 0 --out /etc/passwd/OUT", "--out");
+  check_refused("--N 100 --N 200", "more than once");
+  check_refused("--rmax 1e308", "--rmax");
+  check_refused("--M 1e-300", "--M");
+  check_refused("--rmax ''", "--rmax");
+  check_study_refused("evolve --tmax 100 --dt-series 1e-10 --out OUT", "--dt-series");
+  const fs::path cfg = scratch("guards.toml");
+  std::ofstream(cfg) << "force = 7\n";
+  check_refused("--config " + cfg.string(), "force");
+  std::ofstream(cfg) << "\x01\x02\xff = 3\n";
+  const Result r =
+      run("evolve --tmax 0 --config " + cfg.string() + " --out " + scratch("o").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("\\x01\\x02\\xff") != std::string::npos); // quoted, not echoed raw
+  CHECK(r.err.find('\x01') == std::string::npos);
+  // a config value overridden once on the command line is not a repeat
+  std::ofstream(cfg) << "N = 100\n";
+  CHECK(run("evolve --tmax 0 --config " + cfg.string() + " --N 120 --print-config").status == 0);
+  fs::remove(cfg);
 }
