@@ -15,6 +15,8 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <variant>
@@ -57,6 +59,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"tmax", &Params::tmax, "Time", "final time (M); 0 writes the initial data only"},
       {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat (M)"},
       {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat (M)"},
+      {"checkpoint-every", &Params::checkpoint_every, "Output",
+       "simulated time (M) between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
+       "(0: none; SIGTERM/SIGINT always write one)"},
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms (M)"},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
        "outer radius of the exterior norms (M); default min(10 M, rmax/2)"},
@@ -137,6 +142,8 @@ void add_options(CLI::App& app, Params& p) {
   }
 }
 
+int run_and_report(Simulation& sim, Output& out, const Params& p);
+
 int evolve(Params p, bool print_config) {
   resolve_defaults(p);
   validate(p);
@@ -158,6 +165,13 @@ int evolve(Params p, bool print_config) {
     cfg << header_text("") << config;
   }
   Output out(dir, config + sim.run_facts());
+  sim.checkpoint_config = config;
+  return run_and_report(sim, out, p);
+}
+
+/// Runs `sim` into `out`; says how it ended on stderr and in timeseries.dat; returns the exit
+/// status (0, 3 stopped, 128 + n interrupted by signal n, 1 a failed write).
+int run_and_report(Simulation& sim, Output& out, const Params& p) {
   install_stop_handlers();
   const auto start = std::chrono::steady_clock::now();
   // How the run ended goes to stderr and, as the last line, into timeseries.dat.
@@ -189,6 +203,63 @@ int evolve(Params p, bool print_config) {
   fmt::print(stderr, "gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n",
              sim.time(), wall, sim.schedule().n_steps, sim.rhs().evaluations());
   return 0;
+}
+
+/// The configuration text without the lines a resumed run may change (tmax; out and force).
+std::string without_resumable(const std::string& config) {
+  std::istringstream in(config);
+  std::string kept;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("tmax = ", 0) != 0 && line.rfind("out = ", 0) != 0
+        && line.rfind("force = ", 0) != 0)
+      kept += line + "\n";
+  return kept;
+}
+
+int resume(const std::string& dir_name, std::optional<double> tmax) {
+  namespace fs = std::filesystem;
+  const fs::path dir(dir_name);
+  if (!fs::is_regular_file(dir / "config.toml"))
+    throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
+  if (!fs::is_regular_file(dir / "checkpoint.bin"))
+    throw ParamError("DIR", dir_name,
+                     "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
+                     "SIGTERM/SIGINT)");
+  Params p = parse_evolve_args({"--config", (dir / "config.toml").string()});
+  if (tmax)
+    p.tmax = *tmax;
+  p.out = dir_name;
+  resolve_defaults(p);
+  validate(p);
+  Checkpoint c;
+  try {
+    c = read_checkpoint(dir / "checkpoint.bin");
+  } catch (const CheckpointError& e) {
+    throw ParamError("DIR", dir_name, e.what());
+  }
+  const std::string config = config_text(p);
+  if (without_resumable(config) != without_resumable(c.config))
+    throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
+  if (p.tmax < c.t)
+    throw ParamError("--tmax", fmt::format("{}", p.tmax),
+                     fmt::format("is before the checkpoint at t = {}", c.t));
+  Simulation sim(p);
+  try {
+    sim.restore(c);
+  } catch (const CheckpointError& e) {
+    throw ParamError("DIR", dir_name, e.what());
+  }
+  sim.show_progress = true;
+  sim.checkpoint_config = config;
+  {
+    const fs::path tmp = dir / "config.toml.tmp";
+    std::ofstream(tmp) << header_text("") << config;
+    fs::rename(tmp, dir / "config.toml");
+  }
+  fmt::print(stderr, "gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step,
+             p.tmax);
+  Output out(dir, config + sim.run_facts(), c.marks);
+  return run_and_report(sim, out, p);
 }
 
 } // namespace
@@ -253,7 +324,14 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
         throw ParamError("--config", path,
                          fmt::format("key '{}' must be true or false, not '{}'", key,
                                      printable(item.inputs.front())));
-      from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
+      // "--key=" with an empty value would take the next argument as its value: pass the
+      // empty value as a separate argument
+      if (item.inputs.front().empty()) {
+        from_file.push_back("--" + key);
+        from_file.push_back("");
+      } else {
+        from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
+      }
     }
   }
   // the subcommand name stays first
@@ -457,6 +535,16 @@ int run_cli(int argc, char** argv) {
   sweep_cmd->allow_extras();
   sweep_cmd->footer("Every other flag is an evolve flag, common to all members.");
 
+  // resume: continue a run from its checkpoint
+  std::string resume_dir;
+  double resume_tmax = 0.0;
+  CLI::App* resume_cmd = app.add_subcommand(
+      "resume", "continue a run in DIR from DIR/checkpoint.bin, bit for bit as if uninterrupted");
+  resume_cmd->add_option("DIR", resume_dir, "output directory of the run")->required();
+  CLI::Option* resume_tmax_opt =
+      resume_cmd->add_option("--tmax", resume_tmax, "new final time (M); default: the run's own");
+  resume_cmd->footer("The output files are cut back to the checkpoint and continued.");
+
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
     refuse_repeated_flags(args);
@@ -482,6 +570,9 @@ int run_cli(int argc, char** argv) {
   try {
     if (evolve_cmd->parsed())
       return evolve(params, print_config);
+    if (resume_cmd->parsed())
+      return resume(resume_dir,
+                    resume_tmax_opt->count() > 0 ? std::optional(resume_tmax) : std::nullopt);
     if (converge_cmd->parsed())
       return converge(converge_options, N_list, factors, fields, scaled_times,
                       pass_through(*converge_cmd, {"N", "out", "force"}));

@@ -164,6 +164,9 @@ void validate(const Params& p) {
     throw ParamError("--tmax", num(p.tmax), "must be >= 0");
   require_positive("--dt-series", p.dt_series);
   require_positive("--dt-profiles", p.dt_profiles);
+  require_finite("--checkpoint-every", p.checkpoint_every);
+  if (p.checkpoint_every < 0.0)
+    throw ParamError("--checkpoint-every", num(p.checkpoint_every), "must be >= 0 (0: off)");
 
   require_finite("--norm-rmin", p.norm_rmin);
   require_finite("--norm-rmax", p.norm_rmax);

@@ -42,6 +42,7 @@ struct Params {
   double tmax = 10.0;
   double dt_series = 0.25;
   double dt_profiles = 5.0;
+  double checkpoint_every = 0.0; ///< simulated time between checkpoints (0: only on a signal)
   // diagnostics
   double norm_rmin = 1.0;
   double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)

@@ -190,11 +190,51 @@ void Simulation::check_finite() const {
   }
 }
 
+void Simulation::restore(const Checkpoint& c) {
+  if (c.u.size() != u_.size())
+    throw CheckpointError(
+        fmt::format("the checkpoint has {} values, this grid {}", c.u.size(), u_.size()));
+  if (c.dt != schedule_.dt)
+    throw CheckpointError(
+        fmt::format("the checkpoint's step {} is not this run's {}", c.dt, schedule_.dt));
+  if (c.step > schedule_.n_steps)
+    throw CheckpointError(
+        fmt::format("the checkpoint at t = {} lies beyond --tmax = {}", c.t, params_.tmax));
+  u_ = c.u;
+  t_ = c.t;
+  step_ = c.step;
+  k_series_ = c.k_series;
+  k_profiles_ = c.k_profiles;
+  rhs_.set_horizon_radius(c.h_AH);
+  rhs_.set_evaluations(c.evaluations);
+  had_horizon_ = c.had_horizon;
+  reported_ = c.reported;
+  resumed_ = true;
+}
+
+Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH_before_rhs) const {
+  Checkpoint c;
+  c.config = checkpoint_config;
+  c.step = step_;
+  c.t = t_;
+  c.dt = schedule_.dt;
+  c.k_series = k_series_;
+  c.k_profiles = k_profiles_;
+  c.h_AH = h_AH_before_rhs;
+  c.had_horizon = had_horizon_;
+  c.reported = reported_;
+  c.evaluations = evaluations_before_rhs_;
+  c.marks = out.marks();
+  c.u = u_;
+  return c;
+}
+
 void Simulation::run(Output* out) {
   const Schedule& s = schedule_;
   const double t_end = params_.tmax;
   // Output times: k dt_series, k dt_profiles and tmax, each written once (to round-off).
-  long k_series = 1, k_profiles = 1;
+  long& k_series = k_series_;
+  long& k_profiles = k_profiles_;
   auto next_series = [&] {
     return std::min(static_cast<double>(k_series) * params_.dt_series, t_end);
   };
@@ -248,17 +288,28 @@ void Simulation::run(Output* out) {
     }
   };
 
-  check_finite();
-  update_held_horizon();
-  write(true, true);
-  if (s.n_steps == 0)
+  if (!resumed_) {
+    check_finite();
+    update_held_horizon();
+    write(true, true);
+  }
+  if (step_ >= s.n_steps)
     return;
+  // Checkpoints at full steps (never after the shortened last one, so that a resumed run with
+  // a later tmax steps exactly as an uninterrupted one).
+  const double every = params_.checkpoint_every;
+  double next_checkpoint = every > 0.0 ? (std::floor(t_ / every + 1e-9) + 1.0) * every
+                                       : std::numeric_limits<double>::infinity();
+  auto save = [&](const std::optional<double>& h_AH) {
+    if (out)
+      write_checkpoint(out->dir() / "checkpoint.bin", checkpoint(*out, h_AH));
+  };
   const auto start = std::chrono::steady_clock::now();
   auto last_report = start;
   const bool progress = show_progress && ::isatty(STDERR_FILENO);
   dudt_now_.resize(u_.size());
   rhs_(u_, dudt_now_, t_); // RK4's first stage of the first step
-  for (long n = 1; n <= s.n_steps; ++n) {
+  for (long n = step_ + 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
     const double t_prev = t_;
     // Keep the step's start for output between the steps (cheap copies, only when needed).
@@ -270,14 +321,25 @@ void Simulation::run(Output* out) {
     }
     step(t_next - t_, dudt_now_);
     t_ = t_next; // no accumulated round-off in t
+    step_ = n;
     check_finite();
     if (ah_every_ > 0 && n % ah_every_ == 0)
       update_held_horizon();
+    // what a checkpoint records of the RHS before this evaluation (resume repeats it)
+    const std::optional<double> h_AH_before_rhs = rhs_.horizon_radius();
+    evaluations_before_rhs_ = rhs_.evaluations();
     if (!last || dense)
       rhs_(u_, dudt_now_, t_); // the next step's first stage, and d_t u for the interpolant
     write_due(t_prev, dense);
-    if (const int signal = stop_signal(); signal != 0 && !last)
+    if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
+      save(h_AH_before_rhs);
+      while (next_checkpoint <= t_ + 1e-9 * s.dt)
+        next_checkpoint += every;
+    }
+    if (const int signal = stop_signal(); signal != 0 && !last) {
+      save(h_AH_before_rhs); // the run can be resumed from here
       throw Interrupted(signal, t_);
+    }
     if (progress && (n % 64 == 0 || last)) {
       const auto now = std::chrono::steady_clock::now();
       if (last || now - last_report > std::chrono::milliseconds(500)) {

@@ -4,6 +4,7 @@
 
 #include "cli/params.hpp"
 #include "diagnostics/constraints.hpp"
+#include "evolution/checkpoint.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
 
@@ -90,6 +91,14 @@ public:
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
   bool show_progress = false;
 
+  /// The configuration text stored in checkpoints (config.toml of the run).
+  std::string checkpoint_config;
+  /// Continue from `c` (same parameters but possibly tmax): the next run() takes up at its
+  /// step, bit for bit as the uninterrupted run. Throws CheckpointError on a mismatch.
+  void restore(const Checkpoint& c);
+  /// The checkpoint of the current state (with the output marks of `out`).
+  Checkpoint checkpoint(Output& out, const std::optional<double>& h_AH_before_rhs) const;
+
   /// Facts of this run for the output headers, as "key = value" lines: the time step dt, the
   /// number of steps to tmax and the smallest cell width dr-min.
   std::string run_facts() const;
@@ -135,8 +144,12 @@ private:
   double t_ = 0.0;
   Schedule schedule_;
   boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers
-  long ah_every_;            ///< 0: every substage; n >= 1: every n steps
-  bool had_horizon_ = false; ///< for messages when the horizon appears/disappears
+  long ah_every_;                      ///< 0: every substage; n >= 1: every n steps
+  long step_ = 0;                      ///< steps taken
+  long k_series_ = 1, k_profiles_ = 1; ///< next output times k dt_series, k dt_profiles
+  bool resumed_ = false;               ///< restore() was called: run() continues, no initial output
+  std::uint64_t evaluations_before_rhs_ = 0; ///< RHS count before the current step's k1
+  bool had_horizon_ = false;                 ///< for messages when the horizon appears/disappears
   bool reported_ = false;
 };
 

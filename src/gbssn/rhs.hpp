@@ -168,6 +168,7 @@ public:
   const Grid& grid() const { return *grid_; }
   const RhsParams& params() const { return params_; }
   std::uint64_t evaluations() const { return evaluations_; }
+  void set_evaluations(std::uint64_t n) { evaluations_ = n; } ///< for a resumed run
 
   /// The horizon radius h_AH used by the horizon shift: set between searches (held mode), or
   /// found by the last evaluation (substage mode). nullopt: no horizon, beta_H = 0.

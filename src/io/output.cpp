@@ -8,6 +8,8 @@
 #include <cstring>
 #include <system_error>
 
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -42,6 +44,18 @@ std::string header_text(const std::string& parameter_header) {
   return text;
 }
 
+namespace {
+
+std::string header_with_columns(const std::string& parameter_header,
+                                const std::vector<std::string>& columns) {
+  std::string text = header_text(parameter_header) + "#";
+  for (const auto& c : columns)
+    text += " " + c;
+  return text + "\n";
+}
+
+} // namespace
+
 DataFile::DataFile(const std::filesystem::path& path, const std::string& parameter_header,
                    const std::vector<std::string>& columns)
     : path_(path) {
@@ -49,12 +63,50 @@ DataFile::DataFile(const std::filesystem::path& path, const std::string& paramet
   if (!file_)
     throw OutputError(
         fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(errno)));
-  std::string text = header_text(parameter_header) + "#";
-  for (const auto& c : columns)
-    text += " " + c;
-  text += "\n";
+  const std::string text = header_with_columns(parameter_header, columns);
   std::fputs(text.c_str(), file_);
+  header_size_ = text.size();
   flush();
+}
+
+DataFile::DataFile(const std::filesystem::path& path, const std::string& parameter_header,
+                   const std::vector<std::string>& columns, std::uint64_t old_header,
+                   std::uint64_t keep)
+    : path_(path) {
+  // the old body, [old_header, keep), under the new header; written to a temporary file and
+  // renamed, so that a failure leaves the old file as it was
+  std::string body;
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw OutputError(fmt::format("cannot read {} to resume", path.string()));
+    std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (all.size() < keep || keep < old_header)
+      throw OutputError(fmt::format("{} is shorter than at the checkpoint", path.string()));
+    body = all.substr(old_header, keep - old_header);
+  }
+  const std::string head = header_with_columns(parameter_header, columns);
+  const std::filesystem::path tmp = path.string() + ".resume";
+  file_ = std::fopen(tmp.c_str(), "w");
+  if (!file_)
+    throw OutputError(
+        fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
+  write(head.data(), head.size());
+  write(body.data(), body.size());
+  header_size_ = head.size();
+  flush();
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec)
+    throw OutputError(fmt::format("cannot replace {}: {}", path.string(), ec.message()));
+}
+
+std::uint64_t DataFile::size() {
+  flush();
+  const long pos = std::ftell(file_);
+  if (pos < 0)
+    throw OutputError(fmt::format("cannot tell the size of {}", path_.string()));
+  return static_cast<std::uint64_t>(pos);
 }
 
 DataFile::~DataFile() {
@@ -68,25 +120,48 @@ void DataFile::flush() {
                                   errno != 0 ? std::strerror(errno) : "write error"));
 }
 
+namespace {
+
+const char* const series_legend =
+    "timeseries.dat: *_L2 norms over the whole grid, *_L2_ext over the fixed coordinate region "
+    "norm-rmin <= r <= norm-rmax (the same rule before and after a horizon forms), weighted by "
+    "cell width; *_L2_R over the areal-radius window norm-Rmin M <= R <= norm-Rmax M (the same "
+    "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
+    "R = norm-Rint M, weighted by cell width; r_ah, M_ah: apparent horizon (NaN if none), "
+    "M_ah_err = M_ah - M\n";
+const char* const horizon_legend =
+    "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
+    "with Theta_+ < 0 inside; NaN if none); n_roots counts every zero of Theta_+; r_root2/3, "
+    "R_root2/3 are the next zeros inwards (NaN if none)\n";
+
+} // namespace
+
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
-    : series_(dir / "timeseries.dat",
-              parameter_header
-                  + "timeseries.dat: *_L2 norms over the whole grid, *_L2_ext over the fixed "
-                    "coordinate region norm-rmin <= r <= norm-rmax (the same rule before and after "
-                    "a horizon forms), weighted by cell width; *_L2_R over the areal-radius window "
-                    "norm-Rmin M <= R <= norm-Rmax M (the same place in every gauge), weighted by "
-                    "areal width |dR|; H_L2_int from the puncture out to R = norm-Rint M, weighted "
-                    "by cell width; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - "
-                    "M\n",
-              series_columns()),
+    : dir_(dir),
+      series_(dir / "timeseries.dat", parameter_header + series_legend, series_columns()),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns()),
-      horizons_(dir / "horizon.dat",
-                parameter_header
-                    + "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost "
-                      "zero of Theta_+ with Theta_+ < 0 inside; NaN if none); n_roots counts every "
-                      "zero of Theta_+; r_root2/3, R_root2/3 are the next zeros inwards (NaN if "
-                      "none)\n",
-                horizon_columns()) {}
+      horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
+
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header,
+               const OutputMarks& m)
+    : dir_(dir), series_(dir / "timeseries.dat", parameter_header + series_legend, series_columns(),
+                         m.series_header, m.series),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns(), m.profiles_header,
+                m.profiles),
+      horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns(),
+                m.horizons_header, m.horizons),
+      first_block_(m.profiles <= m.profiles_header) {}
+
+OutputMarks Output::marks() {
+  OutputMarks m;
+  m.series = series_.size();
+  m.profiles = profiles_.size();
+  m.horizons = horizons_.size();
+  m.series_header = series_.header_size();
+  m.profiles_header = profiles_.header_size();
+  m.horizons_header = horizons_.header_size();
+  return m;
+}
 
 void Output::write_series(const SeriesRow& row) {
   series_.print("{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -47,6 +48,10 @@ class DataFile {
 public:
   DataFile(const std::filesystem::path& path, const std::string& parameter_header,
            const std::vector<std::string>& columns);
+  /// Continues a file cut back to `keep` bytes, whose first `old_header` bytes are replaced by
+  /// the new header (a resumed run records its own parameters).
+  DataFile(const std::filesystem::path& path, const std::string& parameter_header,
+           const std::vector<std::string>& columns, std::uint64_t old_header, std::uint64_t keep);
   ~DataFile();
   DataFile(const DataFile&) = delete;
   DataFile& operator=(const DataFile&) = delete;
@@ -59,10 +64,20 @@ public:
   void write(const char* data, std::size_t size) { std::fwrite(data, 1, size, file_); }
   /// Flushes and throws OutputError if any write since the last check failed.
   void flush();
+  /// Bytes written so far (after a flush), and the header's length.
+  std::uint64_t size();
+  std::uint64_t header_size() const { return header_size_; }
 
 private:
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
+  std::uint64_t header_size_ = 0;
+};
+
+/// Where each output file stood at a checkpoint (bytes), and its header's length.
+struct OutputMarks {
+  std::uint64_t series = 0, profiles = 0, horizons = 0;
+  std::uint64_t series_header = 0, profiles_header = 0, horizons_header = 0;
 };
 
 class Output {
@@ -70,6 +85,13 @@ public:
   /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
   /// one "key = value" per line.
   Output(const std::filesystem::path& dir, const std::string& parameter_header);
+  /// A resumed run: the files of `dir` cut back to `marks`, with the new header.
+  Output(const std::filesystem::path& dir, const std::string& parameter_header,
+         const OutputMarks& marks);
+
+  const std::filesystem::path& dir() const { return dir_; }
+  /// The current marks (flushes).
+  OutputMarks marks();
 
   void write_series(const SeriesRow& row);
   /// `beta_H` is the horizon-adjusting shift on every point (the column `beta` is the full
@@ -82,6 +104,7 @@ public:
   void write_end(const std::string& how);
 
 private:
+  std::filesystem::path dir_;
   DataFile series_;
   DataFile profiles_;
   DataFile horizons_;

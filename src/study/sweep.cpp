@@ -314,7 +314,13 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       if (status == "ok") {
         const auto start = std::chrono::steady_clock::now();
         const fs::path log = dir / "logs" / (m.name + ".log");
-        const int rc = spawn_and_wait(exe, m.args, log);
+        // a member stopped with a checkpoint (interrupted, or killed) continues from it
+        const fs::path member_dir = dir / m.name;
+        const bool resumable = fs::is_regular_file(member_dir / "checkpoint.bin")
+                               && fs::is_regular_file(member_dir / "config.toml");
+        const std::vector<std::string> args =
+            resumable ? std::vector<std::string>{"resume", member_dir.string()} : m.args;
+        const int rc = spawn_and_wait(exe, args, log);
         wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (rc > 128 && stop_signal() != 0) {
           status = "interrupted";

@@ -228,6 +228,7 @@ TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, ex
   const std::string text = slurp(out / "timeseries.dat");
   CHECK(text.substr(text.rfind("# end:")).find("# end: stopped: interrupted by SIGTERM at t = ")
         == 0);
+  CHECK(fs::exists(out / "checkpoint.bin")); // written on the signal: `resume` continues
   // every profile row is whole: 17 columns
   std::ifstream profiles(out / "profiles.dat");
   int rows = 0;
@@ -314,4 +315,54 @@ TEST_CASE("input guards: lists, repeats, config values, sweep axes, -j, misleadi
   std::ofstream(cfg) << "N = 100\n";
   CHECK(run("evolve --tmax 0 --config " + cfg.string() + " --N 120 --print-config").status == 0);
   fs::remove(cfg);
+}
+
+namespace {
+
+/// The file without its `out = ...` header line (the directory's own name).
+std::string without_out(const fs::path& file) {
+  std::istringstream in(slurp(file));
+  std::string kept;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("# out = ", 0) != 0 && line.rfind("out = ", 0) != 0)
+      kept += line + "\n";
+  return kept;
+}
+
+} // namespace
+
+TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an uninterrupted one") {
+  const fs::path whole = scratch("whole"), parts = scratch("parts");
+  for (const std::string mode : {"substage", "4"}) {
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+    const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 400 --rmax 50 --rahA "
+                              "0.5 --rah0 0.6 --dt-series 0.3 --dt-profiles 2.5 "
+                              "--checkpoint-every 3 --ah-every "
+                              + mode;
+    REQUIRE(run(flags + " --tmax 20 --out " + whole.string()).status == 0);
+    REQUIRE(run(flags + " --tmax 10 --out " + parts.string()).status == 0);
+    // a kill mid-write: a cut line after the checkpoint and a stale temporary checkpoint
+    std::ofstream(parts / "profiles.dat", std::ios::app) << "1.25 3.5e-0";
+    std::ofstream(parts / "checkpoint.bin.tmp") << "garbage";
+    const Result r = run("resume " + parts.string() + " --tmax 20");
+    INFO(mode << ": " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("resuming") != std::string::npos);
+    for (const char* f : {"timeseries.dat", "profiles.dat", "horizon.dat", "config.toml"})
+      CHECK(without_out(whole / f) == without_out(parts / f));
+  }
+  // a checkpoint of another configuration, a missing one, and --tmax before it are refused
+  const Result before = run("resume " + parts.string() + " --tmax 1");
+  CHECK(before.status == 2);
+  CHECK(before.err.find("--tmax") != std::string::npos);
+  fs::remove(parts / "checkpoint.bin");
+  const Result missing = run("resume " + parts.string());
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find("checkpoint") != std::string::npos);
+  fs::copy_file(whole / "checkpoint.bin", parts / "checkpoint.bin");
+  std::ofstream(parts / "config.toml", std::ios::app) << "N = 200\n";
+  CHECK(run("resume " + parts.string()).status == 2);
+  fs::remove_all(whole);
+  fs::remove_all(parts);
 }

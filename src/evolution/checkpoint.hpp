@@ -1,0 +1,40 @@
+// Checkpoints: everything a run needs to continue bit for bit from a step boundary (the state,
+// the step, the horizon shift's held h_AH, which is also the finder's seed, the output cadence
+// counters and where each output file stood), written atomically into the output directory.
+#pragma once
+
+#include "gbssn/state.hpp"
+#include "io/output.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace gbssn1d {
+
+struct Checkpoint {
+  std::string config;    ///< the run's configuration (config.toml text)
+  std::int64_t step = 0; ///< steps taken; t = step dt
+  double t = 0.0, dt = 0.0;
+  std::int64_t k_series = 1, k_profiles = 1; ///< the next output times are k dt_series, ...
+  std::optional<double> h_AH; ///< held h_AH (the finder's seed) before the next RHS call
+  bool had_horizon = false, reported = false;
+  std::uint64_t evaluations = 0; ///< RHS evaluations so far
+  OutputMarks marks;
+  State u;
+};
+
+/// A checkpoint file that cannot be read, or belongs to another run.
+class CheckpointError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Writes `c` to `file` atomically: a temporary file, flushed to disk, then renamed over it.
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);
+/// Throws CheckpointError if the file is missing, truncated or not a checkpoint.
+Checkpoint read_checkpoint(const std::filesystem::path& file);
+
+} // namespace gbssn1d
