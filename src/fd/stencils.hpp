@@ -28,6 +28,19 @@ inline double d1_lopsided_minus(const double* f) {
   return (3.0 * f[1] + 10.0 * f[0] - 18.0 * f[-1] + 6.0 * f[-2] - f[-3]) * (1.0 / 12.0);
 }
 
+/// The sum of the two lopsided derivatives, times dx: d1_lopsided_plus + d1_lopsided_minus.
+/// Their difference is ko6 / 12, so each is (lopsided_sum +/- ko6 / 6) / 2: an upwind
+/// derivative costs one more stencil once ko6 is known (dissipation needs it anyway).
+inline double lopsided_sum(const double* f) {
+  return (f[3] - 6.0 * f[2] + 21.0 * f[1] - 21.0 * f[-1] + 6.0 * f[-2] - f[-3]) * (1.0 / 12.0);
+}
+
+/// advect() from lopsided_sum(f) and ko6(f), branch-free:
+///   v (S/2 + sign(v) ko6/24) = v S/2 + |v| ko6/24.
+inline double advect_from(double beta, double lopsided_sum, double ko6) {
+  return 0.5 * beta * lopsided_sum + (1.0 / 24.0) * (beta < 0.0 ? -beta : beta) * ko6;
+}
+
 /// Upwinded advection v f_x: lopsided towards the direction the flow comes from, times dx.
 /// The shift term beta d_r f of the equations is advection with velocity -beta, so the
 /// stencil leans towards +x where beta > 0.

@@ -22,12 +22,14 @@ struct StencilWeights {
 };
 
 /// d_x Delta^r (times dx) by the weighted stencil; `beta_gd`, `beta_full` give the upwind
-/// directions.
+/// directions; `ko6` is fd::ko6(f).
 [[gnu::always_inline]] inline double delta_derivative(const StencilWeights& w, const double* f,
-                                                      double beta_gd, double beta_full) {
-  const double plus = fd::d1_lopsided_plus(f), minus = fd::d1_lopsided_minus(f);
-  return w.centred * fd::d1_centred(f) + w.upwind_gd * (beta_gd > 0.0 ? plus : minus)
-         + w.upwind_full * (beta_full > 0.0 ? plus : minus);
+                                                      double beta_gd, double beta_full,
+                                                      double ko6) {
+  const double half_sum = 0.5 * fd::lopsided_sum(f), half_diff = (1.0 / 24.0) * ko6;
+  const double sign_gd = beta_gd > 0.0 ? 1.0 : -1.0, sign_full = beta_full > 0.0 ? 1.0 : -1.0;
+  return w.centred * fd::d1_centred(f) + w.upwind_gd * (half_sum + sign_gd * half_diff)
+         + w.upwind_full * (half_sum + sign_full * half_diff);
 }
 
 /// Pointers to the start of each variable's array, by name (passed by value, so that the
@@ -48,9 +50,15 @@ struct Rows {
   }
 };
 
-/// All of point_data, with the per-point grid factors passed in (the hot loop).
+/// The 6th differences of the fields at one point (fd::ko6), in registry order: shared by the
+/// upwind stencils (fd::advect_from) and the dissipation.
+using Ko6 = std::array<double, n_vars>;
+
+/// All of point_data, with the per-point grid factors passed in (the hot loop); `ko` receives
+/// the 6th differences.
 [[gnu::always_inline]] inline PointData gather(const Rows u, std::size_t i, double r, double inv_r,
-                                               double inv_dx, double inv_rx, double d2_fx) {
+                                               double inv_dx, double inv_rx, double d2_fx,
+                                               Ko6& ko) {
   const double d1_scale = inv_dx * inv_rx;
   const double d2_scale = inv_dx * inv_dx * inv_rx * inv_rx;
   const double* alpha = u.alpha + i;
@@ -99,42 +107,101 @@ struct Rows {
   p.dd_b = second(b);
 
   // beta d_r f, lopsided upwind; the map factor 1/r_x is positive, so the direction is that of
-  // the shift in x as well.
+  // the shift in x as well. Each upwind stencil is the lopsided sum and the 6th difference.
   const double beta_r = p.beta * d1_scale;
-  p.adv_alpha = fd::advect(beta_r, alpha);
-  p.adv_beta = fd::advect(beta_r, beta);
-  p.adv_B = fd::advect(beta_r, B);
-  p.adv_chi = fd::advect(beta_r, chi);
-  p.adv_a = fd::advect(beta_r, a);
-  p.adv_b = fd::advect(beta_r, b);
-  p.adv_K = fd::advect(beta_r, K);
-  p.adv_A_a = fd::advect(beta_r, A_a);
-  p.adv_Delta_r = fd::advect(beta_r, Delta_r);
+  auto advect = [&](Var v, const double* f) {
+    ko[index(v)] = fd::ko6(f);
+    return fd::advect_from(beta_r, fd::lopsided_sum(f), ko[index(v)]);
+  };
+  p.adv_alpha = advect(Var::alpha, alpha);
+  p.adv_beta = advect(Var::beta, beta);
+  p.adv_B = advect(Var::B, B);
+  p.adv_chi = advect(Var::chi, chi);
+  p.adv_a = advect(Var::a, a);
+  p.adv_b = advect(Var::b, b);
+  p.adv_K = advect(Var::K, K);
+  p.adv_A_a = advect(Var::A_a, A_a);
+  p.adv_Delta_r = advect(Var::Delta_r, Delta_r);
   return p;
 }
 
 } // namespace
 
 PointData point_data(const State& u, const Grid& grid, std::size_t i) {
+  Ko6 ko;
   return gather(Rows(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
-                grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i]);
+                grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i], ko);
 }
 
-GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {}
+namespace {
+
+/// f(r_i / w) on every point.
+std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& params) {
+  std::vector<double> f(grid.n_total());
+  for (std::size_t i = 0; i < f.size(); ++i)
+    f[i] = shift_profile(params.profile, grid.r()[i] / params.width); // odd
+  return f;
+}
+
+/// beta_H = f amplitude s^r (H3) on n points, and beta_full = beta_GD + beta_H if given; one
+/// loop per normal, so that each vectorises.
+template <ShiftNormal normal>
+void fill_horizon_shift(std::size_t n, const double* f, const double* chi, const double* a,
+                        double amplitude, double chi_smooth, double* beta_H,
+                        const double* beta_GD = nullptr, double* beta_full = nullptr) {
+  for (std::size_t i = 0; i < n; ++i) {
+    beta_H[i] = f[i] * amplitude * shift_normal(normal, chi[i], a[i], chi_smooth); // s^r even
+    if (beta_full)
+      beta_full[i] = beta_GD[i] + beta_H[i];
+  }
+}
+
+void fill_horizon_shift(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
+                        const double* a, double amplitude, double chi_smooth, double* beta_H,
+                        const double* beta_GD = nullptr, double* beta_full = nullptr) {
+  switch (normal) { // dispatched once per call
+  case ShiftNormal::conformal:
+    return fill_horizon_shift<ShiftNormal::conformal>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                      beta_GD, beta_full);
+  case ShiftNormal::smooth:
+    return fill_horizon_shift<ShiftNormal::smooth>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                   beta_GD, beta_full);
+  case ShiftNormal::unit:
+  default:
+    return fill_horizon_shift<ShiftNormal::unit>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                 beta_GD, beta_full);
+  }
+}
+
+} // namespace
+
+GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
+  if (params_.horizon_shift.active())
+    profile_ = profile_on(grid, params_.horizon_shift);
+}
 
 void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
                            std::optional<double> h_AH, std::vector<double>& beta_H, double t) {
   beta_H.assign(grid.n_total(), 0.0);
   if (!h_AH || params.A == 0.0)
     return;
-  const auto chi = field(u, grid, Var::chi);
-  const auto a = field(u, grid, Var::a);
   const double amplitude = params.strength(t) * (*h_AH - params.h);
-  for (std::size_t i = 0; i < grid.n_total(); ++i) {
-    const double f = shift_profile(params.profile, grid.r()[i] / params.width);      // odd
-    const double s_r = shift_normal(params.normal, chi[i], a[i], params.chi_smooth); // even
-    beta_H[i] = f * amplitude * s_r;                                                 // (H3)
-  }
+  fill_horizon_shift(params.normal, grid.n_total(), profile_on(grid, params).data(),
+                     field(u, grid, Var::chi).data(), field(u, grid, Var::a).data(), amplitude,
+                     params.chi_smooth, beta_H.data());
+}
+
+void GbssnRhs::split_shift(const State& u, double t) {
+  const HorizonShiftParams& hs = params_.horizon_shift;
+  const std::size_t n = grid_->n_total();
+  beta_H_.resize(n);
+  beta_full_.resize(n);
+  const auto beta_GD = field(u, *grid_, Var::beta);
+  // without a horizon beta_H = 0 (amplitude 0 keeps the same loop)
+  const double amplitude = h_AH_ ? hs.strength(t) * (*h_AH_ - hs.h) : 0.0;
+  fill_horizon_shift(hs.normal, n, profile_.data(), field(u, *grid_, Var::chi).data(),
+                     field(u, *grid_, Var::a).data(), amplitude, hs.chi_smooth, beta_H_.data(),
+                     beta_GD.data(), beta_full_.data());
 }
 
 void GbssnRhs::operator()(const State& u, State& dudt, double t) {
@@ -157,11 +224,7 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
         throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
       }
     }
-    horizon_shift_profile(u, *grid_, hs, h_AH_, beta_H_, t);
-    const auto beta_GD = field(u, *grid_, Var::beta);
-    beta_full_.resize(grid_->n_total());
-    for (std::size_t i = 0; i < beta_full_.size(); ++i)
-      beta_full_[i] = beta_GD[i] + beta_H_[i];
+    split_shift(u, t);
     using V = HorizonShiftParams::Variant;
     switch (hs.variant) { // dispatched once per call, not per point
     case V::consistent:
@@ -221,7 +284,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   // points.
 #pragma GCC ivdep
   for (std::size_t i = begin; i < end; ++i) {
-    PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i]);
+    Ko6 k6;
+    PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
     const double d1_scale = inv_dx * inv_rx[i];
     // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
     // beta_GD alone with the horizon shift (H2).
@@ -234,8 +298,10 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
     }
     // The two beta d_r Delta^r terms, each with its stencil (AdvectionParams).
     const double* Delta = in.Delta_r + i;
-    gd.adv_Delta_r = gd.beta * d1_scale * delta_derivative(driver_w, Delta, gd.beta, p.beta);
-    p.adv_Delta_r = p.beta * d1_scale * delta_derivative(delta_w, Delta, gd.beta, p.beta);
+    const double ko_Delta = k6[index(Var::Delta_r)];
+    gd.adv_Delta_r =
+        gd.beta * d1_scale * delta_derivative(driver_w, Delta, gd.beta, p.beta, ko_Delta);
+    p.adv_Delta_r = p.beta * d1_scale * delta_derivative(delta_w, Delta, gd.beta, p.beta, ko_Delta);
     Rhs rhs;
     if constexpr (with_horizon_shift) {
       using Variant = HorizonShiftParams::Variant;
@@ -251,20 +317,24 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       if constexpr (variant == Variant::delta_rhs_from_gd)
         rhs.Delta_r = rhs_Delta_r(p, metric_pieces(p), gd);
       const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
-      rhs.beta = 0.75 * p.B + shift_advection * fd::advect(p.beta * d1_scale, f);
+      k6[index(Var::beta)] = fd::ko6(f); // beta_GD is the evolved field
+      rhs.beta =
+          0.75 * p.B
+          + shift_advection
+                * fd::advect_from(p.beta * d1_scale, fd::lopsided_sum(f), k6[index(Var::beta)]);
     } else {
       rhs = gbssn_rhs(p, gauge, gd);
     }
     const double ko = ko_scale * inv_rx[i];
-    out_alpha[i] = rhs.alpha + ko * fd::ko6(in.alpha + i);
-    out_beta[i] = rhs.beta + ko * fd::ko6(beta_GD + i);
-    out_B[i] = rhs.B + ko * fd::ko6(in.B + i);
-    out_chi[i] = rhs.chi + ko * fd::ko6(in.chi + i);
-    out_a[i] = rhs.a + ko * fd::ko6(in.a + i);
-    out_b[i] = rhs.b + ko * fd::ko6(in.b + i);
-    out_K[i] = rhs.K + ko * fd::ko6(in.K + i);
-    out_A_a[i] = rhs.A_a + ko * fd::ko6(in.A_a + i);
-    out_Delta_r[i] = rhs.Delta_r + ko * fd::ko6(in.Delta_r + i);
+    out_alpha[i] = rhs.alpha + ko * k6[index(Var::alpha)];
+    out_beta[i] = rhs.beta + ko * k6[index(Var::beta)];
+    out_B[i] = rhs.B + ko * k6[index(Var::B)];
+    out_chi[i] = rhs.chi + ko * k6[index(Var::chi)];
+    out_a[i] = rhs.a + ko * k6[index(Var::a)];
+    out_b[i] = rhs.b + ko * k6[index(Var::b)];
+    out_K[i] = rhs.K + ko * k6[index(Var::K)];
+    out_A_a[i] = rhs.A_a + ko * k6[index(Var::A_a)];
+    out_Delta_r[i] = rhs.Delta_r + ko * k6[index(Var::Delta_r)];
   }
 }
 

@@ -183,11 +183,14 @@ private:
   void interior(const State& u, State& dudt) const;
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;
+  /// beta_H_ and beta_full_ = beta_GD + beta_H_ for the current h_AH_ (H3).
+  void split_shift(const State& u, double t);
 
   const Grid* grid_;
   RhsParams params_;
   std::uint64_t evaluations_ = 0;
   std::optional<double> h_AH_;
+  std::vector<double> profile_;            ///< f(r_i / w) on every point (fixed by the grid)
   std::vector<double> beta_H_, beta_full_; ///< scratch of the horizon shift
 };
 
