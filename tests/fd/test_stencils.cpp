@@ -80,3 +80,17 @@ TEST_CASE("stencils are not exact one degree higher (the tests can fail)") {
   const auto s6 = sample(c6, x0, h);
   CHECK(std::abs(fd::d2_centred(s6.centre()) / (h * h) - derivative(c6, x0, 2)) > 1e-6);
 }
+
+TEST_CASE("upwind stencils from the lopsided sum and the 6th difference equal the lopsided ones") {
+  // plus - minus = ko6 / 12 and plus + minus = lopsided_sum, exactly as polynomials in f
+  const double f_data[] = {0.3, -1.7, 2.9, 0.11, -0.8, 4.4, 1.3};
+  const double* f = f_data + 3;
+  const double plus = gbssn1d::fd::d1_lopsided_plus(f), minus = gbssn1d::fd::d1_lopsided_minus(f);
+  CHECK(plus - minus == doctest::Approx(gbssn1d::fd::ko6(f) / 12.0).epsilon(1e-14));
+  CHECK(plus + minus == doctest::Approx(gbssn1d::fd::lopsided_sum(f)).epsilon(1e-14));
+  for (double beta : {-2.5, -1e-3, 0.0, 1e-3, 0.7}) {
+    const double from_sums =
+        gbssn1d::fd::advect_from(beta, gbssn1d::fd::lopsided_sum(f), gbssn1d::fd::ko6(f));
+    CHECK(from_sums == doctest::Approx(gbssn1d::fd::advect(beta, f)).epsilon(1e-14).scale(1.0));
+  }
+}
