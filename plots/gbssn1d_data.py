@@ -25,7 +25,9 @@ def parse(text):
             blocks.append((t, np.array(rows, dtype=float)))
         rows = []
 
-    for line in text.splitlines():
+    lines = text.splitlines()
+    last = max((k for k, line in enumerate(lines) if line.strip()), default=-1)
+    for k, line in enumerate(lines):
         s = line.strip()
         if not s:
             close()
@@ -34,10 +36,19 @@ def parse(text):
             if s.startswith('# t ='):
                 close()
                 t = float(s.split('=')[1])
-            elif rows == [] and not blocks:
+            elif rows == [] and not blocks and not s.startswith('# end:'):
                 columns = s[1:].split()
             continue
-        rows.append([float(v) for v in s.split()])
+        try:
+            row = [float(v) for v in s.split()]
+        except ValueError:
+            row = None
+        if row is None or (columns is not None and len(row) != len(columns)):
+            if k == last:  # a file cut mid-line (a killed run): keep what is complete
+                sys.stderr.write('note: dropped an incomplete last line\n')
+                continue
+            raise SystemExit(f'line {k + 1} is not a row of {len(columns or [])} numbers')
+        rows.append(row)
     close()
     if columns is None or not blocks:
         raise SystemExit('no gbssn1d data found (no column header or no rows)')

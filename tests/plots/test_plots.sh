@@ -26,4 +26,12 @@ if "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y no_such -o "$dir/x
   echo "unknown column accepted"; exit 1
 fi
 grep -q no_such "$dir/err"
-echo "plot scripts: 6 figures written"
+# a file cut mid-line (a killed run) still plots, without its incomplete last line
+head -c -40 "$dir/run/profiles.dat" > "$dir/cut_profiles.dat"
+grep -v '^# end:' "$dir/run/timeseries.dat" | head -c -25 > "$dir/cut_series.dat"
+"$py" "$plots/plot_profiles.py" "$dir/cut_profiles.dat" -y alpha --times 0,2 -o "$dir/cut1.png" 2>"$dir/err"
+grep -q "incomplete last line" "$dir/err"
+"$py" "$plots/plot_series.py" "$dir/cut_series.dat" -y H_L2_ext --logy -o "$dir/cut2.png" 2>"$dir/err"
+grep -q "incomplete last line" "$dir/err"
+[ -s "$dir/cut1.png" ] && [ -s "$dir/cut2.png" ]
+echo "plot scripts: 8 figures written"
