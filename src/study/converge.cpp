@@ -116,7 +116,15 @@ int run_converge(const Params& base, const ConvergeOptions& options,
           rec.H_samples.push_back(std::move(H_samples));
         };
         Output out(p.out, config_text(p) + sim.run_facts()); // the member's own configuration
-        sim.run(&out);
+        try {
+          sim.run(&out);
+          out.write_end(fmt::format("completed at t = {}", sim.time()));
+        } catch (const OutputError&) {
+          throw;
+        } catch (const std::exception& e) { // stopped or interrupted: say so in the file too
+          out.write_end(fmt::format("stopped: {}", e.what()));
+          throw;
+        }
       } catch (const std::exception& e) {
         rec.error = e.what();
         const std::lock_guard lock(log_mutex);
