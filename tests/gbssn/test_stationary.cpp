@@ -202,3 +202,45 @@ TEST_CASE("the stationarity checks can fail: a mis-normalised trumpet shift is n
   const Values m = rhs_max(g, u, 0.5, 6.0, {});
   CHECK(m[index(Var::chi)] > 1e-5); // truncation error here is ~1e-9
 }
+
+// Sec. 7: the parity of each variable under r -> -r follows from its tensor type, not from the
+// code's table: scalars and diagonal tensor components are even, radial vector components odd.
+TEST_CASE("parities: the registry matches the tensor types (Sec. 7)") {
+  const std::array<std::pair<Var, int>, n_vars> by_type{{{Var::alpha, +1},
+                                                         {Var::beta, -1},
+                                                         {Var::B, -1},
+                                                         {Var::chi, +1},
+                                                         {Var::a, +1},
+                                                         {Var::b, +1},
+                                                         {Var::K, +1},
+                                                         {Var::A_a, +1},
+                                                         {Var::Delta_r, -1}}};
+  for (const auto& [var, parity] : by_type)
+    CHECK(info(var).parity == parity);
+}
+
+// Sec. 8: K carries the 1+log gauge mode, whose speed at infinity is sqrt(f(alpha) alpha^2
+// gamma^rr) = sqrt(2) for f = 2/alpha and alpha, gamma^rr -> 1; the other fields leave at the
+// speed of light. The outer-boundary RHS must be -v (d_r f + n (f - f_inf)/r).
+TEST_CASE("outer boundary: K and alpha leave at the gauge speed sqrt(2), the rest at 1") {
+  InitialDataParams id;
+  id.kind = InitialDataKind::onelog_trumpet;
+  const Grid g(RadialMap::uniform(40.0), 400);
+  const State u = initial_data(g, id);
+  GbssnRhs rhs(g, RhsParams{});
+  State dudt;
+  rhs(u, dudt, 0.0);
+  const double gauge_speed = std::sqrt(2.0 * 1.0 * 1.0); // f alpha^2 gamma^rr with f = 2/alpha
+  for (const auto& e : registry) {
+    const bool gauge_mode = e.var == Var::K || e.var == Var::alpha;
+    const double v = gauge_mode ? gauge_speed : 1.0;
+    const auto f = field(u, g, e.var);
+    const std::size_t i = g.end_interior(); // the first outer ghost
+    const double d_r =
+        (25.0 * f[i] - 48.0 * f[i - 1] + 36.0 * f[i - 2] - 16.0 * f[i - 3] + 3.0 * f[i - 4])
+        / (12.0 * g.dx() * g.map().dr_dx(g.x()[i]));
+    const double expected = -v * (d_r + e.falloff * (f[i] - e.asymptotic) / g.r()[i]);
+    INFO(e.name);
+    CHECK(field(dudt, g, e.var)[i] == doctest::Approx(expected).epsilon(1e-10).scale(1e-12));
+  }
+}

@@ -1,0 +1,68 @@
+// The output files hold what their column names say: each column of profiles.dat and
+// timeseries.dat compared with the quantity computed directly from the state.
+#include "evolution/simulation.hpp"
+
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <unistd.h>
+
+using namespace gbssn1d;
+
+TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields, norms)") {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("gbssn1d_test_columns_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Params p;
+  p.id = "wormhole"; // H and M_r differ clearly on these data (a coarse grid)
+  p.grid = "uniform";
+  p.N = 100;
+  p.rmax = 20.0;
+  p.tmax = 1.0;
+  p.dt_series = 1.0;
+  p.dt_profiles = 1.0;
+  resolve_defaults(p);
+  validate(p);
+  Simulation sim(p);
+  {
+    Output out(dir, sim.run_facts());
+    sim.run(&out);
+  }
+  const Grid& g = sim.grid();
+  const DerivedProfiles d = derived_profiles(sim.state(), g);
+  // profiles.dat: the first block is t = 0; read the last block by hand
+  const auto profiles = gbssn1d::testing::read_table((dir / "profiles.dat").string());
+  REQUIRE(profiles.rows.size() == g.n_interior()); // the first block (t = 0)
+  // timeseries.dat: the row at t = 1 against the norms of the final state
+  const auto series = gbssn1d::testing::read_table((dir / "timeseries.dat").string());
+  REQUIRE(series.rows.size() == 2);
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(series.at(1, "t") == 1.0);
+  CHECK(series.at(1, "H_L2") == doctest::Approx(l2_norm(d.H, g, 0.0, inf)).epsilon(1e-12));
+  CHECK(series.at(1, "M_L2") == doctest::Approx(l2_norm(d.M_r, g, 0.0, inf)).epsilon(1e-12));
+  CHECK(series.at(1, "G_L2") == doctest::Approx(l2_norm(d.G_r, g, 0.0, inf)).epsilon(1e-12));
+  CHECK(std::abs(series.at(1, "H_L2") - series.at(1, "M_L2")) > 1e-6 * series.at(1, "H_L2"));
+  // the initial block against the initial data's own derived profiles
+  Simulation fresh(p);
+  const DerivedProfiles d0 = derived_profiles(fresh.state(), fresh.grid());
+  for (std::size_t k = 0; k < g.n_interior(); k += 7) {
+    const std::size_t i = g.first_interior() + k;
+    INFO("r = " << g.r()[i]);
+    CHECK(profiles.rows[k][0] == doctest::Approx(g.r()[i]).epsilon(1e-15));
+    CHECK(profiles.at(k, "H") == doctest::Approx(d0.H[k]).epsilon(1e-12).scale(1e-14));
+    CHECK(profiles.at(k, "M_r") == doctest::Approx(d0.M_r[k]).epsilon(1e-12).scale(1e-14));
+    CHECK(profiles.at(k, "G_r") == doctest::Approx(d0.G_r[k]).epsilon(1e-12).scale(1e-14));
+    CHECK(profiles.at(k, "R_areal") == doctest::Approx(d0.R_areal[k]).epsilon(1e-14));
+    CHECK(profiles.at(k, "Theta_plus") == doctest::Approx(d0.Theta_plus[k]).epsilon(1e-12));
+    for (const auto& e : registry)
+      CHECK(profiles.at(k, std::string(e.name))
+            == doctest::Approx(field(fresh.state(), g, e.var)[i]).epsilon(1e-15));
+  }
+  fs::remove_all(dir);
+}
