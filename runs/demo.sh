@@ -39,7 +39,9 @@ $py plots/constraint_orders.py demo/converge/N{600,900,1200}/timeseries.dat --ti
 echo "== sweep: horizon shift strength x target radius (1+log trumpet data, t = 40 M)"
 $g sweep -j 2 --out demo/sweep --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet \
   --grid sinh --N 300 --rmax 100 --dr-inner 0.01875 --tmax 40 --dt-series 0.5
-grep -v '^# [a-z]' demo/sweep/summary.dat | sed -n '/^# rahA/,$p'
+# the column names (the last '#' line) and the rows
+awk '/^#/ { header = substr($0, 3); next } !shown++ { print header } { print }' \
+  demo/sweep/summary.dat | column -t
 $py plots/plot_horizons.py demo/sweep/*/horizon.dat --label-by rahA,rah0 --target \
   --title "sweep: r_AH(t)" -o demo/sweep_r_ah.png
 echo "figures: $(ls demo/*.png | tr '\n' ' ')"

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -137,6 +138,11 @@ void add_options(CLI::App& app, Params& p) {
               return v.empty() ? std::string("needs a number, not an empty value") : std::string();
             });
           opt->group(spec.group);
+          // defaults that stand for a rule, shown as the rule rather than the sentinel
+          static const std::map<std::string, std::string> rules{
+              {"eta", "2/M"}, {"norm-rmax", "min(10 M, rmax/2)"}, {"ah-tmax", "none"}};
+          if (const auto rule = rules.find(spec.name); rule != rules.end())
+            opt->default_str(rule->second);
         },
         spec.member);
   }
