@@ -211,17 +211,6 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
   return 0;
 }
 
-/// The configuration text without the lines a resumed run may change (tmax; out and force).
-std::string without_resumable(const std::string& config) {
-  std::istringstream in(config);
-  std::string kept;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("tmax = ", 0) != 0 && line.rfind("out = ", 0) != 0
-        && line.rfind("force = ", 0) != 0)
-      kept += line + "\n";
-  return kept;
-}
-
 int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
@@ -244,7 +233,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
     throw ParamError("DIR", dir_name, e.what());
   }
   const std::string config = config_text(p);
-  if (without_resumable(config) != without_resumable(c.config))
+  if (!same_run(config, c.config))
     throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sstream>
 #include <unistd.h>
 
 namespace gbssn1d {
@@ -51,6 +52,19 @@ private:
 };
 
 } // namespace
+
+bool same_run(const std::string& config_a, const std::string& config_b) {
+  auto kept = [](const std::string& config) {
+    std::istringstream in(config);
+    std::string text;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("tmax = ", 0) != 0 && line.rfind("out = ", 0) != 0
+          && line.rfind("force = ", 0) != 0)
+        text += line + "\n";
+    return text;
+  };
+  return kept(config_a) == kept(config_b);
+}
 
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   const std::filesystem::path tmp = file.string() + ".tmp";

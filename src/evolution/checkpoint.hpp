@@ -32,6 +32,10 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// Whether two configuration texts (config.toml) describe the same run up to what a resumed run
+/// may change: tmax, out and force.
+bool same_run(const std::string& config_a, const std::string& config_b);
+
 /// Writes `c` to `file` atomically: a temporary file, flushed to disk, then renamed over it.
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);
 /// Throws CheckpointError if the file is missing, truncated or not a checkpoint.

@@ -301,8 +301,12 @@ void Simulation::run(Output* out) {
   double next_checkpoint = every > 0.0 ? (std::floor(t_ / every + 1e-9) + 1.0) * every
                                        : std::numeric_limits<double>::infinity();
   auto save = [&](const std::optional<double>& h_AH) {
-    if (out)
-      write_checkpoint(out->dir() / "checkpoint.bin", checkpoint(*out, h_AH));
+    if (!out)
+      return;
+    const Checkpoint c = checkpoint(*out, h_AH);
+    write_checkpoint(out->dir() / "checkpoint.bin", c);
+    if (on_checkpoint)
+      on_checkpoint(c);
   };
   const auto start = std::chrono::steady_clock::now();
   auto last_report = start;

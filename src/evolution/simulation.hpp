@@ -93,6 +93,8 @@ public:
 
   /// The configuration text stored in checkpoints (config.toml of the run).
   std::string checkpoint_config;
+  /// Called after each checkpoint is written (e.g. to save a study's own samples with it).
+  std::function<void(const Checkpoint&)> on_checkpoint;
   /// Continue from `c` (same parameters but possibly tmax): the next run() takes up at its
   /// step, bit for bit as the uninterrupted run. Throws CheckpointError on a mismatch.
   void restore(const Checkpoint& c);

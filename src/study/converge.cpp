@@ -12,9 +12,11 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace gbssn1d {
@@ -30,6 +32,62 @@ struct MemberRecord {
   std::vector<std::vector<double>> H_samples;     ///< per output: H at the common radii
   std::string error;                              ///< non-empty if the member failed
 };
+
+/// A member's samples saved with each of its checkpoints (DIR/N<n>/converge_samples.bin), so
+/// that a rerun of the study continues the member from the checkpoint: the step they belong
+/// to, then the rows and the samples, each list as a count and raw doubles.
+void write_samples(const fs::path& file, std::int64_t step, const MemberRecord& rec) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    auto put = [&](const void* p, std::size_t n) {
+      out.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
+    };
+    const std::uint64_t rows = rec.rows.size();
+    put(&step, sizeof(step));
+    put(&rows, sizeof(rows));
+    put(rec.rows.data(), rows * sizeof(SeriesRow));
+    for (const auto* list : {&rec.field_samples, &rec.H_samples})
+      for (const auto& v : *list) {
+        const std::uint64_t n = v.size();
+        put(&n, sizeof(n));
+        put(v.data(), n * sizeof(double));
+      }
+    out.flush();
+    if (!out)
+      throw OutputError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+/// The samples saved with the checkpoint at `step`, or nothing (missing, other step, broken).
+std::optional<MemberRecord> read_samples(const fs::path& file, std::int64_t step) {
+  std::ifstream in(file, std::ios::binary);
+  auto get = [&](void* p, std::size_t n) {
+    return static_cast<bool>(in.read(static_cast<char*>(p), static_cast<std::streamsize>(n)));
+  };
+  std::int64_t saved_step = -1;
+  std::uint64_t rows = 0;
+  if (!get(&saved_step, sizeof(saved_step)) || saved_step != step || !get(&rows, sizeof(rows))
+      || rows > (1u << 26))
+    return std::nullopt;
+  MemberRecord rec;
+  rec.rows.resize(rows);
+  if (!get(rec.rows.data(), rows * sizeof(SeriesRow)))
+    return std::nullopt;
+  for (auto* list : {&rec.field_samples, &rec.H_samples}) {
+    list->resize(rows);
+    for (auto& v : *list) {
+      std::uint64_t n = 0;
+      if (!get(&n, sizeof(n)) || n > (1u << 26))
+        return std::nullopt;
+      v.resize(n);
+      if (!get(v.data(), n * sizeof(double)))
+        return std::nullopt;
+    }
+  }
+  return rec;
+}
 
 std::vector<double> full_size(const Grid& g, const std::vector<double>& interior) {
   std::vector<double> f(g.n_total(), 0.0);
@@ -115,7 +173,33 @@ int run_converge(const Params& base, const ConvergeOptions& options,
             H_samples.push_back(interpolate_at_radius(s.grid(), H, r));
           rec.H_samples.push_back(std::move(H_samples));
         };
-        Output out(p.out, config_text(p) + sim.run_facts()); // the member's own configuration
+        const std::string config = config_text(p); // the member's own configuration
+        sim.checkpoint_config = config;
+        const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
+        sim.on_checkpoint = [&](const Checkpoint& c) { write_samples(samples_file, c.step, rec); };
+        // A member with a checkpoint of this configuration, and its samples, continues from it.
+        std::optional<Checkpoint> from;
+        if (fs::is_regular_file(fs::path(p.out) / "checkpoint.bin")) {
+          try {
+            Checkpoint c = read_checkpoint(fs::path(p.out) / "checkpoint.bin");
+            if (same_run(c.config, config) && c.t <= p.tmax)
+              if (auto saved = read_samples(samples_file, c.step)) {
+                sim.restore(c);
+                rec = std::move(*saved);
+                from = std::move(c);
+              }
+          } catch (const CheckpointError&) {
+          }
+        }
+        std::optional<Output> out_storage;
+        if (from) {
+          const std::lock_guard lock(log_mutex);
+          fmt::print(stderr, "gbssn1d converge: member N = {} resumes at t = {}\n", p.N, from->t);
+          out_storage.emplace(p.out, config + sim.run_facts(), from->marks);
+        } else {
+          out_storage.emplace(p.out, config + sim.run_facts());
+        }
+        Output& out = *out_storage;
         try {
           sim.run(&out);
           out.write_end(fmt::format("completed at t = {}", sim.time()));
