@@ -239,3 +239,34 @@ TEST_CASE("converge: a rerun continues members from their checkpoints, bit-ident
   fs::remove_all(whole);
   fs::remove_all(parts);
 }
+
+TEST_CASE("sweep: SIGTERM reaches the running members, which stop with a checkpoint") {
+  const fs::path out = scratch("sweep_sigterm");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + " sweep -j 2 --out "
+                          + out.string()
+                          + " --sweep N=3200,3300,3400 --id 1log-trumpet --grid uniform"
+                            " --rmax 200 --tmax 2000 --dt-profiles 100 2>/dev/null & p=$!;"
+                            " while [ ! -s "
+                          + out.string()
+                          + "/N=3300/horizon.dat ]; do sleep 0.1; done; sleep 0.5;"
+                            " kill -TERM $p; wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 143);
+  const auto rows = summary_rows(out / "summary.dat");
+  REQUIRE(rows.size() == 3);
+  for (int k = 0; k < 2; ++k) { // the two running members
+    INFO(rows[static_cast<std::size_t>(k)]);
+    CHECK(rows[static_cast<std::size_t>(k)].find("interrupted") != std::string::npos);
+  }
+  CHECK(rows[2].find("missing") != std::string::npos); // never started
+  for (const char* member : {"N=3200", "N=3300"}) {
+    CHECK(fs::exists(out / member / "checkpoint.bin"));
+    std::ifstream in(out / member / "timeseries.dat");
+    std::string line, last;
+    while (std::getline(in, line))
+      last = line;
+    CHECK(last.find("# end: stopped: interrupted by SIGTERM") == 0);
+  }
+  fs::remove_all(out);
+}
