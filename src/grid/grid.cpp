@@ -43,6 +43,12 @@ double RadialMap::r(double x) const {
   return rmax_ * std::sinh(s_ * x) / std::sinh(s_);
 }
 
+double RadialMap::x_of_r(double r) const {
+  if (kind_ == GridKind::uniform)
+    return r / rmax_;
+  return std::asinh(r * std::sinh(s_) / rmax_) / s_;
+}
+
 double RadialMap::dr_dx(double x) const {
   if (kind_ == GridKind::uniform)
     return rmax_;

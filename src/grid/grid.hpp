@@ -32,6 +32,8 @@ public:
   double stretch() const { return s_; } ///< s of the sinh map (0 for uniform)
 
   double r(double x) const;
+  /// The inverse map, in closed form: x = r / rmax, or asinh(r sinh(s) / rmax) / s.
+  double x_of_r(double r) const;
   double dr_dx(double x) const;
   double d2r_dx2(double x) const;
 

@@ -36,15 +36,7 @@ inline double interpolate_at_radius(const Grid& grid, std::span<const double> f,
   const std::size_t k =
       static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - radii.begin() - 1, 0));
   const std::size_t k0 = lagrange6_start(k, grid.n_total());
-  // invert the map for x(r): the map is monotone, Newton from the bracketing node converges fast
-  double x = grid.x()[k];
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    const double step = (grid.map().r(x) - r) / grid.map().dr_dx(x);
-    x -= step;
-    if (std::abs(step) < 1e-15 * (1.0 + std::abs(x)))
-      break;
-  }
-  return lagrange6(grid.x(), f, k0, x);
+  return lagrange6(grid.x(), f, k0, grid.map().x_of_r(r));
 }
 
 } // namespace gbssn1d

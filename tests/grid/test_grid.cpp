@@ -154,3 +154,11 @@ TEST_CASE("sinh grid of the CLI: doubling --N halves every spacing (one map for 
   }
   CHECK(fine.min_spacing() / coarse.min_spacing() == doctest::Approx(0.5).epsilon(1e-4));
 }
+
+TEST_CASE("the inverse map x(r) in closed form undoes r(x) on both maps") {
+  for (const RadialMap& map : {RadialMap::uniform(50.0), RadialMap::sinh(200.0, 0.01, 400)}) {
+    for (double x : {1e-6, 0.01, 0.3, 0.77, 1.0})
+      CHECK(map.x_of_r(map.r(x)) == doctest::Approx(x).epsilon(1e-14));
+    CHECK(map.x_of_r(map.rmax()) == doctest::Approx(1.0).epsilon(1e-15));
+  }
+}
