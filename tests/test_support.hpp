@@ -1,18 +1,19 @@
-// Shared helpers of the test suite: reading named-column tables and fitting convergence orders.
+// Shared helpers of the test suite: tables read back with the library's reader (checked to be
+// rectangular and non-empty) and convergence orders fitted with the library's fit.
 #pragma once
+
+#include "io/table.hpp"
+#include "study/orders.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gbssn1d::testing {
 
-/// A whitespace-separated table whose last '#' line before the data names the columns.
+/// A table with its columns by name.
 struct Table {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
@@ -24,40 +25,15 @@ struct Table {
   }
 };
 
-/// Reads the first block of a table; throws if the file is missing or has no data.
+/// The first block of a table (gbssn1d::read_table); throws if it is empty or ragged.
 inline Table read_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw std::runtime_error("cannot open reference file " + path);
-  Table t;
-  std::string line, last_comment;
-  while (std::getline(in, line)) {
-    if (line.empty()) {
-      if (!t.rows.empty())
-        break; // end of the first block
-      continue;
-    }
-    if (line[0] == '#') {
-      if (line.rfind("# t =", 0) != 0)
-        last_comment = line; // block markers name no columns
-      continue;
-    }
-    if (t.columns.empty()) {
-      std::istringstream names(last_comment.substr(1));
-      for (std::string n; names >> n;)
-        t.columns.push_back(n);
-    }
-    std::istringstream values(line);
-    std::vector<double> row;
-    for (std::string v; values >> v;)
-      row.push_back(std::stod(v));
-    if (row.size() != t.columns.size())
-      throw std::runtime_error("ragged row in " + path);
-    t.rows.push_back(row);
-  }
+  const gbssn1d::Table t = gbssn1d::read_table(path);
   if (t.rows.empty())
     throw std::runtime_error("no data in " + path);
-  return t;
+  for (const auto& row : t.rows)
+    if (row.size() != t.columns.size())
+      throw std::runtime_error("ragged row in " + path);
+  return {t.columns, t.rows};
 }
 
 /// Cubic Lagrange interpolation in a table with increasing x (4 neighbouring nodes).
@@ -76,18 +52,13 @@ inline double interpolate_cubic(const std::vector<double>& x, const std::vector<
   return sum;
 }
 
-/// Least-squares slope of log(err) against log(h): the observed order of convergence.
+/// Least-squares slope of log(err) against log(h): the observed order of convergence (the
+/// library's fit over N = 1/h).
 inline double fit_order(const std::vector<double>& h, const std::vector<double>& err) {
-  const std::size_t n = h.size();
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double x = std::log(h[k]), y = std::log(err[k]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  std::vector<double> N;
+  for (double x : h)
+    N.push_back(1.0 / x);
+  return gbssn1d::order_fitted(N, err);
 }
 
 } // namespace gbssn1d::testing
