@@ -7,17 +7,16 @@
 #include "evolution/simulation.hpp"
 #include "grid/interpolation.hpp"
 #include "study/orders.hpp"
+#include "study/parallel.hpp"
 
 #include <fmt/format.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 namespace gbssn1d {
 
@@ -150,10 +149,9 @@ int run_converge(const Params& base, const ConvergeOptions& options,
 
   create_output_dir("--out", options.out);
   std::vector<MemberRecord> records(m);
-  std::atomic<std::size_t> next{0};
   std::mutex log_mutex;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < m; k = next++) {
+  auto member_task = [&](std::size_t k) {
+    {
       MemberRecord& rec = records[k];
       try {
         const Params& p = members[k];
@@ -217,11 +215,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     }
   };
   install_stop_handlers(); // members stop between steps; the partial files stay
-  std::vector<std::thread> pool;
-  for (int j = 0; j < std::max(1, options.jobs); ++j)
-    pool.emplace_back(worker);
-  for (auto& t : pool)
-    t.join();
+  run_tasks(m, options.jobs, member_task);
 
   // times common to all members
   std::size_t n_times = records.front().rows.size();

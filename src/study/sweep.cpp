@@ -6,11 +6,11 @@
 #include "io/output.hpp"
 #include "io/table.hpp"
 #include "study/orders.hpp"
+#include "study/parallel.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -289,16 +289,15 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   const fs::path dir(options.out);
   create_output_dir("--out", dir / "logs");
   install_stop_handlers();
-  std::atomic<std::size_t> next{0};
   std::mutex mutex;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < members.size(); k = next++) {
+  auto member_task = [&](std::size_t k) {
+    {
       const SweepMember& m = members[k];
       const fs::path status_file = dir / "logs" / (m.name + ".status");
       if (member_done(status_file))
-        continue; // finished in an earlier run of the same sweep
+        return; // finished in an earlier run of the same sweep
       if (stop_signal() != 0)
-        continue; // interrupted: start nothing new (a rerun resumes)
+        return; // interrupted: start nothing new (a rerun resumes)
       // Invalid values are caught here, before a subprocess is started.
       std::string status = "ok", reason = "-";
       double wall = 0.0;
@@ -339,11 +338,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
                  status == "ok" ? "" : ": " + reason);
     }
   };
-  std::vector<std::thread> pool;
-  for (int j = 0; j < std::max(1, options.jobs); ++j)
-    pool.emplace_back(worker);
-  for (auto& t : pool)
-    t.join();
+  run_tasks(members.size(), options.jobs, member_task);
 
   // summary.dat
   std::vector<std::string> cols;
