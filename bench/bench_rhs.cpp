@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
       resolve_defaults(p);
       validate(p);
       Simulation sim(p);
-      GbssnRhs rhs(sim.grid(), rhs_params(p));
+      GbssnRhs rhs(sim.grid(), sim.rhs().params()); // with the horizon locator
       State dudt(sim.state().size());
       using clock = std::chrono::steady_clock;
       long evals = 0;

@@ -311,7 +311,6 @@ RhsParams rhs_params(const Params& p) {
   r.advection.driver = choice("--driver-advection", p.driver_advection, stencil_choices);
   r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
-  r.horizon_shift.finder.tolerance = p.ah_tol;
   r.horizon_shift.t_min = p.ah_tmin;
   r.horizon_shift.t_max = p.ah_tmax;
   using Variant = HorizonShiftParams::Variant;

@@ -47,10 +47,32 @@ void hermite_interpolate(const State& u0, const State& f0, const State& u1, cons
     out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
 }
 
+namespace {
+
+/// rhs_params(p) with the horizon finder as the RHS's locator (substage searches).
+RhsParams rhs_params_with_finder(const Params& p) {
+  RhsParams r = rhs_params(p);
+  HorizonFinderParams finder;
+  finder.tolerance = p.ah_tol;
+  r.horizon_shift.locate = [finder](const State& u, const Grid& grid, double seed,
+                                    double t) -> std::optional<double> {
+    try {
+      const auto found = find_horizon_near(u, grid, finder, seed);
+      return found ? std::optional<double>(found->r) : std::nullopt;
+    } catch (const HorizonFinderError& e) {
+      throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
+    }
+  };
+  return r;
+}
+
+} // namespace
+
 Simulation::Simulation(const Params& p)
-    : params_(p), grid_(std::make_unique<Grid>(make_grid(p))), rhs_(*grid_, rhs_params(p)),
-      diagnostic_rhs_(rhs_), u_(initial_data(*grid_, initial_data_params(p))),
-      schedule_(make_schedule(p, *grid_)), ah_every_(ah_every_steps(p)) {}
+    : params_(p), grid_(std::make_unique<Grid>(make_grid(p))),
+      rhs_(*grid_, rhs_params_with_finder(p)), diagnostic_rhs_(rhs_),
+      u_(initial_data(*grid_, initial_data_params(p))), schedule_(make_schedule(p, *grid_)),
+      ah_every_(ah_every_steps(p)) {}
 
 bool Simulation::in_search_window(double t) const {
   return t >= params_.ah_tmin && (params_.ah_tmax < 0.0 || t <= params_.ah_tmax);
@@ -65,10 +87,14 @@ auto Simulation::with_time(Search search) const {
   }
 }
 
-HorizonSearch Simulation::horizons() const {
+HorizonFinderParams Simulation::finder() const {
   HorizonFinderParams finder;
   finder.tolerance = params_.ah_tol;
-  return with_time([&] { return find_horizons(u_, *grid_, finder); });
+  return finder;
+}
+
+HorizonSearch Simulation::horizons() const {
+  return with_time([&] { return find_horizons(u_, *grid_, finder()); });
 }
 
 std::optional<double> Simulation::horizon_radius() {
@@ -79,7 +105,7 @@ std::optional<double> Simulation::horizon_radius() {
     return hs.prescribed_h_AH(t_);
   if (ah_every_ == 0 && in_search_window(t_)) {
     const auto found = with_time([&] {
-      return find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+      return find_horizon_near(u_, *grid_, finder(), rhs_.horizon_radius().value_or(hs.h));
     });
     return found ? std::optional<double>(found->r) : std::nullopt;
   }
@@ -98,7 +124,7 @@ void Simulation::update_held_horizon() {
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
   const auto found = with_time([&] {
-    return find_horizon_near(u_, *grid_, hs.finder, rhs_.horizon_radius().value_or(hs.h));
+    return find_horizon_near(u_, *grid_, finder(), rhs_.horizon_radius().value_or(hs.h));
   });
   // Without a horizon the held value is dropped: beta_H = 0 until one is found.
   rhs_.set_horizon_radius(found ? std::optional<double>(found->r) : std::nullopt);

@@ -128,6 +128,7 @@ public:
 
 private:
   bool in_search_window(double t) const;
+  HorizonFinderParams finder() const; ///< the finder's settings (--ah-tol)
   /// Runs a horizon search; a HorizonFinderError gets the current time added.
   template <class Search>
   auto with_time(Search search) const;

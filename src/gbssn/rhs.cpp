@@ -217,12 +217,7 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     if (hs.prescribed()) {
       h_AH_ = hs.prescribed_h_AH(t); // open loop: the same h_AH(t) at every resolution
     } else if ((hs.search_every_substage || midstep_search) && in_window) {
-      try {
-        const auto found = find_horizon_near(u, *grid_, hs.finder, h_AH_.value_or(hs.h));
-        h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
-      } catch (const HorizonFinderError& e) {
-        throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
-      }
+      h_AH_ = hs.locate ? hs.locate(u, *grid_, h_AH_.value_or(hs.h), t) : std::nullopt;
     }
     split_shift(u, t);
     using V = HorizonShiftParams::Variant;

@@ -11,7 +11,6 @@
 #include "gbssn/equations.hpp"
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
-#include "horizon/apparent_horizon.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -108,7 +107,11 @@ struct HorizonShiftParams {
   };
   Variant variant = Variant::consistent;
   long midstep_every = 1; ///< n of midstep_update
-  HorizonFinderParams finder;
+  /// The apparent horizon's radius on `u` near `seed` at time t (nullopt: none), for the
+  /// searches inside the right-hand side. Set by the evolution (evolution/simulation.cpp), so
+  /// that the equations do not depend on the finder; it may throw.
+  std::function<std::optional<double>(const State& u, const Grid& grid, double seed, double t)>
+      locate;
   bool active() const { return A != 0.0; }
   /// The strength at time t.
   double strength(double t) const {

@@ -139,7 +139,7 @@ TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
     return gbssn1d::testing::interpolate_cubic(R, alpha, R_target);
   };
 
-  GbssnRhs rhs(g, rhs_params(sim.params()));
+  GbssnRhs rhs(g, sim.rhs().params());
   State dudt;
   rhs(sim.state(), dudt, sim.time());
   const DerivedProfiles d = derived_profiles(sim.state(), g);

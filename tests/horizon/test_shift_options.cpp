@@ -411,7 +411,7 @@ TEST_CASE("driver-full-shift changes B's driver where beta_H is non-zero, and on
     Params q = p;
     q.rah_variant = variant;
     Simulation sim = make(q);
-    GbssnRhs rhs(sim.grid(), rhs_params(sim.params()));
+    GbssnRhs rhs(sim.grid(), sim.rhs().params());
     State dudt;
     rhs(sim.state(), dudt, 0.0);
     return std::pair(dudt, sim.horizon_shift());
