@@ -6,7 +6,7 @@
 // 1+log-trumpet data on a sinh grid, for N = 256, 1024, 4096, and also one RK4 step's cost;
 // for the plain Gamma-driver and with the horizon-adjusting shift (rahA = 0.5, rah0 = 0.89:
 // the horizon search on every evaluation and the split shift included).
-#include "cli/params.hpp"
+#include "config/params.hpp"
 #include "evolution/simulation.hpp"
 
 #include <CLI/CLI.hpp>

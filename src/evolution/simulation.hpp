@@ -2,7 +2,7 @@
 // (Boost.Odeint), with output at fixed cadences in time.
 #pragma once
 
-#include "cli/params.hpp"
+#include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/checkpoint.hpp"
 #include "gbssn/rhs.hpp"

@@ -2,7 +2,7 @@
 
 #include "core/stop_signal.hpp"
 
-#include "cli/cli.hpp"
+#include "config/config_file.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
 #include "grid/interpolation.hpp"

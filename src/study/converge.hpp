@@ -3,7 +3,7 @@
 // resolutions, and Richardson-scaled Hamiltonian-constraint profiles.
 #pragma once
 
-#include "cli/params.hpp"
+#include "config/params.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "study/sweep.hpp"
 
-#include "cli/cli.hpp"
-#include "cli/params.hpp"
+#include "config/config_file.hpp"
+#include "config/params.hpp"
 #include "core/stop_signal.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"

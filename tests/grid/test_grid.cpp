@@ -1,6 +1,6 @@
 // The radial grid: cell centres, parity mirrors, the sinh map, and radial derivatives through
 // the chain rule (fitted order 4 on uniform and sinh grids).
-#include "cli/params.hpp"
+#include "config/params.hpp"
 #include "gbssn/rhs.hpp"
 #include "grid/grid.hpp"
 

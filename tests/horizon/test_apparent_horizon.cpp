@@ -1,6 +1,6 @@
 // The apparent-horizon finder on the three initial data sets: M_AH -> M at 4th order or better,
 // |M_AH - M| < 1e-6 at spacing M/64, and the coordinate radius where the data put it.
-#include "cli/params.hpp"
+#include "config/params.hpp"
 #include "evolution/simulation.hpp"
 #include "horizon/apparent_horizon.hpp"
 

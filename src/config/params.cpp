@@ -1,4 +1,4 @@
-#include "cli/params.hpp"
+#include "config/params.hpp"
 
 #include "io/table.hpp"
 

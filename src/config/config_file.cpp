@@ -1,0 +1,238 @@
+#include "config/config_file.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace gbssn1d {
+
+namespace {
+
+/// One run parameter: its flag (without "--"), where it lives in Params, group and help.
+/// The same table drives the CLI11 options and the config file, so they cannot drift apart.
+struct ParamSpec {
+  const char* name;
+  std::variant<int Params::*, double Params::*, std::string Params::*, bool Params::*> member;
+  const char* group;
+  const char* help;
+};
+
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs{
+      {"N", &Params::N, "Grid", "number of cells"},
+      {"rmax", &Params::rmax, "Grid", "outer radius (M)"},
+      {"grid", &Params::grid, "Grid", "radial grid: uniform | sinh"},
+      {"dr-inner", &Params::dr_inner, "Grid",
+       "innermost cell width (M) of the sinh grid at N = 400; it fixes the map r(x), so at N "
+       "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)"},
+      {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
+      {"M", &Params::M, "Initial data", "black-hole mass"},
+      {"lapse0", &Params::lapse0, "Initial data",
+       "initial lapse of the wormhole: one | precollapsed"},
+      {"eta", &Params::eta, "Gauge", "Gamma-driver damping eta (1/M); default 2/M"},
+      {"advective-shift", &Params::advective_shift, "Gauge",
+       "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
+      {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
+       "1+log without advection: d_t alpha = -2 alpha K"},
+      {"cfl", &Params::cfl, "Numerics", "dt = cfl * smallest spacing, in (0, 1]"},
+      {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
+      {"chi-floor", &Params::chi_floor, "Numerics",
+       "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
+       "cross chi = 0 at the innermost cell during the lapse collapse"},
+      {"tmax", &Params::tmax, "Time", "final time (M); 0 writes the initial data only"},
+      {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat (M)"},
+      {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat (M)"},
+      {"checkpoint-every", &Params::checkpoint_every, "Output",
+       "simulated time (M) between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
+       "(0: none; SIGTERM/SIGINT always write one)"},
+      {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms (M)"},
+      {"norm-rmax", &Params::norm_rmax, "Diagnostics",
+       "outer radius of the exterior norms (M); default min(10 M, rmax/2)"},
+      {"norm-Rmin", &Params::norm_Rmin, "Diagnostics",
+       "areal-radius window of the *_R norms: norm-Rmin M <= R (the same place in every gauge)"},
+      {"norm-Rmax", &Params::norm_Rmax, "Diagnostics", "... R <= norm-Rmax M"},
+      {"norm-Rint", &Params::norm_Rint, "Diagnostics",
+       "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon"},
+      {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)"},
+      {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon (M)"},
+      {"rah-width", &Params::rah_width, "Horizon",
+       "width w of f(r) (M), for every --rah-profile but auto"},
+      {"rah-ramp", &Params::rah_ramp, "Horizon",
+       "T (M): the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
+      {"rah-profile", &Params::rah_profile, "Horizon",
+       "f(r), q = r/w: auto (rational with w = 3 M to stretch, rah0 >= 0.8304 M; gauss with "
+       "w = 1 M to shrink; "
+       "--rah-width is then not used) | rational q/(1+q^2) (published) | rational3 "
+       "q^3/(1+q^4) | gauss (q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},
+      {"rah-normal", &Params::rah_normal, "Horizon",
+       "s^r: conformal 1/sqrt(a) (smooth at the puncture) | unit sqrt(chi/a) (published; "
+       "~|r| at a trumpet's puncture) | smooth sqrt((chi+chi_s)/a)"},
+      {"rah-chi-smooth", &Params::rah_chi_smooth, "Horizon",
+       "chi_s of --rah-normal smooth: the kink of sqrt(chi) at the puncture is rounded where "
+       "chi ~ chi_s"},
+      {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
+       "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)"},
+      {"driver-advection", &Params::driver_advection, "Numerics",
+       "stencil of beta_GD d_r Delta^r in B's driver: upwind-gd | upwind-full | centred"},
+      {"delta-advection", &Params::delta_advection, "Numerics",
+       "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
+      {"ah-every", &Params::ah_every, "Horizon",
+       "horizon search: substage (every RK stage), step, or a number of steps"},
+      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time (M)"},
+      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time (< 0: none)"},
+      {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius (M)"},
+      {"rah-variant", &Params::rah_variant, "Horizon",
+       "consistent (the method); for the study only: no-shift-derivatives, "
+       "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update"},
+      {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
+      {"force", &Params::force, "Output", "write into an existing non-empty --out"},
+  };
+  return specs;
+}
+
+std::string value_text(const Params& p, const ParamSpec& spec) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        using T = std::decay_t<decltype(p.*member)>;
+        if constexpr (std::is_same_v<T, std::string>)
+          return fmt::format("\"{}\"", p.*member);
+        else if constexpr (std::is_same_v<T, bool>)
+          return p.*member ? "true" : "false";
+        else
+          return fmt::format("{}", p.*member); // shortest representation that round-trips
+      },
+      spec.member);
+}
+
+} // namespace
+
+void add_options(CLI::App& app, Params& p) {
+  for (const auto& spec : param_specs()) {
+    const std::string flag = std::string("--") + spec.name;
+    std::visit(
+        [&](auto member) {
+          using T = std::decay_t<decltype(p.*member)>;
+          CLI::Option* opt;
+          if constexpr (std::is_same_v<T, bool>)
+            opt = app.add_flag(flag, p.*member, spec.help);
+          else
+            opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
+          if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::string>)
+            opt->check([](const std::string& v) {
+              return v.empty() ? std::string("needs a number, not an empty value") : std::string();
+            });
+          opt->group(spec.group);
+          // defaults that stand for a rule, shown as the rule rather than the sentinel
+          static const std::map<std::string, std::string> rules{
+              {"eta", "2/M"}, {"norm-rmax", "min(10 M, rmax/2)"}, {"ah-tmax", "none"}};
+          if (const auto rule = rules.find(spec.name); rule != rules.end())
+            opt->default_str(rule->second);
+        },
+        spec.member);
+  }
+}
+
+std::string config_text(const Params& p) {
+  std::string text;
+  for (const auto& spec : param_specs())
+    text += fmt::format("{} = {}\n", spec.name, value_text(p, spec));
+  return text;
+}
+
+/// Non-printable bytes of a text as \xNN, for messages that quote user input.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s)
+    out += (c >= 0x20 && c < 0x7f) ? std::string(1, static_cast<char>(c))
+                                   : fmt::format("\\x{:02x}", c);
+  return out;
+}
+
+/// Arguments after expanding `--config FILE` (or --config=FILE) of the evolve subcommand into
+/// `--key=value` arguments placed before the command line's own, so that flags override the
+/// file. CLI11 2.1 does not read config files given to a subcommand, hence this step; the file
+/// is parsed by CLI11's own TOML/INI reader. Throws ParamError for a missing file or a key that
+/// names no parameter.
+std::vector<std::string> expand_config(const std::vector<std::string>& args) {
+  std::vector<std::string> rest, from_file;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    std::string path;
+    if (args[k] == "--config") {
+      if (k + 1 >= args.size())
+        throw ParamError("--config", "''", "needs a file name");
+      path = args[++k];
+    } else if (args[k].rfind("--config=", 0) == 0) {
+      path = args[k].substr(9);
+    } else {
+      rest.push_back(args[k]);
+      continue;
+    }
+    if (!std::filesystem::is_regular_file(path))
+      throw ParamError("--config", path, "no such file");
+    std::vector<CLI::ConfigItem> items;
+    try {
+      items = CLI::ConfigTOML().from_file(path);
+    } catch (const CLI::Error& e) {
+      throw ParamError("--config", path, std::string("cannot be parsed: ") + e.what());
+    }
+    for (const auto& item : items) {
+      const std::string key = item.fullname();
+      const bool known = std::any_of(param_specs().begin(), param_specs().end(),
+                                     [&](const ParamSpec& s) { return key == s.name; });
+      if (!known)
+        throw ParamError("--config", path, fmt::format("unknown key '{}'", printable(key)));
+      if (item.inputs.size() != 1)
+        throw ParamError("--config", path, fmt::format("key '{}' needs exactly one value", key));
+      const auto& spec = *std::find_if(param_specs().begin(), param_specs().end(),
+                                       [&](const ParamSpec& s) { return key == s.name; });
+      if (std::holds_alternative<bool Params::*>(spec.member) && item.inputs.front() != "true"
+          && item.inputs.front() != "false")
+        throw ParamError("--config", path,
+                         fmt::format("key '{}' must be true or false, not '{}'", key,
+                                     printable(item.inputs.front())));
+      // "--key=" with an empty value would take the next argument as its value: pass the
+      // empty value as a separate argument
+      if (item.inputs.front().empty()) {
+        from_file.push_back("--" + key);
+        from_file.push_back("");
+      } else {
+        from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
+      }
+    }
+  }
+  // the subcommand name stays first
+  std::vector<std::string> out;
+  if (!rest.empty())
+    out.push_back(rest.front());
+  out.insert(out.end(), from_file.begin(), from_file.end());
+  if (rest.size() > 1)
+    out.insert(out.end(), rest.begin() + 1, rest.end());
+  return out;
+}
+
+bool is_parameter_name(const std::string& name) {
+  return std::any_of(param_specs().begin(), param_specs().end(),
+                     [&](const ParamSpec& s) { return name == s.name; });
+}
+
+Params parse_evolve_args(const std::vector<std::string>& args) {
+  std::vector<std::string> expanded{"evolve"};
+  expanded.insert(expanded.end(), args.begin(), args.end());
+  expanded = expand_config(expanded);
+  expanded.erase(expanded.begin());
+  CLI::App app{"evolve"};
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  Params p;
+  add_options(app, p);
+  std::reverse(expanded.begin(), expanded.end());
+  app.parse(expanded);
+  return p;
+}
+
+} // namespace gbssn1d

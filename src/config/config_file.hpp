@@ -1,0 +1,39 @@
+// The run parameters as text: one table of every evolve flag (name, member of Params, group,
+// help) drives the CLI11 options, the `key = value` configuration files and their reading back,
+// so that the command line and config.toml cannot drift apart.
+#pragma once
+
+#include "config/params.hpp"
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace gbssn1d {
+
+/// Adds every evolve flag, grouped, with its default, to `app`, bound to `p`.
+void add_options(CLI::App& app, Params& p);
+
+/// The effective configuration as a TOML/INI file that `evolve --config` reads back: one
+/// `key = value` line per parameter, at full precision.
+std::string config_text(const Params& p);
+
+/// Arguments after expanding `--config FILE` into `--key=value` arguments placed before the
+/// command line's own, so that flags override the file. Throws ParamError for a missing file,
+/// a key that names no parameter or a bad boolean.
+std::vector<std::string> expand_config(const std::vector<std::string>& args);
+
+/// Parameters from evolve flags (`--config` files expanded), e.g. a sweep member's arguments.
+/// Throws ParamError or CLI::ParseError. Does not resolve defaults or validate.
+Params parse_evolve_args(const std::vector<std::string>& args);
+
+/// Whether `name` (without "--") is an evolve flag.
+bool is_parameter_name(const std::string& name);
+
+/// Non-printable bytes of a text as \xNN, for messages that quote user input.
+std::string printable(const std::string& s);
+
+} // namespace gbssn1d
