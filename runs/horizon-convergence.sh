@@ -12,18 +12,20 @@ out=out/horizon-convergence
 rm -rf "$out" && mkdir -p "$out"
 variants=("standard:--ah-every substage" "stretch:--ah-every substage" "shrink:--ah-every substage"
           "shrink:--ah-every 8" "stretch:--ah-every 8")
-jobs=()
+tags=()
 for v in "${variants[@]}"; do
   cfg=${v%%:*} flags=${v#*:}
   tag="$cfg$(echo "$flags" | tr -d ' -' | sed 's/aheverysubstage//; s/aheverys*/-every/')"
-  for n in 400 800 1600; do
-    jobs+=("build/gbssn1d evolve --config runs/horizon-maximal-$cfg.toml $flags --N $n --dt-series 1 --dt-profiles 100 --out $out/$tag-N$n")
-  done
+  tags+=("$tag")
+  # one `gbssn1d converge` per run (members in out/horizon-convergence/<tag>/N<n>/); a member
+  # that blows up is a result, not a reason to stop: its stderr says where and when
+  # shellcheck disable=SC2086
+  build/gbssn1d converge --N 400,800,1600 -j "$(nproc)" --out "$out/$tag" \
+    --config "runs/horizon-maximal-$cfg.toml" $flags --dt-series 1 --dt-profiles 100 \
+    >/dev/null 2>>"$out/stderr.log" || true
 done
-# a member that blows up is a result, not a reason to stop: its stderr says where and when
-printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>>"$0"' "$out/stderr.log" || true
-for tag in $(ls $out | sed 's/-N[0-9]*$//' | sort -u); do
+for tag in "${tags[@]}"; do
   echo "== $tag"
-  $py plots/constraint_orders.py $out/$tag-N{400,800,1600}/timeseries.dat \
+  $py plots/constraint_orders.py $out/$tag/N{400,800,1600}/timeseries.dat \
     --title "H on [1, 10] M: $tag" -o $out/H_orders_$tag.png
 done

@@ -10,19 +10,18 @@ cd "$(dirname "$0")/.."
 py=/usr/bin/python3
 out=out/horizon-long
 rm -rf "$out" && mkdir -p "$out"
-jobs=()
 for cfg in standard stretch shrink; do
-  for n in 400 800 1600; do
-    jobs+=("build/gbssn1d evolve --config runs/horizon-maximal-$cfg.toml --N $n --rmax 1600 --tmax 1000 --dt-series 5 --dt-profiles 500 --out $out/$cfg-N$n")
-  done
+  # one `gbssn1d converge` per configuration (members in out/horizon-long/<cfg>/N<n>/); a
+  # member that blows up is a result, not a reason to stop: its stderr says where and when
+  build/gbssn1d converge --N 400,800,1600 -j "$(nproc)" --out "$out/$cfg" \
+    --config "runs/horizon-maximal-$cfg.toml" --rmax 1600 --tmax 1000 --dt-series 5 \
+    --dt-profiles 500 >/dev/null 2>>"$out/stderr.log" || true
 done
-# a member that blows up is a result, not a reason to stop: its stderr says where and when
-printf '%s\n' "${jobs[@]}" | xargs -P "$(nproc)" -I{} bash -c '{} 2>>"$0"' "$out/stderr.log" || true
 for cfg in standard stretch shrink; do
   echo "== $cfg"
-  $py plots/constraint_orders.py $out/$cfg-N{400,800,1600}/timeseries.dat \
+  $py plots/constraint_orders.py $out/$cfg/N{400,800,1600}/timeseries.dat \
     --times 10,50,100,200,400,600,800,1000 --title "H on [1, 10] M to 1000 M: $cfg" \
     -o $out/H_orders_$cfg.png
   awk '!/^#/ {row=$0} END {split(row, c, " "); printf "   N=1600 at t = %g: r_ah = %.5f, M_ah - 1 = %.2e\n", c[1], c[10], c[11]-1}' \
-    $out/$cfg-N1600/timeseries.dat
+    $out/$cfg/N1600/timeseries.dat
 done

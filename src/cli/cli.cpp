@@ -321,7 +321,10 @@ int run_cli(int argc, char** argv) {
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
     refuse_repeated_flags(args);
-    args = expand_config(args);
+    // evolve reads --config here; converge and sweep pass it on to their members, whose own
+    // flags may then override the file's values once
+    if (!args.empty() && args.front() == "evolve")
+      args = expand_config(args);
     std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
     app.parse(args);
   } catch (const CLI::CallForHelp& e) {

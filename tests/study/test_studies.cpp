@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -269,4 +270,30 @@ TEST_CASE("sweep: SIGTERM reaches the running members, which stop with a checkpo
     CHECK(last.find("# end: stopped: interrupted by SIGTERM") == 0);
   }
   fs::remove_all(out);
+}
+
+TEST_CASE("sweep and converge pass --config on: members' own flags override the file once") {
+  const fs::path cfg = scratch("study.toml"), sweep_out = scratch("cfg_sweep"),
+                 conv_out = scratch("cfg_conv");
+  std::ofstream(cfg) << "id = \"1log-trumpet\"\ngrid = \"uniform\"\nN = 120\nrmax = 20\ntmax = 1\n";
+  std::string err;
+  REQUIRE(
+      run("sweep --out " + sweep_out.string() + " --config " + cfg.string() + " --sweep N=100,140",
+          &err)
+      == 0);
+  const auto rows = summary_rows(sweep_out / "summary.dat");
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].find("100 ok") == 0);
+  CHECK(rows[1].find("140 ok") == 0);
+  std::ifstream member_cfg(sweep_out / "N=140" / "config.toml");
+  const std::string text((std::istreambuf_iterator<char>(member_cfg)), {});
+  CHECK(text.find("\nN = 140\n") != std::string::npos);
+  CHECK(text.find("id = \"1log-trumpet\"") != std::string::npos);
+  REQUIRE(
+      run("converge --N 100,140,180 --out " + conv_out.string() + " --config " + cfg.string(), &err)
+      == 0);
+  CHECK(fs::exists(conv_out / "N180" / "timeseries.dat"));
+  fs::remove_all(sweep_out);
+  fs::remove_all(conv_out);
+  fs::remove(cfg);
 }
