@@ -260,6 +260,13 @@ int run_cli(int argc, char** argv) {
   CLI::App* evolve_cmd =
       app.add_subcommand("evolve", "evolve one black hole and write ASCII output");
   add_options(*evolve_cmd, params);
+  evolve_cmd->footer(
+      "Output in --out DIR: config.toml (repeats the run with --config), timeseries.dat (a row "
+      "per --dt-series; its last line says how the run ended), profiles.dat (a block per "
+      "--dt-profiles), horizon.dat, checkpoint.bin (with --checkpoint-every or after a "
+      "signal; `gbssn1d resume DIR` continues).\nExit status: 0 completed; 1 a failed write; 2 "
+      "invalid input (nothing written); 3 stopped (non-finite value, chi or alpha out of range, "
+      "horizon finder failure); 128 + n interrupted by signal n.");
   evolve_cmd
       ->add_option("--config", config_file,
                    "read parameters from a TOML/INI file of `key = value` lines (as "
@@ -297,7 +304,8 @@ int run_cli(int argc, char** argv) {
       app.add_subcommand("sweep", "run the product of value lists of any evolve flags");
   sweep_cmd
       ->add_option("--sweep", sweep_options.sweeps,
-                   "flag=value1,value2,... (repeat for more flags)")
+                   "flag=value1,value2,... (repeat for more flags); flags that change together "
+                   "share an axis: flag1,flag2=a1:b1,a2:b2")
       ->required();
   sweep_cmd->add_option("-j,--jobs", sweep_options.jobs, "members run at once")
       ->capture_default_str();

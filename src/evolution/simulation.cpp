@@ -134,10 +134,10 @@ void Simulation::report_horizon(const std::optional<MarginalSurface>& h) {
   if (reported_ && h.has_value() == had_horizon_)
     return;
   if (h)
-    fmt::print(stderr, "gbssn1d: apparent horizon at t = {:.6g}: r = {:.6g}, M_AH = {:.10g}\n", t_,
-               h->r, h->mass);
+    fmt::print(stderr, "gbssn1d{}: apparent horizon at t = {:.6g}: r = {:.6g}, M_AH = {:.10g}\n",
+               label, t_, h->r, h->mass);
   else
-    fmt::print(stderr, "gbssn1d: no apparent horizon found at t = {:.6g}\n", t_);
+    fmt::print(stderr, "gbssn1d{}: no apparent horizon found at t = {:.6g}\n", label, t_);
   had_horizon_ = h.has_value();
   reported_ = true;
 }

@@ -90,6 +90,8 @@ public:
 
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
   bool show_progress = false;
+  /// Put after "gbssn1d" in messages on stderr (a study names its member, e.g. " converge N=60").
+  std::string label;
 
   /// The configuration text stored in checkpoints (config.toml of the run).
   std::string checkpoint_config;

@@ -173,6 +173,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         };
         const std::string config = config_text(p); // the member's own configuration
         sim.checkpoint_config = config;
+        sim.label = fmt::format(" converge N={}", p.N);
         const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
         sim.on_checkpoint = [&](const Checkpoint& c) { write_samples(samples_file, c.step, rec); };
         // A member with a checkpoint of this configuration, and its samples, continues from it.
@@ -325,6 +326,8 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     }
     file.flush();
   }
+  fmt::print(stderr, "gbssn1d converge: N = {} done; norms and orders in {}/convergence.dat\n",
+             fmt::join(options.N, ", "), options.out);
   if (const int signal = stop_signal(); signal != 0)
     return 128 + signal;
   for (const auto& rec : records)

@@ -290,6 +290,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   create_output_dir("--out", dir / "logs");
   install_stop_handlers();
   std::mutex mutex;
+  std::size_t finished = 0; // members done in this run (under `mutex`)
   auto member_task = [&](std::size_t k) {
     {
       const SweepMember& m = members[k];
@@ -334,8 +335,9 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       }
       write_status(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
       const std::lock_guard lock(mutex);
-      fmt::print(stderr, "gbssn1d sweep: {} {} ({:.1f} s){}\n", m.name, status, wall,
-                 status == "ok" ? "" : ": " + reason);
+      ++finished;
+      fmt::print(stderr, "gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", finished, members.size(),
+                 m.name, status, wall, status == "ok" ? "" : ": " + reason);
     }
   };
   run_tasks(members.size(), options.jobs, member_task);
