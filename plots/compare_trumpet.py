@@ -47,13 +47,15 @@ def main():
         import matplotlib.pyplot as plt
         style(plt)
         fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-        ax1.plot(Rt, at, 'k-', lw=1, label='stationary 1+log trumpet')
-        ax1.plot(R[keep], alpha[keep], '.', ms=3, label=f'evolution, t = {t:g}')
+        # the evolution as every 8th point, the reference drawn over it, so that both show
+        ax1.plot(R[keep][::8], alpha[keep][::8], 'o', ms=4, mfc='none', color='tab:blue',
+                 label=f'evolution, t = {t:g} M (every 8th point)')
+        ax1.plot(Rt, at, '-', color='tab:red', lw=1.2, zorder=3, label='stationary 1+log trumpet')
         ax1.set_ylabel('alpha')
         ax1.legend()
         ax2.semilogy(R[keep], abs(diff), '.', ms=3)
         ax2.set_ylabel('|alpha - alpha_trumpet|')
-        ax2.set_xlabel('areal radius R')
+        ax2.set_xlabel('areal radius R / M')
         ax2.set_xscale('log')
         fig.tight_layout()
         fig.savefig(a.output)

@@ -68,6 +68,14 @@ def style(plt):
                                            '#ff7f0e', '#8c564b', '#17becf'])})
 
 
+UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M'}
+
+
+def axis_label(name):
+    """A column name as an axis label, with its unit where it has one (lengths and times in M)."""
+    return UNITS.get(name, name)
+
+
 def finish(fig, ax, xlabel, ylabel, title, output):
     """Labels, legend and layout shared by every figure; writes the PNG."""
     ax.set_xlabel(xlabel)

@@ -12,7 +12,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 import numpy as np
 
-from gbssn1d_data import column, finish, parse, read_text, style
+from gbssn1d_data import axis_label, column, finish, parse, read_text, style
 
 
 def main():
@@ -51,7 +51,7 @@ def main():
         ax.set_yscale('log')
     if a.logx:
         ax.set_xscale('log')
-    finish(fig, ax, a.x, ', '.join(a.y), a.title, a.output)
+    finish(fig, ax, axis_label(a.x), ', '.join(a.y), a.title, a.output)
 
 
 if __name__ == '__main__':

@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import column, finish, parse, read_text, style
+from gbssn1d_data import axis_label, column, finish, parse, read_text, style
 
 
 def main():
@@ -36,7 +36,7 @@ def main():
                     label=f'{label}: {y}' if len(a.files) > 1 or len(a.y) > 1 else label)
     if a.logy:
         ax.set_yscale('log')
-    finish(fig, ax, a.x, ', '.join(a.y), a.title, a.output)
+    finish(fig, ax, axis_label(a.x), ', '.join(a.y), a.title, a.output)
 
 
 if __name__ == '__main__':

@@ -17,8 +17,10 @@ $g evolve --id 1log-trumpet --tmax 0 --grid sinh --N 4000 --dr-inner 0.005 --rma
   --out demo/trumpet-reference 2>/dev/null
 $py plots/plot_profiles.py demo/wormhole/profiles.dat -y alpha --times 0,5,10,20,50,300 \
   --xmax 10 --title "lapse: wormhole collapsing onto the trumpet" -o demo/lapse_profiles.png
-$py plots/plot_series.py demo/wormhole/timeseries.dat -y dtalpha_max_ext -y H_L2_ext -y M_L2_ext \
-  --logy --title "settling: max |d_t alpha| and constraints on [1, 10] M" -o demo/settling.png
+$py plots/plot_series.py demo/wormhole/timeseries.dat -y dtalpha_max_ext --logy \
+  --title "settling: max |d_t alpha| over 1 M <= r <= 10 M" -o demo/settling.png
+$py plots/plot_series.py demo/wormhole/timeseries.dat -y H_L2_ext -y M_L2_ext --logy \
+  --title "constraints: L2 norms of H and M_r over 1 M <= r <= 10 M" -o demo/constraints.png
 $py plots/compare_trumpet.py demo/wormhole/profiles.dat demo/trumpet-reference/profiles.dat \
   -o demo/alpha_vs_R.png
 
@@ -29,7 +31,8 @@ for n in 300 600 1200; do
 done
 $py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy \
   --label "N=300" --label "N=600" --label "N=1200" \
-  --title "1+log trumpet: H on [1, 10] M (4th order: x16 per doubling)" -o demo/trumpet_H.png
+  --title "1+log trumpet: H over 1 M <= r <= 10 M, uniform grids of M/7.5, M/15, M/30" \
+  -o demo/trumpet_H.png
 echo "== converge: the 1+log trumpet at N = 600, 900, 1200"
 $g converge --N 600,900,1200 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
   --rmax 40 --tmax 20 --dt-series 0.5 --norm-rmin 1 --norm-rmax 10 2>/dev/null
