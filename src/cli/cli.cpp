@@ -45,10 +45,7 @@ int evolve(Params p, bool print_config) {
   const std::filesystem::path dir(p.out);
   create_output_dir("--out", dir);
   const std::string config = config_text(p);
-  {
-    std::ofstream cfg(dir / "config.toml");
-    cfg << header_text("") << config;
-  }
+  write_file_atomically(dir / "config.toml", header_text("") + config);
   Output out(dir, config + sim.run_facts());
   sim.checkpoint_config = config;
   return run_and_report(sim, out, p);
@@ -125,11 +122,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   }
   sim.show_progress = true;
   sim.checkpoint_config = config;
-  {
-    const fs::path tmp = dir / "config.toml.tmp";
-    std::ofstream(tmp) << header_text("") << config;
-    fs::rename(tmp, dir / "config.toml");
-  }
+  write_file_atomically(dir / "config.toml", header_text("") + config);
   fmt::print(stderr, "gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step,
              p.tmax);
   Output out(dir, config + sim.run_facts(), c.marks);

@@ -35,6 +35,21 @@ std::vector<std::string> horizon_columns() {
   return {"t", "r_ah", "R_ah", "M_ah", "n_roots", "r_root2", "R_root2", "r_root3", "R_root3"};
 }
 
+void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out)
+      throw OutputError(fmt::format("cannot write {}", tmp.string()));
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec)
+    throw OutputError(fmt::format("cannot replace {}: {}", path.string(), ec.message()));
+}
+
 std::string header_text(const std::string& parameter_header) {
   std::string text = fmt::format("# gbssn1d {}\n", GBSSN1D_VERSION);
   std::istringstream lines(parameter_header);

@@ -111,6 +111,10 @@ private:
   bool first_block_ = true;
 };
 
+/// Writes `text` to `path` whole or not at all (a temporary file, then renamed over it);
+/// throws OutputError naming the file if it cannot.
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
 /// "# gbssn1d <version>" and the parameters as '#' lines.
 std::string header_text(const std::string& parameter_header);
 

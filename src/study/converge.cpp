@@ -36,27 +36,19 @@ struct MemberRecord {
 /// that a rerun of the study continues the member from the checkpoint: the step they belong
 /// to, then the rows and the samples, each list as a count and raw doubles.
 void write_samples(const fs::path& file, std::int64_t step, const MemberRecord& rec) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    auto put = [&](const void* p, std::size_t n) {
-      out.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
-    };
-    const std::uint64_t rows = rec.rows.size();
-    put(&step, sizeof(step));
-    put(&rows, sizeof(rows));
-    put(rec.rows.data(), rows * sizeof(SeriesRow));
-    for (const auto* list : {&rec.field_samples, &rec.H_samples})
-      for (const auto& v : *list) {
-        const std::uint64_t n = v.size();
-        put(&n, sizeof(n));
-        put(v.data(), n * sizeof(double));
-      }
-    out.flush();
-    if (!out)
-      throw OutputError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
+  std::string blob;
+  auto put = [&](const void* p, std::size_t n) { blob.append(static_cast<const char*>(p), n); };
+  const std::uint64_t rows = rec.rows.size();
+  put(&step, sizeof(step));
+  put(&rows, sizeof(rows));
+  put(rec.rows.data(), rows * sizeof(SeriesRow));
+  for (const auto* list : {&rec.field_samples, &rec.H_samples})
+    for (const auto& v : *list) {
+      const std::uint64_t n = v.size();
+      put(&n, sizeof(n));
+      put(v.data(), n * sizeof(double));
+    }
+  write_file_atomically(file, blob);
 }
 
 /// The samples saved with the checkpoint at `step`, or nothing (missing, other step, broken).
@@ -224,12 +216,11 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     n_times = std::min(n_times, rec.rows.size());
   const auto Nd = [&](std::size_t k) { return static_cast<double>(members[k].N); };
 
-  {
-    std::ofstream cfg(fs::path(options.out) / "config.toml");
-    cfg << header_text("") << "# converge: N = " << fmt::format("{}", fmt::join(options.N, ","))
-        << ", fields " << fmt::format("{}", fmt::join(options.fields, ",")) << "\n"
-        << base_config;
-  }
+  write_file_atomically(fs::path(options.out) / "config.toml",
+                        header_text("")
+                            + fmt::format("# converge: N = {}, fields {}\n",
+                                          fmt::join(options.N, ","), fmt::join(options.fields, ","))
+                            + base_config);
 
   // convergence.dat
   std::vector<std::string> cols{"t"};

@@ -105,19 +105,6 @@ bool member_done(const fs::path& status_file) {
   return status == "ok" || status == "invalid" || status == "blew-up" || status == "failed";
 }
 
-/// Written whole or not at all (temporary file, then rename).
-void write_status(const fs::path& status_file, const std::string& text) {
-  const fs::path tmp = status_file.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << text;
-    out.flush();
-    if (!out)
-      throw OutputError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, status_file);
-}
-
 std::string last_line(const fs::path& file) {
   std::ifstream in(file);
   std::string line, last;
@@ -333,7 +320,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
                 rc > 128 ? "killed by " + signal_name(rc - 128) : fmt::format("exit status {}", rc);
         }
       }
-      write_status(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
+      write_file_atomically(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
       const std::lock_guard lock(mutex);
       ++finished;
       fmt::print(stderr, "gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", finished, members.size(),
