@@ -308,15 +308,12 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       } else if constexpr (variant == Variant::driver_full_shift) {
         gd = full_shift(p);
       }
+      // beta_GD is the evolved field: (G2) advects it, and it is what dissipation damps
+      k6[index(Var::beta)] = fd::ko6(f);
+      p.adv_beta = fd::advect_from(p.beta * d1_scale, fd::lopsided_sum(f), k6[index(Var::beta)]);
       rhs = gbssn_rhs(p, gauge, gd);
       if constexpr (variant == Variant::delta_rhs_from_gd)
         rhs.Delta_r = rhs_Delta_r(p, metric_pieces(p), gd);
-      const double shift_advection = gauge.advective_shift ? 1.0 : 0.0;
-      k6[index(Var::beta)] = fd::ko6(f); // beta_GD is the evolved field
-      rhs.beta =
-          0.75 * p.B
-          + shift_advection
-                * fd::advect_from(p.beta * d1_scale, fd::lopsided_sum(f), k6[index(Var::beta)]);
     } else {
       rhs = gbssn_rhs(p, gauge, gd);
     }
