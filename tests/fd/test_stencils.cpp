@@ -75,10 +75,14 @@ TEST_CASE("stencils are not exact one degree higher (the tests can fail)") {
   const std::array<double, 6> c{0, 0, 0, 0, 0, 1.0}; // x^5
   const double h = 0.1, x0 = 0.37;
   const auto s = sample(c, x0, h);
-  CHECK(std::abs(fd::d1_centred(s.centre()) / h - derivative(c, x0, 1)) > 1e-6);
+  // the leading truncation errors, exact here (the next terms need f^(7), f^(8) = 0):
+  // D1 f - f' = -(h^4/30) f^(5) = -4 h^4 for x^5;  D2 f - f'' = -(h^4/90) f^(6) = -8 h^4 for x^6
+  CHECK(fd::d1_centred(s.centre()) / h - derivative(c, x0, 1)
+        == doctest::Approx(-4.0 * std::pow(h, 4)).epsilon(1e-9));
   const std::array<double, 7> c6{0, 0, 0, 0, 0, 0, 1.0}; // x^6
   const auto s6 = sample(c6, x0, h);
-  CHECK(std::abs(fd::d2_centred(s6.centre()) / (h * h) - derivative(c6, x0, 2)) > 1e-6);
+  CHECK(fd::d2_centred(s6.centre()) / (h * h) - derivative(c6, x0, 2)
+        == doctest::Approx(-8.0 * std::pow(h, 4)).epsilon(1e-9));
 }
 
 TEST_CASE("upwind stencils from the lopsided sum and the 6th difference equal the lopsided ones") {
