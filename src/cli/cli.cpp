@@ -254,6 +254,8 @@ int run_cli(int argc, char** argv) {
       app.add_subcommand("evolve", "evolve one black hole and write ASCII output");
   add_options(*evolve_cmd, params);
   evolve_cmd->footer(
+      "Lengths and times are in the units of --M (geometric units; with the default M = 1 "
+      "they are multiples of M); the areal windows --norm-R* are multiples of M.\n"
       "Output in --out DIR: config.toml (repeats the run with --config), timeseries.dat (a row "
       "per --dt-series; its last line says how the run ended), profiles.dat (a block per "
       "--dt-profiles), horizon.dat, checkpoint.bin (with --checkpoint-every or after a "

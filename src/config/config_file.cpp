@@ -26,10 +26,10 @@ struct ParamSpec {
 const std::vector<ParamSpec>& param_specs() {
   static const std::vector<ParamSpec> specs{
       {"N", &Params::N, "Grid", "number of cells"},
-      {"rmax", &Params::rmax, "Grid", "outer radius (M)"},
+      {"rmax", &Params::rmax, "Grid", "outer radius"},
       {"grid", &Params::grid, "Grid", "radial grid: uniform | sinh"},
       {"dr-inner", &Params::dr_inner, "Grid",
-       "innermost cell width (M) of the sinh grid at N = 400; it fixes the map r(x), so at N "
+       "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
        "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)"},
       {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
       {"M", &Params::M, "Initial data", "black-hole mass"},
@@ -45,26 +45,26 @@ const std::vector<ParamSpec>& param_specs() {
       {"chi-floor", &Params::chi_floor, "Numerics",
        "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
        "cross chi = 0 at the innermost cell during the lapse collapse"},
-      {"tmax", &Params::tmax, "Time", "final time (M); 0 writes the initial data only"},
-      {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat (M)"},
-      {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat (M)"},
+      {"tmax", &Params::tmax, "Time", "final time; 0 writes the initial data only"},
+      {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat"},
+      {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat"},
       {"checkpoint-every", &Params::checkpoint_every, "Output",
-       "simulated time (M) between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
+       "simulated time between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
        "(0: none; SIGTERM/SIGINT always write one)"},
-      {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms (M)"},
+      {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms"},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
-       "outer radius of the exterior norms (M); default min(10 M, rmax/2)"},
+       "outer radius of the exterior norms; default min(10 M, rmax/2)"},
       {"norm-Rmin", &Params::norm_Rmin, "Diagnostics",
        "areal-radius window of the *_R norms: norm-Rmin M <= R (the same place in every gauge)"},
       {"norm-Rmax", &Params::norm_Rmax, "Diagnostics", "... R <= norm-Rmax M"},
       {"norm-Rint", &Params::norm_Rint, "Diagnostics",
        "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon"},
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)"},
-      {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon (M)"},
+      {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon"},
       {"rah-width", &Params::rah_width, "Horizon",
-       "width w of f(r) (M), for every --rah-profile but auto"},
+       "width w of f(r), for every --rah-profile but auto"},
       {"rah-ramp", &Params::rah_ramp, "Horizon",
-       "T (M): the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
+       "T: the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
       {"rah-profile", &Params::rah_profile, "Horizon",
        "f(r), q = r/w: auto (rational with w = 3 M to stretch, rah0 >= 0.8304 M; gauss with "
        "w = 1 M to shrink; "
@@ -84,9 +84,9 @@ const std::vector<ParamSpec>& param_specs() {
        "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), step, or a number of steps"},
-      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time (M)"},
+      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time"},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time (< 0: none)"},
-      {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius (M)"},
+      {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius"},
       {"rah-variant", &Params::rah_variant, "Horizon",
        "consistent (the method); for the study only: no-shift-derivatives, "
        "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update"},
