@@ -176,6 +176,15 @@ void fill_horizon_shift(ShiftNormal normal, std::size_t n, const double* f, cons
 } // namespace
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
+  // r, 1/r, 1/r_x and the f_rr coefficient, block by block (interior)
+  const std::size_t n = grid.n_interior(), blocks = (n + block_size - 1) / block_size;
+  grid_blocks_.assign(blocks * 4 * block_size, 0.0);
+  const std::vector<double>* rows[4] = {&grid.r(), &grid.inv_r(), &grid.inv_dr_dx(),
+                                        &grid.d2_fx_coeff()};
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t v = 0; v < 4; ++v)
+      grid_blocks_[(k / block_size * 4 + v) * block_size + k % block_size] =
+          (*rows[v])[grid.first_interior() + k];
   if (params_.horizon_shift.active())
     profile_ = profile_on(grid, params_.horizon_shift);
 }
@@ -264,21 +273,17 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   // compile-time offsets, so that the point loop addresses them all from one base register:
   // with 10 input and 4 grid rows as separate pointers (and the 9 output rows) the loop spent
   // about 17% of its time reloading pointers (profile). Results are unchanged bit for bit.
-  constexpr std::size_t B = 256, W = B + 6; // block, and block with the halo
+  constexpr std::size_t B = block_size, W = B + 6; // block, and block with the halo
   constexpr std::size_t rows_in = n_vars + 1, rows_grid = 4;
-  thread_local std::vector<double> scratch((rows_in + rows_grid) * W); // one per thread
+  thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
   const double* full_rows[rows_in] = {in_full.alpha,   in_full.beta, in_full.B, in_full.chi,
                                       in_full.a,       in_full.b,    in_full.K, in_full.A_a,
                                       in_full.Delta_r, beta_GD_full};
-  const double* grid_rows[rows_grid] = {g.r().data(), g.inv_r().data(), g.inv_dr_dx().data(),
-                                        g.d2_fx_coeff().data()};
   for (std::size_t i0 = g.first_interior(); i0 < g.end_interior(); i0 += B) {
     const std::size_t n = std::min(B, g.end_interior() - i0);
     for (std::size_t v = 0; v < rows_in; ++v)
       std::copy(full_rows[v] + i0 - 3, full_rows[v] + i0 + n + 3, buf + v * W);
-    for (std::size_t v = 0; v < rows_grid; ++v)
-      std::copy(grid_rows[v] + i0, grid_rows[v] + i0 + n, buf + (rows_in + v) * W + 3);
     Rows in = in_full;
     in.alpha = buf + 0 * W + 3;
     in.beta = buf + 1 * W + 3;
@@ -290,10 +295,12 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
     in.A_a = buf + 7 * W + 3;
     in.Delta_r = buf + 8 * W + 3;
     const double* const beta_GD = buf + 9 * W + 3;
-    const double* const r = buf + 10 * W + 3;
-    const double* const inv_r = buf + 11 * W + 3;
-    const double* const inv_rx = buf + 12 * W + 3;
-    const double* const d2_fx = buf + 13 * W + 3;
+    // the grid factors of this block, laid out once per grid (grid_blocks_)
+    const double* const grid = grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B;
+    const double* const r = grid + 0 * B;
+    const double* const inv_r = grid + 1 * B;
+    const double* const inv_rx = grid + 2 * B;
+    const double* const d2_fx = grid + 3 * B;
     double* const out0 = dudt.data() + i0;
     double* const out_alpha = out0 + 0 * nt;
     double* const out_beta = out0 + 1 * nt;

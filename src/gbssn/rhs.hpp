@@ -193,8 +193,10 @@ private:
   RhsParams params_;
   std::uint64_t evaluations_ = 0;
   std::optional<double> h_AH_;
-  std::vector<double> profile_;            ///< f(r_i / w) on every point (fixed by the grid)
-  std::vector<double> beta_H_, beta_full_; ///< scratch of the horizon shift
+  std::vector<double> profile_;                  ///< f(r_i / w) on every point (fixed by the grid)
+  static constexpr std::size_t block_size = 256; ///< points per block of the point loop
+  std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs.cpp)
+  std::vector<double> beta_H_, beta_full_;       ///< scratch of the horizon shift
 };
 
 } // namespace gbssn1d
