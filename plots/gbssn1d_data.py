@@ -1,6 +1,7 @@
 """Reading gbssn1d ASCII output: columns are chosen by the names in the header, never by
 position. A file's last '#' line before the data names the columns; in profiles.dat each block
 opens with a '# t = <value>' line and blocks are separated by blank lines."""
+import os
 import sys
 
 import numpy as np
@@ -69,6 +70,13 @@ def style(plt):
 
 
 UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M'}
+
+
+def run_label(path):
+    """A file's legend label: its run's folder name, without the folders above it."""
+    if path == '-':
+        return 'stdin'
+    return os.path.basename(os.path.dirname(os.path.abspath(path))) or path
 
 
 def axis_label(name):

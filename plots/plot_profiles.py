@@ -12,7 +12,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 import numpy as np
 
-from gbssn1d_data import axis_label, column, finish, parse, read_text, style
+from gbssn1d_data import axis_label, column, finish, parse, read_text, run_label, style
 
 
 def main():
@@ -35,7 +35,7 @@ def main():
         columns, blocks = parse(read_text(path))
         times = np.array([t if t is not None else 0.0 for t, _ in blocks])
         wanted = [float(v) for v in a.times.split(',')] if a.times else sorted({times[0], times[-1]})
-        label = a.label[k] if a.label and k < len(a.label) else os.path.dirname(path) or path
+        label = a.label[k] if a.label and k < len(a.label) else run_label(path)
         for tw in wanted:
             t, data = blocks[int(np.argmin(abs(times - tw)))]
             x = column(columns, data, a.x)

@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import axis_label, column, finish, parse, read_text, style
+from gbssn1d_data import axis_label, column, finish, parse, read_text, run_label, style
 
 
 def main():
@@ -29,7 +29,7 @@ def main():
     for k, path in enumerate(a.files):
         columns, blocks = parse(read_text(path))
         data = blocks[0][1]
-        label = a.label[k] if a.label and k < len(a.label) else os.path.dirname(path) or path
+        label = a.label[k] if a.label and k < len(a.label) else run_label(path)
         for y in a.y:
             values = column(columns, data, y)
             ax.plot(column(columns, data, a.x), abs(values) if a.logy else values,
