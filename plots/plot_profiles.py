@@ -5,7 +5,6 @@
   plot_profiles.py A/profiles.dat B/profiles.dat -x R_areal -y alpha --times 1000 -o lapse.png
 """
 import argparse
-import os
 
 import matplotlib
 matplotlib.use('Agg')

@@ -5,7 +5,6 @@
   gbssn1d ... ; cat RUN/timeseries.dat | plot_series.py - -y alpha_center -o lapse.png
 """
 import argparse
-import os
 
 import matplotlib
 matplotlib.use('Agg')
