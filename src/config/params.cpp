@@ -294,9 +294,9 @@ InitialDataParams initial_data_params(const Params& p) {
 
 RhsParams rhs_params(const Params& p) {
   RhsParams r;
-  r.gauge.eta = p.eta;
-  r.gauge.advective_shift = p.advective_shift;
-  r.gauge.advective_lapse = !p.non_advective_lapse;
+  r.gauge.shift.eta = p.eta;
+  r.gauge.shift.advective = p.advective_shift;
+  r.gauge.slicing.advective = !p.non_advective_lapse;
   r.ko_sigma = p.ko_sigma;
   r.horizon_shift.A = p.rahA;
   r.horizon_shift.h = p.rah0;

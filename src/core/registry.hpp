@@ -2,8 +2,9 @@
 //
 // Every evolved field is named here once, with its index in the state vector, the name printed
 // in output headers, its parity at r = 0 (equations document, Sec. 7) and its asymptotic value,
-// wave speed and fall-off for the Sommerfeld outer boundary (Sec. 8). Ghost zones, boundary
-// conditions and output columns are all driven from this table.
+// wave family and fall-off for the Sommerfeld outer boundary (Sec. 8); the family's speed comes
+// from the gauge (gbssn/gauge.hpp). Ghost zones, point data, boundary conditions and output
+// columns are all driven from this table.
 #pragma once
 
 #include <array>
@@ -17,29 +18,34 @@ enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r };
 
 inline constexpr std::size_t n_vars = 9;
 
+/// The characteristic family whose outgoing mode a variable carries at the outer boundary.
+enum class Wave {
+  light,   ///< speed 1
+  slicing, ///< the lapse's gauge mode: sqrt(mu_L), sqrt(2) for 1+log
+  shift,   ///< the Gamma-driver's longitudinal mode: sqrt(4 xi / 3), 1 for xi = 3/4
+};
+
 struct VarInfo {
   Var var;
   std::string_view name; ///< column name in output files
   int parity;            ///< +1 even, -1 odd under r -> -r
   double asymptotic;     ///< f_inf, the value at spatial infinity
-  double speed;          ///< Sommerfeld wave speed v
+  Wave wave;             ///< family of the Sommerfeld wave speed v (Gauge::speed)
   double falloff;        ///< n in f - f_inf ~ u(r - v t) / r^n
 };
 
-inline constexpr double sqrt2 = 1.41421356237309504880;
-
-// Sec. 7 (parity) and Sec. 8 (asymptotics). K carries the 1+log gauge mode, so it leaves at
-// the gauge speed sqrt(2), like alpha.
+// Sec. 7 (parity) and Sec. 8 (asymptotics). K carries the slicing's gauge mode, so it leaves
+// at the slicing's speed, like alpha; beta, B and Delta^r at the shift's.
 inline constexpr std::array<VarInfo, n_vars> registry{{
-    {Var::alpha, "alpha", +1, 1.0, sqrt2, 1.0},
-    {Var::beta, "beta", -1, 0.0, 1.0, 1.0},
-    {Var::B, "B", -1, 0.0, 1.0, 1.0},
-    {Var::chi, "chi", +1, 1.0, 1.0, 1.0},
-    {Var::a, "a", +1, 1.0, 1.0, 1.0},
-    {Var::b, "b", +1, 1.0, 1.0, 1.0},
-    {Var::K, "K", +1, 0.0, sqrt2, 1.0},
-    {Var::A_a, "A_a", +1, 0.0, 1.0, 1.0},
-    {Var::Delta_r, "Delta_r", -1, 0.0, 1.0, 1.0},
+    {Var::alpha, "alpha", +1, 1.0, Wave::slicing, 1.0},
+    {Var::beta, "beta", -1, 0.0, Wave::shift, 1.0},
+    {Var::B, "B", -1, 0.0, Wave::shift, 1.0},
+    {Var::chi, "chi", +1, 1.0, Wave::light, 1.0},
+    {Var::a, "a", +1, 1.0, Wave::light, 1.0},
+    {Var::b, "b", +1, 1.0, Wave::light, 1.0},
+    {Var::K, "K", +1, 0.0, Wave::slicing, 1.0},
+    {Var::A_a, "A_a", +1, 0.0, Wave::light, 1.0},
+    {Var::Delta_r, "Delta_r", -1, 0.0, Wave::shift, 1.0},
 }};
 
 constexpr std::size_t index(Var v) {

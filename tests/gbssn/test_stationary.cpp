@@ -181,7 +181,7 @@ TEST_CASE("1+log trumpet: every RHS, gauge included, converges to zero (also wit
   id.kind = InitialDataKind::onelog_trumpet;
   RhsParams params;
   params.ko_sigma = 0.0;
-  params.gauge.eta = 2.0;
+  params.gauge.shift.eta = 2.0;
   check_order(
       "1+log trumpet", [&](const Grid& g) { return initial_data(g, id); }, all_vars, 0.5, 6.0, 10.0,
       {200, 400, 800}, params);
@@ -227,20 +227,25 @@ TEST_CASE("outer boundary: K and alpha leave at the gauge speed sqrt(2), the res
   id.kind = InitialDataKind::onelog_trumpet;
   const Grid g(RadialMap::uniform(40.0), 400);
   const State u = initial_data(g, id);
-  GbssnRhs rhs(g, RhsParams{});
-  State dudt;
-  rhs(u, dudt, 0.0);
-  const double gauge_speed = std::sqrt(2.0 * 1.0 * 1.0); // f alpha^2 gamma^rr with f = 2/alpha
-  for (const auto& e : registry) {
-    const bool gauge_mode = e.var == Var::K || e.var == Var::alpha;
-    const double v = gauge_mode ? gauge_speed : 1.0;
-    const auto f = field(u, g, e.var);
-    const std::size_t i = g.end_interior(); // the first outer ghost
-    const double d_r =
-        (25.0 * f[i] - 48.0 * f[i - 1] + 36.0 * f[i - 2] - 16.0 * f[i - 3] + 3.0 * f[i - 4])
-        / (12.0 * g.dx() * g.map().dr_dx(g.x()[i]));
-    const double expected = -v * (d_r + e.falloff * (f[i] - e.asymptotic) / g.r()[i]);
-    INFO(e.name);
-    CHECK(field(dudt, g, e.var)[i] == doctest::Approx(expected).epsilon(1e-10).scale(1e-12));
+  // 1+log (mu_L = 2), and a slicing d_t alpha = -alpha K (mu_L = 1): the speed follows the gauge
+  for (const double mu_L : {2.0, 1.0}) {
+    RhsParams params;
+    params.gauge.slicing.mu_L = mu_L;
+    GbssnRhs rhs(g, params);
+    State dudt;
+    rhs(u, dudt, 0.0);
+    const double gauge_speed = std::sqrt(mu_L * 1.0 * 1.0); // f alpha^2 gamma^rr, f = mu_L/alpha
+    for (const auto& e : registry) {
+      const bool gauge_mode = e.var == Var::K || e.var == Var::alpha;
+      const double v = gauge_mode ? gauge_speed : 1.0;
+      const auto f = field(u, g, e.var);
+      const std::size_t i = g.end_interior(); // the first outer ghost
+      const double d_r =
+          (25.0 * f[i] - 48.0 * f[i - 1] + 36.0 * f[i - 2] - 16.0 * f[i - 3] + 3.0 * f[i - 4])
+          / (12.0 * g.dx() * g.map().dr_dx(g.x()[i]));
+      const double expected = -v * (d_r + e.falloff * (f[i] - e.asymptotic) / g.r()[i]);
+      INFO(e.name << ", mu_L = " << mu_L);
+      CHECK(field(dudt, g, e.var)[i] == doctest::Approx(expected).epsilon(1e-10).scale(1e-12));
+    }
   }
 }

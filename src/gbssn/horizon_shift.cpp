@@ -1,0 +1,58 @@
+#include "gbssn/horizon_shift.hpp"
+
+#include "core/registry.hpp"
+
+namespace gbssn1d {
+
+std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& params) {
+  std::vector<double> f(grid.n_total());
+  for (std::size_t i = 0; i < f.size(); ++i)
+    f[i] = shift_profile(params.profile, grid.r()[i] / params.width); // odd
+  return f;
+}
+
+namespace {
+
+/// One loop per normal, so that each vectorises.
+template <ShiftNormal normal>
+void fill_horizon_shift(std::size_t n, const double* f, const double* chi, const double* a,
+                        double amplitude, double chi_smooth, double* beta_H,
+                        const double* beta_GD = nullptr, double* beta_full = nullptr) {
+  for (std::size_t i = 0; i < n; ++i) {
+    beta_H[i] = f[i] * amplitude * shift_normal(normal, chi[i], a[i], chi_smooth); // s^r even
+    if (beta_full)
+      beta_full[i] = beta_GD[i] + beta_H[i];
+  }
+}
+
+} // namespace
+
+void horizon_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
+                      const double* a, double amplitude, double chi_smooth, double* beta_H,
+                      const double* beta_GD, double* beta_full) {
+  switch (normal) { // dispatched once per call
+  case ShiftNormal::conformal:
+    return fill_horizon_shift<ShiftNormal::conformal>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                      beta_GD, beta_full);
+  case ShiftNormal::smooth:
+    return fill_horizon_shift<ShiftNormal::smooth>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                   beta_GD, beta_full);
+  case ShiftNormal::unit:
+  default:
+    return fill_horizon_shift<ShiftNormal::unit>(n, f, chi, a, amplitude, chi_smooth, beta_H,
+                                                 beta_GD, beta_full);
+  }
+}
+
+void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
+                           std::optional<double> h_AH, std::vector<double>& beta_H, double t) {
+  beta_H.assign(grid.n_total(), 0.0);
+  if (!h_AH || params.A == 0.0)
+    return;
+  const double amplitude = params.strength(t) * (*h_AH - params.h);
+  horizon_shift_on(params.normal, grid.n_total(), profile_on(grid, params).data(),
+                   field(u, grid, Var::chi).data(), field(u, grid, Var::a).data(), amplitude,
+                   params.chi_smooth, beta_H.data());
+}
+
+} // namespace gbssn1d

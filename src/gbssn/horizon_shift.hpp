@@ -1,0 +1,145 @@
+// The horizon-adjusting shift (equations document, Sec. 14), the method under study:
+//   beta = beta_GD + beta_H,   beta_H = f(r) A (h_AH - h) s^r,
+// with its profiles f, normals s^r, the strength ramp and the deliberately inconsistent variants
+// of the study. The equations use it through GbssnRhs (gbssn/rhs.cpp); beta_H is written here
+// once (horizon_shift_on), for the right-hand side and for output alike.
+#pragma once
+
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace gbssn1d {
+
+/// Radial profile f(r) of the horizon-adjusting shift, q = r/w. Each is odd in r with its
+/// largest value 1/2 or about it, and falls off like 1/q (rational) or like a Gaussian.
+enum class ShiftProfile {
+  automatic, ///< chosen by the direction of the move: see resolve_automatic_profile()
+  rational,  ///< q / (1 + q^2): the published f(r) of (H3); f ~ r at the origin
+  rational3, ///< q^3 / (1 + q^4): the same fall-off, but f ~ r^3 at the origin
+  gauss,     ///< (q/2) exp((1 - q^2)/2): concentrated at r ~ w, f ~ r at the origin
+  gauss3,    ///< (q^3/2) exp(3 (1 - q^2)/2): concentrated at r ~ w, f ~ r^3 at the origin
+};
+
+/// The radial vector s^r that beta_H points along.
+enum class ShiftNormal {
+  unit,      ///< sqrt(chi/a), the unit normal of (H3); ~ |r| at a trumpet's puncture (a kink)
+  smooth,    ///< sqrt((chi + chi_s)/a): smooth and even at the puncture, close to `unit`
+             ///< where chi >> chi_s (HorizonShiftParams::chi_smooth)
+  conformal, ///< 1/sqrt(a), the unit normal of the conformal metric: smooth and even
+};
+
+/// f(r) of the profile, at r/w = q.
+inline double shift_profile(ShiftProfile profile, double q) {
+  switch (profile) {
+  case ShiftProfile::rational3:
+    return q * q * q / (1.0 + q * q * q * q);
+  case ShiftProfile::gauss:
+    return 0.5 * q * std::exp(0.5 * (1.0 - q * q));
+  case ShiftProfile::gauss3:
+    return 0.5 * q * q * q * std::exp(1.5 * (1.0 - q * q));
+  case ShiftProfile::automatic: // resolved before use
+  case ShiftProfile::rational:
+  default:
+    return q / (1.0 + q * q);
+  }
+}
+
+/// s^r of the chosen normal. chi < 0 (which a coarse evolution can produce in the innermost
+/// cell) counts as 0, so that s^r stays finite.
+inline double shift_normal(ShiftNormal normal, double chi, double a, double chi_smooth) {
+  const double chi_pos = chi > 0.0 ? chi : 0.0;
+  switch (normal) {
+  case ShiftNormal::smooth:
+    return std::sqrt((chi_pos + chi_smooth) / a);
+  case ShiftNormal::conformal:
+    return 1.0 / std::sqrt(a);
+  case ShiftNormal::unit:
+  default:
+    return std::sqrt(chi_pos / a);
+  }
+}
+
+/// The horizon-adjusting shift (equations document, Sec. 14):
+///   beta = beta_GD + beta_H,   beta_H = f(r) A (h_AH - h) s^r,
+/// (H3) with f(r) = (r/w) / (1 + (r/w)^2) and s^r = sqrt(chi/a); other profiles and normals are
+/// offered for the study of the method. The evolved shift variable is beta_GD; B is driven by
+/// d_t Delta^r computed with beta_GD alone (H2), every other term sees the full beta.
+struct HorizonShiftParams {
+  double A = 0.0;     ///< strength; 0 switches the horizon shift off
+  double h = 0.89;    ///< desired coordinate radius of the horizon
+  double width = 1.0; ///< w
+  double ramp = 0.0;  ///< T: the strength grows as A (1 - exp(-(t/T)^2)) (0: A from t = 0)
+  ShiftProfile profile = ShiftProfile::rational;
+  ShiftNormal normal = ShiftNormal::unit;
+  double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth
+  /// true: h_AH is found on the state of every RK substage (the RHS is a function of the state
+  /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
+  bool search_every_substage = true;
+  double t_min = 0.0, t_max = -1.0; ///< substage searches only in this window (t_max < 0: none)
+  /// Open loop: h_AH(t) prescribed as a function of time (no searches); empty: closed loop.
+  std::function<double(double)> prescribed_h_AH;
+  /// Deliberately inconsistent implementations, for the study of why a 3D code lost
+  /// convergence; `consistent` is the method as specified above.
+  enum class Variant {
+    consistent,
+    no_shift_derivatives,        ///< beta_H added to the shift's value only: derivatives of beta_GD
+    no_shift_second_derivatives, ///< ... only the second derivatives of beta_GD
+    delta_rhs_from_gd,           ///< d_t Delta^r computed with beta_GD (for B) reused for Delta^r
+    driver_full_shift,           ///< B driven by d_t Delta^r of the full shift
+    midstep_update,              ///< h_AH searched at the 2nd RK substage of every n-th step
+  };
+  Variant variant = Variant::consistent;
+  long midstep_every = 1; ///< n of midstep_update
+  /// The apparent horizon's radius on `u` near `seed` at time t (nullopt: none), for the
+  /// searches inside the right-hand side. Set by the evolution (evolution/simulation.cpp), so
+  /// that the equations do not depend on the finder; it may throw.
+  std::function<std::optional<double>(const State& u, const Grid& grid, double seed, double t)>
+      locate;
+  bool active() const { return A != 0.0; }
+  /// The strength at time t.
+  double strength(double t) const {
+    return ramp > 0.0 ? A * (1.0 - std::exp(-(t / ramp) * (t / ramp))) : A;
+  }
+  bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
+};
+
+/// Coordinate radius of the apparent horizon of the stationary 1+log trumpet, 0.8304 M: where
+/// 1+log slicing with the Gamma-driver puts the horizon of Schwarzschild in the end (all three
+/// initial data sets approach it; the maximal trumpet slowly).
+inline constexpr double standard_horizon_radius = 0.8304;
+
+/// The profile and width that ShiftProfile::automatic stands for, chosen from the experiments
+/// of docs/horizon-shift-study.md: to stretch (h >= 0.8304 M, the standard horizon), the
+/// published rational profile with w = 3 M (wide: H outside stays at the standard gauge's); to
+/// shrink (h < 0.8304 M), the Gaussian with w = 1 M (concentrated at the horizon; wider profiles
+/// lose a clean convergence order there). Other profiles are left as they are.
+inline void resolve_automatic_profile(HorizonShiftParams& params, double M) {
+  if (params.profile != ShiftProfile::automatic)
+    return;
+  const bool stretch = params.h >= standard_horizon_radius * M;
+  params.profile = stretch ? ShiftProfile::rational : ShiftProfile::gauss;
+  params.width = (stretch ? 3.0 : 1.0) * M;
+}
+
+/// f(r_i / w) on every point of the grid (odd in r).
+std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& params);
+
+/// beta_H = f amplitude s^r (H3) on n points, f = profile_on(...), amplitude = A(t) (h_AH - h),
+/// and beta_full = beta_GD + beta_H if beta_GD and beta_full are given.
+void horizon_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
+                      const double* a, double amplitude, double chi_smooth, double* beta_H,
+                      const double* beta_GD = nullptr, double* beta_full = nullptr);
+
+/// f(r) A (h_AH - h) s^r on every point (ghosts included; odd in r like beta), or zero
+/// everywhere without a horizon radius.
+void horizon_shift_profile(const State& u, const Grid& grid, const HorizonShiftParams& params,
+                           std::optional<double> h_AH, std::vector<double>& beta_H,
+                           double t = std::numeric_limits<double>::infinity());
+
+} // namespace gbssn1d
