@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
       }
       resolve_defaults(p);
       validate(p);
-      Simulation sim(p);
+      Simulation sim(evolution_config(p));
       GbssnRhs rhs(sim.grid(), sim.rhs().params()); // with the horizon locator
       State dudt(sim.state().size());
       using clock = std::chrono::steady_clock;

@@ -1,6 +1,7 @@
 #include "cli/cli.hpp"
 
 #include "config/config_file.hpp"
+#include "config/params.hpp"
 #include "core/stop_signal.hpp"
 #include "evolution/simulation.hpp"
 #include "study/converge.hpp"
@@ -40,7 +41,7 @@ int evolve(Params p, bool print_config) {
   for (const auto& w : warnings(p))
     fmt::print(stderr, "gbssn1d: warning: {}\n", w);
 
-  Simulation sim(p); // initial data are computed before anything is written
+  Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
   const std::filesystem::path dir(p.out);
   create_output_dir("--out", dir);
@@ -114,7 +115,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),
                      fmt::format("is before the checkpoint at t = {}", c.t));
-  Simulation sim(p);
+  Simulation sim(evolution_config(p));
   try {
     sim.restore(c);
   } catch (const CheckpointError& e) {

@@ -221,7 +221,7 @@ void validate(const Params& p) {
                      "needs searches every n steps (--ah-every step or a number)");
 
   // The Gamma-driver's damping term limits the step independently of the spacing.
-  const double dt = p.cfl * make_grid(p).min_spacing();
+  const double dt = time_step(p.cfl, make_grid(grid_spec(p)));
   // The step count (the step is the CFL step whatever the output cadence) and the row counts.
   const double n_steps = std::ceil(p.tmax / dt - 1e-9);
   if (n_steps > steps_max)
@@ -274,12 +274,36 @@ void create_output_dir(const std::string& flag, const std::filesystem::path& dir
     throw ParamError(flag, dir.string(), "cannot be created: " + ec.message());
 }
 
-Grid make_grid(const Params& p) {
-  const auto n = static_cast<std::size_t>(p.N);
-  if (p.grid == "uniform")
-    return Grid(RadialMap::uniform(p.rmax), n);
-  // One map for every N (the shape is fixed at the reference N): --N alone refines.
-  return Grid(RadialMap::sinh(p.rmax, p.dr_inner, sinh_reference_N), n);
+GridSpec grid_spec(const Params& p) {
+  GridSpec spec;
+  spec.kind = p.grid == "uniform" ? GridKind::uniform : GridKind::sinh;
+  spec.N = static_cast<std::size_t>(p.N);
+  spec.rmax = p.rmax;
+  spec.dr_inner = p.dr_inner;
+  return spec;
+}
+
+EvolutionConfig evolution_config(const Params& p) {
+  EvolutionConfig c;
+  c.grid = grid_spec(p);
+  c.initial_data = initial_data_params(p);
+  c.rhs = rhs_params(p);
+  c.cfl = p.cfl;
+  c.chi_floor = p.chi_floor;
+  c.tmax = p.tmax;
+  c.dt_series = p.dt_series;
+  c.dt_profiles = p.dt_profiles;
+  c.checkpoint_every = p.checkpoint_every;
+  c.norms.rmin = p.norm_rmin;
+  c.norms.rmax = p.norm_rmax;
+  c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
+  c.norms.Rmax = p.norm_Rmax * p.M;
+  c.norms.Rint = p.norm_Rint * p.M;
+  c.horizon_search.every_steps = ah_every_steps(p);
+  c.horizon_search.t_min = p.ah_tmin;
+  c.horizon_search.t_max = p.ah_tmax;
+  c.horizon_search.tolerance = p.ah_tol;
+  return c;
 }
 
 InitialDataParams initial_data_params(const Params& p) {
@@ -326,10 +350,6 @@ RhsParams rhs_params(const Params& p) {
     r.horizon_shift.midstep_every = ah_every_steps(p);
   }
   return r;
-}
-
-double time_step(const Params& p, const Grid& grid) {
-  return p.cfl * grid.min_spacing();
 }
 
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {

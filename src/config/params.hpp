@@ -1,9 +1,7 @@
 // All run parameters in one struct, with defaults, and their validation.
 #pragma once
 
-#include "gbssn/rhs.hpp"
-#include "grid/grid.hpp"
-#include "initial_data/initial_data.hpp"
+#include "evolution/evolution_config.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -12,10 +10,6 @@
 #include <vector>
 
 namespace gbssn1d {
-
-/// The sinh grid is one map for every N: --dr-inner is its innermost cell width at this N, so
-/// that at N cells every spacing is (sinh_reference_N / N) times the reference grid's.
-inline constexpr int sinh_reference_N = 400;
 
 /// The value of Params::eta that stands for its default, 2/M (resolve_defaults).
 inline constexpr double eta_default = -1.0;
@@ -102,11 +96,12 @@ void validate_output_dir(const Params& p);
 /// text leaks out).
 void create_output_dir(const std::string& flag, const std::filesystem::path& dir);
 
-// Conversions of the validated parameters into the pieces the code uses.
-Grid make_grid(const Params& p);
+// Conversions of the validated (and resolved) parameters into the typed pieces the code uses.
+/// The evolution's configuration; may read --rah-hAH-file (ParamError if it cannot).
+EvolutionConfig evolution_config(const Params& p);
+GridSpec grid_spec(const Params& p);
 InitialDataParams initial_data_params(const Params& p);
 RhsParams rhs_params(const Params& p);
-double time_step(const Params& p, const Grid& grid);
 
 /// h_AH(t) read from the columns `t` and `r_ah` of a gbssn1d output file (horizon.dat or
 /// timeseries.dat), as a cubic B-spline in t (C2, so that RK4 sees a smooth function). Throws

@@ -30,10 +30,10 @@ Interrupted::Interrupted(int signal_, double t_)
     : std::runtime_error(fmt::format("interrupted by {} at t = {:.6g}", signal_name(signal_), t_)),
       signal(signal_), t(t_) {}
 
-Schedule make_schedule(const Params& p, const Grid& grid) {
+Schedule make_schedule(const EvolutionConfig& config, const Grid& grid) {
   Schedule s;
-  s.dt = time_step(p, grid);
-  s.n_steps = static_cast<long>(std::ceil(p.tmax / s.dt - 1e-9));
+  s.dt = time_step(config.cfl, grid);
+  s.n_steps = static_cast<long>(std::ceil(config.tmax / s.dt - 1e-9));
   return s;
 }
 
@@ -49,11 +49,11 @@ void hermite_interpolate(const State& u0, const State& f0, const State& u1, cons
 
 namespace {
 
-/// rhs_params(p) with the horizon finder as the RHS's locator (substage searches).
-RhsParams rhs_params_with_finder(const Params& p) {
-  RhsParams r = rhs_params(p);
+/// The configuration's RHS with the horizon finder as its locator (substage searches).
+RhsParams rhs_params_with_finder(const EvolutionConfig& config) {
+  RhsParams r = config.rhs;
   HorizonFinderParams finder;
-  finder.tolerance = p.ah_tol;
+  finder.tolerance = config.horizon_search.tolerance;
   r.horizon_shift.locate = [finder](const State& u, const Grid& grid, double seed,
                                     double t) -> std::optional<double> {
     try {
@@ -68,15 +68,10 @@ RhsParams rhs_params_with_finder(const Params& p) {
 
 } // namespace
 
-Simulation::Simulation(const Params& p)
-    : params_(p), grid_(std::make_unique<Grid>(make_grid(p))),
-      rhs_(*grid_, rhs_params_with_finder(p)), diagnostic_rhs_(rhs_),
-      u_(initial_data(*grid_, initial_data_params(p))), schedule_(make_schedule(p, *grid_)),
-      ah_every_(ah_every_steps(p)) {}
-
-bool Simulation::in_search_window(double t) const {
-  return t >= params_.ah_tmin && (params_.ah_tmax < 0.0 || t <= params_.ah_tmax);
-}
+Simulation::Simulation(const EvolutionConfig& config)
+    : config_(config), grid_(std::make_unique<Grid>(make_grid(config.grid))),
+      rhs_(*grid_, rhs_params_with_finder(config)), diagnostic_rhs_(rhs_),
+      u_(initial_data(*grid_, config.initial_data)), schedule_(make_schedule(config, *grid_)) {}
 
 template <class Search>
 auto Simulation::with_time(Search search) const {
@@ -89,7 +84,7 @@ auto Simulation::with_time(Search search) const {
 
 HorizonFinderParams Simulation::finder() const {
   HorizonFinderParams finder;
-  finder.tolerance = params_.ah_tol;
+  finder.tolerance = config_.horizon_search.tolerance;
   return finder;
 }
 
@@ -103,7 +98,7 @@ std::optional<double> Simulation::horizon_radius() {
     return std::nullopt;
   if (hs.prescribed())
     return hs.prescribed_h_AH(t_);
-  if (ah_every_ == 0 && in_search_window(t_)) {
+  if (config_.horizon_search.every_steps == 0 && config_.horizon_search.in_window(t_)) {
     const auto found = with_time([&] {
       return find_horizon_near(u_, *grid_, finder(), rhs_.horizon_radius().value_or(hs.h));
     });
@@ -120,7 +115,8 @@ std::vector<double> Simulation::horizon_shift() {
 
 void Simulation::update_held_horizon() {
   const auto& hs = rhs_.params().horizon_shift;
-  if (!hs.active() || hs.prescribed() || ah_every_ == 0 || !in_search_window(t_)
+  if (!hs.active() || hs.prescribed() || config_.horizon_search.every_steps == 0
+      || !config_.horizon_search.in_window(t_)
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
   const auto found = with_time([&] {
@@ -153,25 +149,25 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
   row.t = t_;
   row.alpha_center = central_value(field(u_, g, Var::alpha), g);
   row.H_L2 = l2_norm(d.H, g, 0.0, inf);
-  row.H_L2_ext = l2_norm(d.H, g, params_.norm_rmin, params_.norm_rmax);
+  const NormWindows& w = config_.norms;
+  row.H_L2_ext = l2_norm(d.H, g, w.rmin, w.rmax);
   row.M_L2 = l2_norm(d.M_r, g, 0.0, inf);
-  row.M_L2_ext = l2_norm(d.M_r, g, params_.norm_rmin, params_.norm_rmax);
+  row.M_L2_ext = l2_norm(d.M_r, g, w.rmin, w.rmax);
   row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
-  row.G_L2_ext = l2_norm(d.G_r, g, params_.norm_rmin, params_.norm_rmax);
-  const double M = params_.M;
-  row.H_L2_R = l2_norm_areal(d.H, d.R_areal, params_.norm_Rmin * M, params_.norm_Rmax * M);
-  row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, params_.norm_Rmin * M, params_.norm_Rmax * M);
-  row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, params_.norm_Rint * M);
+  row.G_L2_ext = l2_norm(d.G_r, g, w.rmin, w.rmax);
+  row.H_L2_R = l2_norm_areal(d.H, d.R_areal, w.Rmin, w.Rmax);
+  row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, w.Rmin, w.Rmax);
+  row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, w.Rint);
   diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
   diagnostic_rhs_(u_, dudt_, t_);
   const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
   const auto horizon = found.horizon();
   row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
   row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
-  row.M_ah_err = row.M_ah - M;
+  row.M_ah_err = row.M_ah - config_.initial_data.M;
   row.dtalpha_max_ext = 0.0;
   for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
-    if (g.r()[i] >= params_.norm_rmin && g.r()[i] <= params_.norm_rmax)
+    if (g.r()[i] >= config_.norms.rmin && g.r()[i] <= config_.norms.rmax)
       row.dtalpha_max_ext = std::max(row.dtalpha_max_ext, std::abs(dt_alpha[i]));
   return row;
 }
@@ -184,13 +180,13 @@ std::string Simulation::run_facts() const {
 void Simulation::step(double dt) {
   stepper_.do_step(std::ref(rhs_), u_, t_, dt);
   t_ += dt;
-  apply_chi_floor(u_, *grid_, params_.chi_floor);
+  apply_chi_floor(u_, *grid_, config_.chi_floor);
 }
 
 void Simulation::step(double dt, const State& dudt) {
   stepper_.do_step(std::ref(rhs_), u_, dudt, t_, dt);
   t_ += dt;
-  apply_chi_floor(u_, *grid_, params_.chi_floor);
+  apply_chi_floor(u_, *grid_, config_.chi_floor);
 }
 
 void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
@@ -225,7 +221,7 @@ void Simulation::restore(const Checkpoint& c) {
         fmt::format("the checkpoint's step {} is not this run's {}", c.dt, schedule_.dt));
   if (c.step > schedule_.n_steps)
     throw CheckpointError(
-        fmt::format("the checkpoint at t = {} lies beyond --tmax = {}", c.t, params_.tmax));
+        fmt::format("the checkpoint at t = {} lies beyond --tmax = {}", c.t, config_.tmax));
   u_ = c.u;
   t_ = c.t;
   step_ = c.step;
@@ -257,15 +253,15 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
 
 void Simulation::run(Output* out) {
   const Schedule& s = schedule_;
-  const double t_end = params_.tmax;
+  const double t_end = config_.tmax;
   // Output times: k dt_series, k dt_profiles and tmax, each written once (to round-off).
   long& k_series = k_series_;
   long& k_profiles = k_profiles_;
   auto next_series = [&] {
-    return std::min(static_cast<double>(k_series) * params_.dt_series, t_end);
+    return std::min(static_cast<double>(k_series) * config_.dt_series, t_end);
   };
   auto next_profiles = [&] {
-    return std::min(static_cast<double>(k_profiles) * params_.dt_profiles, t_end);
+    return std::min(static_cast<double>(k_profiles) * config_.dt_profiles, t_end);
   };
   auto write = [&](bool series, bool profiles) {
     if (out && (series || profiles)) {
@@ -323,7 +319,7 @@ void Simulation::run(Output* out) {
     return;
   // Checkpoints at full steps (never after the shortened last one, so that a resumed run with
   // a later tmax steps exactly as an uninterrupted one).
-  const double every = params_.checkpoint_every;
+  const double every = config_.checkpoint_every;
   double next_checkpoint = every > 0.0 ? (std::floor(t_ / every + 1e-9) + 1.0) * every
                                        : std::numeric_limits<double>::infinity();
   auto save = [&](const std::optional<double>& h_AH) {
@@ -353,7 +349,7 @@ void Simulation::run(Output* out) {
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
     check_finite();
-    if (ah_every_ > 0 && n % ah_every_ == 0)
+    if (const long every = config_.horizon_search.every_steps; every > 0 && n % every == 0)
       update_held_horizon();
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)
     const std::optional<double> h_AH_before_rhs = rhs_.horizon_radius();

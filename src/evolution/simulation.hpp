@@ -2,9 +2,9 @@
 // (Boost.Odeint), with output at fixed cadences in time.
 #pragma once
 
-#include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/checkpoint.hpp"
+#include "evolution/evolution_config.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
 
@@ -46,7 +46,7 @@ struct Schedule {
   double dt;
   long n_steps;
 };
-Schedule make_schedule(const Params& p, const Grid& grid);
+Schedule make_schedule(const EvolutionConfig& config, const Grid& grid);
 
 /// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
 /// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
@@ -60,10 +60,10 @@ void apply_chi_floor(State& u, const Grid& grid, double chi_floor);
 
 class Simulation {
 public:
-  /// Builds the grid, the right-hand side and the initial data. `p` must be validated.
-  explicit Simulation(const Params& p);
+  /// Builds the grid, the right-hand side and the initial data.
+  explicit Simulation(const EvolutionConfig& config);
 
-  const Params& params() const { return params_; }
+  const EvolutionConfig& config() const { return config_; }
   const Grid& grid() const { return *grid_; }
   const GbssnRhs& rhs() const { return rhs_; }
   State& state() { return u_; }
@@ -129,7 +129,6 @@ public:
   static constexpr double alpha_max = 10.0; ///< alpha <= 1 in these spacetimes
 
 private:
-  bool in_search_window(double t) const;
   HorizonFinderParams finder() const; ///< the finder's settings (--ah-tol)
   /// Runs a horizon search; a HorizonFinderError gets the current time added.
   template <class Search>
@@ -139,7 +138,7 @@ private:
   /// Say on stderr when the horizon appears or disappears.
   void report_horizon(const std::optional<MarginalSurface>& h);
 
-  Params params_;
+  EvolutionConfig config_;
   std::unique_ptr<Grid> grid_;
   GbssnRhs rhs_;
   GbssnRhs diagnostic_rhs_; ///< separate, so RHS evaluations of the evolution stay countable
@@ -149,8 +148,7 @@ private:
   double t_ = 0.0;
   Schedule schedule_;
   boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers
-  long ah_every_;                      ///< 0: every substage; n >= 1: every n steps
-  long step_ = 0;                      ///< steps taken
+  long step_ = 0;                                       ///< steps taken
   long k_series_ = 1, k_profiles_ = 1; ///< next output times k dt_series, k dt_profiles
   bool resumed_ = false;               ///< restore() was called: run() continues, no initial output
   std::uint64_t evaluations_before_rhs_ = 0; ///< RHS count before the current step's k1

@@ -92,4 +92,10 @@ std::string to_string(GridKind kind) {
   return kind == GridKind::uniform ? "uniform" : "sinh";
 }
 
+Grid make_grid(const GridSpec& spec) {
+  if (spec.kind == GridKind::uniform)
+    return Grid(RadialMap::uniform(spec.rmax), spec.N);
+  return Grid(RadialMap::sinh(spec.rmax, spec.dr_inner, sinh_reference_N), spec.N);
+}
+
 } // namespace gbssn1d

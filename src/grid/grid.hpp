@@ -80,4 +80,19 @@ private:
 
 std::string to_string(GridKind kind);
 
+/// The sinh grid is one map for every N: its innermost cell is `dr_inner` wide at this N, so
+/// that at N cells every spacing is (sinh_reference_N / N) times the reference grid's.
+inline constexpr std::size_t sinh_reference_N = 400;
+
+/// A grid by its parameters.
+struct GridSpec {
+  GridKind kind = GridKind::sinh;
+  std::size_t N = 400; ///< interior cells
+  double rmax = 100.0;
+  double dr_inner = 0.02; ///< sinh: innermost cell width at N = sinh_reference_N
+};
+
+/// The grid of `spec`; the sinh map is fixed at sinh_reference_N cells, so N alone refines.
+Grid make_grid(const GridSpec& spec);
+
 } // namespace gbssn1d

@@ -3,6 +3,7 @@
 #include "core/stop_signal.hpp"
 
 #include "config/config_file.hpp"
+#include "config/params.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
 #include "grid/interpolation.hpp"
@@ -127,7 +128,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   const std::size_t m = members.size();
 
   // common radii: the coarsest grid's interior points inside the exterior region
-  const Grid coarse = make_grid(members.front());
+  const Grid coarse = make_grid(grid_spec(members.front()));
   std::vector<double> radii;
   for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
     if (coarse.r()[i] >= members.front().norm_rmin && coarse.r()[i] <= members.front().norm_rmax)
@@ -148,7 +149,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       try {
         const Params& p = members[k];
         create_output_dir("--out", p.out);
-        Simulation sim(p);
+        Simulation sim(evolution_config(p));
         sim.on_series = [&](Simulation& s) {
           const DerivedProfiles d = derived_profiles(s.state(), s.grid());
           rec.rows.push_back(s.series_row(d));

@@ -1,5 +1,6 @@
 // Diagnostics: the central extrapolation of an even field, the cell-width-weighted L2 norms,
 // and horizon.dat as a run writes it.
+#include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
 
@@ -58,7 +59,7 @@ TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   p.dt_series = 0.5;
   resolve_defaults(p);
   validate(p);
-  Simulation sim(p);
+  Simulation sim(evolution_config(p));
   {
     Output out(dir, "test = true\n");
     sim.run(&out);

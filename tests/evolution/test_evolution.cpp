@@ -1,6 +1,7 @@
 // Evolutions: the stationary 1+log trumpet stays put at 4th order; the constraints of all
 // initial data converge at 4th order; a wormhole settles onto the 1+log trumpet; a run that
 // goes non-finite stops, says where and when, and leaves complete files.
+#include "config/params.hpp"
 #include "evolution/simulation.hpp"
 #include "initial_data/trumpet_solutions.hpp"
 
@@ -58,7 +59,7 @@ TEST_CASE("1+log trumpet evolved to t = 10 M stays stationary at 4th order") {
     p.tmax = 10.0;
     p.norm_rmin = 1.0;
     p.norm_rmax = 10.0;
-    Simulation sim(validated(p));
+    Simulation sim(evolution_config(validated(p)));
     const State initial = sim.state();
     sim.run(nullptr);
     const Grid& g = sim.grid();
@@ -93,7 +94,7 @@ TEST_CASE("constraints of all three initial data converge at 4th order away from
       p.N = n;
       p.rmax = 20.0;
       p.tmax = 0.0;
-      const Simulation sim(validated(p));
+      const Simulation sim(evolution_config(validated(p)));
       const DerivedProfiles d = derived_profiles(sim.state(), sim.grid());
       h.push_back(sim.grid().dx());
       H.push_back(l2_norm(d.H, sim.grid(), 1.0, 10.0));
@@ -121,7 +122,7 @@ TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
   p.rmax = 200.0;
   p.dr_inner = 0.025;
   p.tmax = 120.0;
-  Simulation sim(validated(p));
+  Simulation sim(evolution_config(validated(p)));
   sim.run(nullptr);
   const Grid& g = sim.grid();
 
@@ -182,7 +183,7 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   p.dt_series = 0.05;
   p.dt_profiles = 0.05;
   p.out = dir.string();
-  Simulation sim(validated(p));
+  Simulation sim(evolution_config(validated(p)));
   // A huge spike in K: d_t K ~ alpha K^2 / 3 overflows within a few steps.
   const std::size_t i_spike = sim.grid().first_interior() + 50;
   field(sim.state(), sim.grid(), Var::K)[i_spike] = 1e30;
@@ -216,7 +217,7 @@ TEST_CASE("the chi floor raises chi below it and leaves the rest alone; 0 switch
   p.grid = "uniform";
   p.N = 16;
   p.rmax = 8.0;
-  const Grid g = make_grid(validated(p));
+  const Grid g = make_grid(grid_spec(validated(p)));
   State u = make_state(g);
   auto chi = field(u, g, Var::chi);
   for (std::size_t i = 0; i < chi.size(); ++i)
@@ -248,7 +249,7 @@ TEST_CASE("wormhole with the horizon shift: chi crosses zero at the innermost ce
   auto run = [&](double floor) {
     Params q = p;
     q.chi_floor = floor;
-    Simulation sim(validated(q));
+    Simulation sim(evolution_config(validated(q)));
     double chi_min = 1.0;
     sim.on_series = [&](Simulation& s) { // after steps (the initial data are not floored)
       if (s.time() == 0.0)
@@ -321,7 +322,7 @@ TEST_CASE("the output cadence changes neither the time step nor the evolution") 
                          / fmt::format("gbssn1d_test_cadence_{}_{}", ::getpid(), dt_series);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    Simulation sim(validated(q));
+    Simulation sim(evolution_config(validated(q)));
     {
       Output out(dir, sim.run_facts());
       sim.run(&out);

@@ -1,6 +1,5 @@
 // The radial grid: cell centres, parity mirrors, the sinh map, and radial derivatives through
 // the chain rule (fitted order 4 on uniform and sinh grids).
-#include "config/params.hpp"
 #include "gbssn/rhs.hpp"
 #include "grid/grid.hpp"
 
@@ -142,9 +141,9 @@ TEST_CASE("point_data: derivatives and advection of quartics are exact, for ever
 
 // Issue: the sinh grid of --N alone must refine. The map is fixed at the reference N, so the
 // grid of 2N cells has every spacing halved: dr_2N(x) at x and x + dx/2 sums to dr_N at x's cell.
-TEST_CASE("sinh grid of the CLI: doubling --N halves every spacing (one map for every N)") {
-  Params p;
-  p.grid = "sinh";
+TEST_CASE("sinh grid spec: doubling N halves every spacing (one map for every N)") {
+  GridSpec p;
+  p.kind = GridKind::sinh;
   p.rmax = 100.0;
   p.dr_inner = 0.02;
   p.N = 300;

@@ -44,7 +44,7 @@ TEST_CASE("apparent horizon of the three initial data: M_AH converges to M at or
     std::vector<double> h, err;
     double r_ah_finest = 0;
     for (int n : {160, 320, 640}) { // spacing M/16 ... M/64
-      const Simulation sim(grid_params(id, n));
+      const Simulation sim(evolution_config(grid_params(id, n)));
       const auto found = find_horizons(sim.state(), sim.grid(), {});
       REQUIRE(found.horizon().has_value());
       h.push_back(sim.grid().dx());
@@ -65,7 +65,7 @@ TEST_CASE("apparent horizon of the three initial data: M_AH converges to M at or
 
 TEST_CASE("the finder reports every marginal surface, the outermost outer one as the horizon") {
   // Static isotropic Schwarzschild with the static lapse has a single minimal surface at M/2.
-  const Simulation sim(grid_params("wormhole", 200));
+  const Simulation sim(evolution_config(grid_params("wormhole", 200)));
   const auto found = find_horizons(sim.state(), sim.grid(), {});
   REQUIRE(found.surfaces.size() == 1);
   CHECK(found.surfaces[0].outer);

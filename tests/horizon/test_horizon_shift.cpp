@@ -1,4 +1,5 @@
 // The horizon-adjusting shift (equations document, Sec. 14) and the horizon during evolutions.
+#include "config/params.hpp"
 #include "evolution/simulation.hpp"
 #include "horizon/apparent_horizon.hpp"
 
@@ -24,7 +25,7 @@ Params trumpet_run(int n, double tmax) {
 Simulation make(Params p) {
   resolve_defaults(p);
   validate(p);
-  return Simulation(p);
+  return Simulation(evolution_config(p));
 }
 
 double horizon_radius(const Simulation& sim) {
@@ -108,7 +109,7 @@ TEST_CASE("during a 1+log trumpet evolution M_AH and r_AH stay where the data pu
   double worst_M = std::abs(h0->mass - 1.0), worst_r = 0.0;
   for (int k = 0; k < 10; ++k) {
     const double dt = sim.schedule().dt;
-    const auto steps = static_cast<long>(std::ceil(sim.params().dt_series / dt));
+    const auto steps = static_cast<long>(std::ceil(sim.config().dt_series / dt));
     for (long s = 0; s < steps; ++s)
       sim.step(dt);
     const auto h = sim.horizons().horizon();

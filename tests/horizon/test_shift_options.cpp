@@ -2,6 +2,7 @@
 // the areal-radius norms, the finder's failures, and the coarse-resolution convergence of the
 // default method (docs/horizon-shift-study.md).
 #include "../test_support.hpp"
+#include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
 #include "fd/stencils.hpp"
@@ -24,7 +25,7 @@ namespace {
 Simulation make(Params p) {
   resolve_defaults(p);
   validate(p);
-  return Simulation(p);
+  return Simulation(evolution_config(p));
 }
 
 Params trumpet(int n, double rmax, double tmax) {

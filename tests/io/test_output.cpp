@@ -1,5 +1,6 @@
 // The output files hold what their column names say: each column of profiles.dat and
 // timeseries.dat compared with the quantity computed directly from the state.
+#include "config/params.hpp"
 #include "evolution/simulation.hpp"
 
 #include "../test_support.hpp"
@@ -29,7 +30,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   p.dt_profiles = 1.0;
   resolve_defaults(p);
   validate(p);
-  Simulation sim(p);
+  Simulation sim(evolution_config(p));
   {
     Output out(dir, sim.run_facts());
     sim.run(&out);
@@ -49,7 +50,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   CHECK(series.at(1, "G_L2") == doctest::Approx(l2_norm(d.G_r, g, 0.0, inf)).epsilon(1e-12));
   CHECK(std::abs(series.at(1, "H_L2") - series.at(1, "M_L2")) > 1e-6 * series.at(1, "H_L2"));
   // the initial block against the initial data's own derived profiles
-  Simulation fresh(p);
+  Simulation fresh(evolution_config(p));
   const DerivedProfiles d0 = derived_profiles(fresh.state(), fresh.grid());
   for (std::size_t k = 0; k < g.n_interior(); k += 7) {
     const std::size_t i = g.first_interior() + k;

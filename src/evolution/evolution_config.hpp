@@ -1,0 +1,48 @@
+// The typed configuration of one evolution: what to evolve (grid, initial data, equations with
+// their gauge and horizon shift) and how (time step, output cadence, diagnostics windows,
+// horizon searches). The command line fills it from its parameters (config/params.hpp,
+// evolution_config()); the evolution knows nothing of flags or their spellings.
+#pragma once
+
+#include "gbssn/rhs.hpp"
+#include "grid/grid.hpp"
+#include "initial_data/initial_data.hpp"
+
+namespace gbssn1d {
+
+/// Windows of the constraint norms of timeseries.dat (diagnostics/constraints.hpp).
+struct NormWindows {
+  double rmin = 1.0, rmax = 10.0; ///< coordinate window of the *_ext norms
+  double Rmin = 2.5, Rmax = 12.0; ///< areal-radius window of the *_R norms (length, not / M)
+  double Rint = 1.8;              ///< areal radius bounding the interior norm H_L2_int
+};
+
+/// When the apparent horizon is searched for, for the horizon shift's h_AH.
+struct HorizonSearchSettings {
+  long every_steps = 0;     ///< 0: at every RK substage (inside the RHS); n >= 1: every n steps
+  double t_min = 0.0;       ///< no searches before t_min ...
+  double t_max = -1.0;      ///< ... or after t_max (< 0: none)
+  double tolerance = 1e-12; ///< of the root-finder, in r
+  bool in_window(double t) const { return t >= t_min && (t_max < 0.0 || t <= t_max); }
+};
+
+struct EvolutionConfig {
+  GridSpec grid;
+  InitialDataParams initial_data;
+  RhsParams rhs; ///< equations, gauge, dissipation, horizon shift (its `locate` is set by the run)
+  double cfl = 0.25;       ///< dt = cfl x smallest spacing
+  double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
+  double tmax = 10.0;
+  double dt_series = 0.25;       ///< time between rows of timeseries.dat
+  double dt_profiles = 5.0;      ///< time between blocks of profiles.dat
+  double checkpoint_every = 0.0; ///< simulated time between checkpoints (0: only on a signal)
+  NormWindows norms;
+  HorizonSearchSettings horizon_search;
+};
+
+/// The RK4 time step on `grid`: cfl x the smallest spacing.
+inline double time_step(double cfl, const Grid& grid) {
+  return cfl * grid.min_spacing();
+}
+
+} // namespace gbssn1d
