@@ -36,22 +36,6 @@ inline Table read_table(const std::string& path) {
   return {t.columns, t.rows};
 }
 
-/// Cubic Lagrange interpolation in a table with increasing x (4 neighbouring nodes).
-inline double interpolate_cubic(const std::vector<double>& x, const std::vector<double>& y,
-                                double xi) {
-  std::size_t k = std::upper_bound(x.begin(), x.end(), xi) - x.begin();
-  k = std::clamp<std::size_t>(k, 2, x.size() - 2) - 2; // nodes k ... k+3
-  double sum = 0;
-  for (std::size_t j = k; j < k + 4; ++j) {
-    double w = 1;
-    for (std::size_t m = k; m < k + 4; ++m)
-      if (m != j)
-        w *= (xi - x[m]) / (x[j] - x[m]);
-    sum += w * y[j];
-  }
-  return sum;
-}
-
 /// Least-squares slope of log(err) against log(h): the observed order of convergence (the
 /// library's fit over N = 1/h).
 inline double fit_order(const std::vector<double>& h, const std::vector<double>& err) {

@@ -88,10 +88,6 @@ double Grid::min_spacing() const {
                            dr_.begin() + static_cast<std::ptrdiff_t>(end_interior()));
 }
 
-std::string to_string(GridKind kind) {
-  return kind == GridKind::uniform ? "uniform" : "sinh";
-}
-
 Grid make_grid(const GridSpec& spec) {
   if (spec.kind == GridKind::uniform)
     return Grid(RadialMap::uniform(spec.rmax), spec.N);

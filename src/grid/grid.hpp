@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstddef>
-#include <string>
 #include <vector>
 
 namespace gbssn1d {
@@ -77,8 +76,6 @@ private:
   double dx_;
   std::vector<double> x_, r_, inv_r_, inv_rx_, d2_fx_coeff_, dr_;
 };
-
-std::string to_string(GridKind kind);
 
 /// The sinh grid is one map for every N: its innermost cell is `dr_inner` wide at this N, so
 /// that at N cells every spacing is (sinh_reference_N / N) times the reference grid's.

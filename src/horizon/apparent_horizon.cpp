@@ -18,13 +18,6 @@ constexpr std::size_t stencil = 6; // points of the Lagrange interpolant
 
 } // namespace
 
-std::vector<double> expansion_profile(const State& u, const Grid& grid) {
-  std::vector<double> theta(grid.n_interior());
-  for (std::size_t k = 0; k < theta.size(); ++k)
-    theta[k] = expansion_plus(point_data(u, grid, grid.first_interior() + k));
-  return theta;
-}
-
 std::optional<MarginalSurface> HorizonSearch::horizon() const {
   for (const auto& s : surfaces)
     if (s.outer)

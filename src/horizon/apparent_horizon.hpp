@@ -54,7 +54,4 @@ std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& gri
                                                  const HorizonFinderParams& params, double r_seed,
                                                  std::size_t window = 8);
 
-/// Theta_+ at the interior points (index 0 ... N-1).
-std::vector<double> expansion_profile(const State& u, const Grid& grid);
-
 } // namespace gbssn1d

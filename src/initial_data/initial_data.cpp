@@ -100,20 +100,4 @@ State initial_data(const Grid& grid, const InitialDataParams& params) {
   return u;
 }
 
-std::string to_string(InitialDataKind kind) {
-  switch (kind) {
-  case InitialDataKind::wormhole:
-    return "wormhole";
-  case InitialDataKind::maximal_trumpet:
-    return "maximal-trumpet";
-  case InitialDataKind::onelog_trumpet:
-    return "1log-trumpet";
-  }
-  return "?";
-}
-
-std::string to_string(InitialLapse lapse) {
-  return lapse == InitialLapse::one ? "one" : "precollapsed";
-}
-
 } // namespace gbssn1d

@@ -4,7 +4,6 @@
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
 
-#include <string>
 
 namespace gbssn1d {
 
@@ -24,7 +23,5 @@ struct InitialDataParams {
 ///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13).
 State initial_data(const Grid& grid, const InitialDataParams& params);
 
-std::string to_string(InitialDataKind kind);
-std::string to_string(InitialLapse lapse);
 
 } // namespace gbssn1d

@@ -2,6 +2,7 @@
 // the chain rule (fitted order 4 on uniform and sinh grids).
 #include "gbssn/rhs.hpp"
 #include "grid/grid.hpp"
+#include "grid/interpolation.hpp"
 
 #include "../test_support.hpp"
 
@@ -174,4 +175,44 @@ TEST_CASE("the inverse map x(r) in closed form undoes r(x) on both maps") {
       CHECK(map.x_of_r(map.r(x)) == doctest::Approx(x).epsilon(1e-14));
     CHECK(map.x_of_r(map.rmax()) == doctest::Approx(1.0).epsilon(1e-15));
   }
+}
+
+// grid/interpolation.hpp: 6-point Lagrange is exact for quintics, on any distinct nodes.
+TEST_CASE("lagrange6: quintics are reproduced exactly on uneven nodes") {
+  const std::vector<double> x{0.1, 0.25, 0.33, 0.6, 0.71, 1.0};
+  auto q5 = [](double t) {
+    return 0.3 - t + 2.0 * t * t - 0.5 * t * t * t + t * t * t * t - 0.7 * t * t * t * t * t;
+  };
+  std::vector<double> f;
+  for (double t : x)
+    f.push_back(q5(t));
+  for (double t : {0.1, 0.17, 0.3, 0.5, 0.9, 1.0})
+    CHECK(std::abs(lagrange6(x, f, 0, t) - q5(t)) < 1e-13);
+  // a sextic is not: the error is the product of (t - x_k) times the leading coefficient
+  std::vector<double> g;
+  for (double t : x)
+    g.push_back(std::pow(t, 6));
+  double product = 1.0;
+  for (double xk : x)
+    product *= 0.5 - xk;
+  CHECK(lagrange6(x, g, 0, 0.5) == doctest::Approx(std::pow(0.5, 6) - product).epsilon(1e-12));
+}
+
+// interpolate_at_radius: between the points of a sinh grid, 6th order in the spacing.
+TEST_CASE("interpolate_at_radius converges at 6th order on the sinh grid") {
+  auto f = [](double r) { return std::exp(-0.1 * r * r) * std::cos(0.8 * r) + 0.05 * r; };
+  std::vector<double> h, err;
+  for (std::size_t n : {100, 200, 400}) {
+    const Grid g(RadialMap::sinh(10.0, 2.0 / static_cast<double>(n), n), n);
+    std::vector<double> values(g.n_total());
+    for (std::size_t i = 0; i < g.n_total(); ++i)
+      values[i] = f(g.r()[i]);
+    double e = 0.0;
+    for (double r = 0.37; r < 8.0; r += 0.291)
+      e = std::max(e, std::abs(interpolate_at_radius(g, values, r) - f(r)));
+    h.push_back(g.dx());
+    err.push_back(e);
+  }
+  MESSAGE("interpolation order " << fit_order(h, err));
+  CHECK(fit_order(h, err) == doctest::Approx(6.0).epsilon(0.1));
 }
