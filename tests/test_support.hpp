@@ -1,17 +1,32 @@
-// Shared helpers of the test suite: tables read back with the library's reader (checked to be
-// rectangular and non-empty) and convergence orders fitted with the library's fit.
+// Shared helpers of the test suite: scratch directories, tables read back with the library's
+// reader (checked to be rectangular and non-empty) and convergence orders fitted with the
+// library's fit.
 #pragma once
 
 #include "io/table.hpp"
 #include "study/orders.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gbssn1d::testing {
+
+/// An empty path TMP/gbssn1d_tests_PID_NAME (per process: ctest runs test cases concurrently):
+/// whatever was there is removed; created as an empty directory if `create`.
+inline std::filesystem::path scratch(const std::string& name, bool create = false) {
+  const auto dir = std::filesystem::temp_directory_path()
+                   / ("gbssn1d_tests_" + std::to_string(::getpid()) + "_" + name);
+  std::filesystem::remove_all(dir);
+  if (create)
+    std::filesystem::create_directories(dir);
+  return dir;
+}
 
 /// A table with its columns by name.
 struct Table {

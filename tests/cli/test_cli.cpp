@@ -18,18 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using gbssn1d::testing::scratch;
+
 struct Result {
   int status;
   std::string err, out;
 };
-
-fs::path scratch(const std::string& name) {
-  // per process: ctest runs test cases concurrently
-  const fs::path p =
-      fs::temp_directory_path() / ("gbssn1d_cli_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(p);
-  return p;
-}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);

@@ -46,10 +46,7 @@ TEST_CASE("l2_norm: cell-width weights, the range selects points, empty range gi
 
 TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("gbssn1d_horizon_dat_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = gbssn1d::testing::scratch("horizon_dat", true);
   Params p;
   p.id = "1log-trumpet";
   p.grid = "uniform";

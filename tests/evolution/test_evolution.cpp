@@ -173,10 +173,7 @@ TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
 
 TEST_CASE("a run that becomes non-finite stops with where and when, keeping complete files") {
   namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("gbssn1d_test_nonfinite_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = gbssn1d::testing::scratch("nonfinite", true);
   Params p;
   p.id = "wormhole";
   p.grid = "uniform";

@@ -40,10 +40,7 @@ Params trumpet(int n, double rmax, double tmax) {
 }
 
 std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "gbssn1d-tests" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return gbssn1d::testing::scratch(name, true);
 }
 
 } // namespace

@@ -16,10 +16,7 @@ using namespace gbssn1d;
 
 TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields, norms)") {
   namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("gbssn1d_test_columns_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = gbssn1d::testing::scratch("columns", true);
   Params p;
   p.id = "wormhole"; // H and M_r differ clearly on these data (a coarse grid)
   p.grid = "uniform";

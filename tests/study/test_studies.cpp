@@ -19,12 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path p =
-      fs::temp_directory_path() / ("gbssn1d_study_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(p);
-  return p;
-}
+using gbssn1d::testing::scratch;
 
 int run(const std::string& args, std::string* err = nullptr) {
   const fs::path e = scratch("stderr");
