@@ -55,6 +55,13 @@ constexpr const VarInfo& info(Var v) {
   return registry[index(v)];
 }
 
+/// One number per evolved variable, indexed by the registry: values[index(v)] is v's.
+struct PerVar {
+  std::array<double, n_vars> values;
+  constexpr double& operator[](Var v) { return values[index(v)]; }
+  constexpr double operator[](Var v) const { return values[index(v)]; }
+};
+
 /// The registry entry with the given printed name, if any.
 constexpr std::optional<Var> var_from_name(std::string_view name) {
   for (const auto& entry : registry)

@@ -10,13 +10,6 @@
 
 namespace gbssn1d {
 
-/// One number per evolved variable, indexed by the registry: values[index(v)] is v's.
-struct PerVar {
-  std::array<double, n_vars> values;
-  constexpr double& operator[](Var v) { return values[index(v)]; }
-  constexpr double operator[](Var v) const { return values[index(v)]; }
-};
-
 /// Fields, their radial derivatives and the upwinded advection terms at one point.
 struct PointData {
   double r, inv_r;

@@ -9,33 +9,28 @@ namespace gbssn1d {
 
 namespace {
 
-/// The fields of one point of a spherically symmetric slice, for r > 0.
-struct SliceValues {
-  double alpha = 1.0, beta = 0.0, B = 0.0, chi = 1.0, a = 1.0, b = 1.0, K = 0.0, A_a = 0.0,
-         Delta_r = 0.0;
-};
+/// The fields of one point of a spherically symmetric slice, for r > 0, by registry variable.
+using SliceValues = PerVar;
+
+/// Flat space in the registry's variables: each at its value at infinity.
+SliceValues flat() {
+  SliceValues s;
+  for (const auto& entry : registry)
+    s[entry.var] = entry.asymptotic;
+  return s;
+}
 
 void store(State& u, const Grid& grid, std::size_t i, const SliceValues& s, double sign) {
   // sign = -1 for points at r < 0 (origin ghosts): odd variables flip.
-  auto set = [&](Var v, double value) {
-    field(u, grid, v)[i] = (info(v).parity < 0 ? sign : 1.0) * value;
-  };
-  set(Var::alpha, s.alpha);
-  set(Var::beta, s.beta);
-  set(Var::B, s.B);
-  set(Var::chi, s.chi);
-  set(Var::a, s.a);
-  set(Var::b, s.b);
-  set(Var::K, s.K);
-  set(Var::A_a, s.A_a);
-  set(Var::Delta_r, s.Delta_r);
+  for (const auto& entry : registry)
+    field(u, grid, entry.var)[i] = (entry.parity < 0 ? sign : 1.0) * s[entry.var];
 }
 
 SliceValues wormhole(double r, const InitialDataParams& p) {
   const double psi = 1.0 + p.M / (2.0 * r);
-  SliceValues s;
-  s.chi = 1.0 / (psi * psi * psi * psi);
-  s.alpha = p.lapse0 == InitialLapse::precollapsed ? 1.0 / (psi * psi) : 1.0;
+  SliceValues s = flat();
+  s[Var::chi] = 1.0 / (psi * psi * psi * psi);
+  s[Var::alpha] = p.lapse0 == InitialLapse::precollapsed ? 1.0 / (psi * psi) : 1.0;
   return s;
 }
 
@@ -44,12 +39,12 @@ SliceValues wormhole(double r, const InitialDataParams& p) {
 SliceValues maximal_trumpet(double r, const MaximalTrumpet& trumpet) {
   const TrumpetSample t = trumpet.at(r);
   const double R3 = t.R * t.R * t.R;
-  SliceValues s;
-  s.chi = (r / t.R) * (r / t.R);
-  s.alpha = t.alpha;
-  s.beta = trumpet.C() * r / R3;
-  s.K = 0.0;
-  s.A_a = -2.0 * trumpet.C() / R3;
+  SliceValues s = flat();
+  s[Var::chi] = (r / t.R) * (r / t.R);
+  s[Var::alpha] = t.alpha;
+  s[Var::beta] = trumpet.C() * r / R3;
+  s[Var::K] = 0.0;
+  s[Var::A_a] = -2.0 * trumpet.C() / R3;
   return s;
 }
 
@@ -59,12 +54,12 @@ SliceValues onelog_trumpet(const TrumpetSample& t, double C) {
   const double R3 = t.R * t.R * t.R;
   const double u = C * std::exp(0.5 * t.alpha);
   const double K_thth = u / R3;
-  SliceValues s;
-  s.chi = (t.r / t.R) * (t.r / t.R);
-  s.alpha = t.alpha;
-  s.beta = u * t.r / R3;
-  s.K = u * t.dalpha_dR / (2.0 * t.R * t.R);
-  s.A_a = (2.0 / 3.0) * s.K - 2.0 * K_thth;
+  SliceValues s = flat();
+  s[Var::chi] = (t.r / t.R) * (t.r / t.R);
+  s[Var::alpha] = t.alpha;
+  s[Var::beta] = u * t.r / R3;
+  s[Var::K] = u * t.dalpha_dR / (2.0 * t.R * t.R);
+  s[Var::A_a] = (2.0 / 3.0) * s[Var::K] - 2.0 * K_thth;
   return s;
 }
 
