@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from gbssn1d_data import column, parse, read_text, style
+from gbssn1d_data import column, parse, read_text, sequential_colors, style
 from plot_horizons import header_params
 
 
@@ -59,8 +59,9 @@ def main():
         import matplotlib.pyplot as plt
         style(plt)
         fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
+        colors = sequential_colors(len(Ns))  # darker is finer
         for k, (n, e) in enumerate(zip(Ns, E)):
-            line, = ax1.semilogy(t, e, label=f'N = {n}')
+            line, = ax1.semilogy(t, e, color=colors[k], label=f'N = {n}')
             if a.scale and k > 0:
                 ax1.semilogy(t, e * (n / Ns[0]) ** a.scale, ls='--', color=line.get_color(),
                              label=f'N = {n} x ({n}/{Ns[0]})^{a.scale:g}')
@@ -68,7 +69,7 @@ def main():
         ax1.legend(fontsize=8)
         ax1.set_title(a.title)
         for k, o in enumerate(orders):
-            ax2.plot(t, o, label=f'p({Ns[k]}, {Ns[k + 1]})')
+            ax2.plot(t, o, color=colors[k + 1], label=f'p({Ns[k]}, {Ns[k + 1]})')
         ax2.axhline(4, color='k', ls=':', lw=1)
         ax2.set_ylim(0, 6)
         ax2.set_ylabel('order')

@@ -62,11 +62,41 @@ def column(columns, data, name):
     return data[:, columns.index(name)]
 
 
+# Seven colours a reader tells apart (also in grey print, by their order of lightness they
+# do not need to): one per unordered curve: runs, columns. Ordered curves (resolutions, times)
+# take a sequential colormap instead, where darker means later or finer.
+QUALITATIVE = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#8c564b', '#17becf']
+LINESTYLES = ['-', '--', ':', '-.']
+
+
 def style(plt):
     plt.rcParams.update({'figure.figsize': (7, 4.5), 'axes.grid': True, 'grid.alpha': 0.3,
-                         'font.size': 11, 'savefig.dpi': 120, 'axes.prop_cycle':
-                         plt.cycler(color=['#1f77b4', '#d62728', '#2ca02c', '#9467bd',
-                                           '#ff7f0e', '#8c564b', '#17becf'])})
+                         'font.size': 11, 'savefig.dpi': 120,
+                         'axes.prop_cycle': plt.cycler(color=QUALITATIVE)})
+
+
+def qualitative_colors(n, what):
+    """n distinct colours for unordered curves; refuses more than a reader can tell apart."""
+    if n > len(QUALITATIVE):
+        raise SystemExit(f'{n} {what} in one figure: at most {len(QUALITATIVE)} can be told '
+                         f'apart by colour; plot fewer, or split them over several figures')
+    return QUALITATIVE[:n]
+
+
+def line_styles(n, what):
+    """n distinct line styles (the second way to tell curves apart, after colour)."""
+    if n > len(LINESTYLES):
+        raise SystemExit(f'{n} {what} in one figure: at most {len(LINESTYLES)} line styles can '
+                         f'be told apart; plot fewer, or split them over several figures')
+    return LINESTYLES[:n]
+
+
+def sequential_colors(n):
+    """n colours of the sequential viridis map for ordered curves (resolutions, times): light
+    (first) to dark (last)."""
+    import matplotlib
+    cmap = matplotlib.colormaps['viridis']
+    return [cmap(x) for x in np.linspace(0.85, 0.0, n)] if n > 1 else [cmap(0.35)]
 
 
 UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M'}

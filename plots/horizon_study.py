@@ -34,7 +34,7 @@ import os
 
 import numpy as np
 
-from gbssn1d_data import parse, read_text, style
+from gbssn1d_data import axis_label, parse, read_text, sequential_colors, style
 
 
 def load(directory, key):
@@ -219,13 +219,13 @@ def figure(args):
     for ax, d in zip(axes.flat, args.families):
         fam = load(d, args.y)
         Ns = sorted(fam)
-        colors = plt.cm.viridis(np.linspace(0.85, 0.0, len(Ns)))
+        colors = sequential_colors(len(Ns))  # darker is finer
         for color, N in zip(colors, Ns):
             t, v = fam[N]
             spacing = f' (M/{N / args.rmax:g})' if args.rmax > 0 else ''
             ax.semilogy(t, v, color=color, label=f'N = {N}{spacing}')
         ax.set_title(os.path.basename(os.path.normpath(d)), fontsize=9)
-        ax.set_xlabel('t (M)')
+        ax.set_xlabel(axis_label('t'))
         ax.legend(fontsize=7)
     labels = {'H_L2_R': 'L2 norm of H, 2.5 M <= R <= 12 M', 'H_L2_ext': 'L2 norm of H (coordinate window)',
               'H_L2_int': 'L2 norm of H near the puncture'}

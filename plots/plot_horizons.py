@@ -10,7 +10,7 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import column, finish, parse, read_text, style
+from gbssn1d_data import column, finish, parse, qualitative_colors, read_text, style
 
 
 def header_params(text):
@@ -35,13 +35,15 @@ def main():
     a = ap.parse_args()
     style(plt)
     fig, ax = plt.subplots()
-    for path in a.files:
+    colors = qualitative_colors(len(a.files), 'runs')
+    for color, path in zip(colors, a.files):
         text = read_text(path)
         params = header_params(text)
         columns, blocks = parse(text)
         data = blocks[0][1]
         label = ', '.join(f'{k}={params.get(k, "?")}' for k in a.label_by.split(','))
-        line, = ax.plot(column(columns, data, 't'), column(columns, data, a.y), label=label)
+        line, = ax.plot(column(columns, data, 't'), column(columns, data, a.y), color=color,
+                        label=label)
         if a.target and 'rah0' in params and float(params.get('rahA', 0)) != 0:
             ax.axhline(float(params['rah0']), color=line.get_color(), ls=':', lw=1)
     finish(fig, ax, 't / M', a.y, a.title, a.output)

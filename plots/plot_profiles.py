@@ -11,7 +11,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 import numpy as np
 
-from gbssn1d_data import axis_label, column, finish, parse, read_text, run_label, style
+from gbssn1d_data import (axis_label, column, finish, line_styles, parse, qualitative_colors,
+                          read_text, run_label, sequential_colors, style)
 
 
 def main():
@@ -30,12 +31,22 @@ def main():
     a = ap.parse_args()
     style(plt)
     fig, ax = plt.subplots()
+    # Curves are (file, column) series at several times: with one time, a colour per series;
+    # with several, a sequential colour per time (darker is later) and a line style per series.
+    n_series = len(a.files) * len(a.y)
+    series = 0
     for k, path in enumerate(a.files):
         columns, blocks = parse(read_text(path))
         times = np.array([t if t is not None else 0.0 for t, _ in blocks])
         wanted = [float(v) for v in a.times.split(',')] if a.times else sorted({times[0], times[-1]})
+        if len(wanted) == 1:
+            colors, styles = [None], ['-'] * n_series
+            series_colors = qualitative_colors(n_series, 'curves')
+        else:
+            colors, styles = sequential_colors(len(wanted)), line_styles(n_series, 'runs x columns')
+            series_colors = None
         label = a.label[k] if a.label and k < len(a.label) else run_label(path)
-        for tw in wanted:
+        for i, tw in enumerate(wanted):
             t, data = blocks[int(np.argmin(abs(times - tw)))]
             x = column(columns, data, a.x)
             keep = np.ones_like(x, dtype=bool)
@@ -43,9 +54,13 @@ def main():
                 keep &= x >= a.xmin
             if a.xmax is not None:
                 keep &= x <= a.xmax
-            for y in a.y:
+            for j, y in enumerate(a.y):
                 v = column(columns, data, y)[keep]
-                ax.plot(x[keep], abs(v) if a.logy else v, label=f'{label}: {y}, t = {t:g}')
+                s = series + j
+                ax.plot(x[keep], abs(v) if a.logy else v, ls=styles[s],
+                        color=series_colors[s] if series_colors else colors[i],
+                        label=f'{label}: {y}, t = {t:g}')
+        series += len(a.y)
     if a.logy:
         ax.set_yscale('log')
     if a.logx:

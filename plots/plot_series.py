@@ -10,7 +10,8 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import axis_label, column, finish, parse, read_text, run_label, style
+from gbssn1d_data import (axis_label, column, finish, line_styles, parse, qualitative_colors,
+                          read_text, run_label, sequential_colors, style)
 
 
 def main():
@@ -19,19 +20,33 @@ def main():
     ap.add_argument('-x', default='t', help='column for the x axis (default t)')
     ap.add_argument('-y', action='append', required=True, help='column(s) to plot')
     ap.add_argument('--logy', action='store_true')
+    ap.add_argument('--ordered', action='store_true',
+                    help='the files form a sequence (resolutions, times): colours from one '
+                         'sequential colormap, darker for later files')
     ap.add_argument('--label', action='append', help='legend label per file')
     ap.add_argument('--title', default='')
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
     a = ap.parse_args()
     style(plt)
     fig, ax = plt.subplots()
+    # one file: a colour per column; several: a colour per file and a line style per column
+    if len(a.files) == 1:
+        colors, styles = [None], ['-'] * len(a.y)
+        column_colors = qualitative_colors(len(a.y), 'columns')
+    else:
+        colors = (sequential_colors(len(a.files)) if a.ordered
+                  else qualitative_colors(len(a.files), 'runs'))
+        styles = line_styles(len(a.y), 'columns')
+        column_colors = None
     for k, path in enumerate(a.files):
         columns, blocks = parse(read_text(path))
         data = blocks[0][1]
         label = a.label[k] if a.label and k < len(a.label) else run_label(path)
-        for y in a.y:
+        for j, y in enumerate(a.y):
             values = column(columns, data, y)
-            ax.plot(column(columns, data, a.x), abs(values) if a.logy else values,
+            color = column_colors[j] if column_colors else colors[k]
+            ax.plot(column(columns, data, a.x), abs(values) if a.logy else values, color=color,
+                    ls=styles[j],
                     label=f'{label}: {y}' if len(a.files) > 1 or len(a.y) > 1 else label)
     if a.logy:
         ax.set_yscale('log')

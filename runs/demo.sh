@@ -29,7 +29,7 @@ for n in 300 600 1200; do
   $g evolve --id 1log-trumpet --grid uniform --N $n --rmax 40 --tmax 20 --dt-series 0.5 \
     --dt-profiles 10 --norm-rmin 1 --norm-rmax 10 --out demo/trumpet-N$n
 done
-$py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy \
+$py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy --ordered \
   --label "N=300" --label "N=600" --label "N=1200" \
   --title "1+log trumpet: H over 1 M <= r <= 10 M, uniform grids of M/7.5, M/15, M/30" \
   -o demo/trumpet_H.png

@@ -12,7 +12,10 @@ build/gbssn1d evolve --id 1log-trumpet --tmax 0 --grid sinh --N 8000 --dr-inner 
 py=/usr/bin/python3
 $py plots/compare_trumpet.py "$out/profiles.dat" out/trumpet-reference/profiles.dat \
   -o "$out/alpha_vs_R.png" | tee "$out/trumpet_agreement.txt"
-$py plots/plot_series.py "$out/timeseries.dat" -y dtalpha_max_ext -y H_L2_ext --logy \
-  --title "wormhole -> trumpet" -o "$out/settling.png"
+# one unit per axis: d_t alpha (1/M) and H (1/M^2) in separate figures
+$py plots/plot_series.py "$out/timeseries.dat" -y dtalpha_max_ext --logy \
+  --title "settling: max |d_t alpha| over 1 M <= r <= 10 M" -o "$out/settling.png"
+$py plots/plot_series.py "$out/timeseries.dat" -y H_L2_ext --logy \
+  --title "constraint: L2 norm of H over 1 M <= r <= 10 M" -o "$out/constraints.png"
 $py plots/plot_series.py "$out/timeseries.dat" -y alpha_center -o "$out/alpha_center.png"
 tail -n 1 "$out/timeseries.dat"

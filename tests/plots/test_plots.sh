@@ -34,4 +34,18 @@ grep -q "incomplete last line" "$dir/err"
 "$py" "$plots/plot_series.py" "$dir/cut_series.dat" -y H_L2_ext --logy -o "$dir/cut2.png" 2>"$dir/err"
 grep -q "incomplete last line" "$dir/err"
 [ -s "$dir/cut1.png" ] && [ -s "$dir/cut2.png" ]
-echo "plot scripts: 8 figures written"
+# Colours: more unordered curves than the palette tells apart are refused with a reason ...
+for k in 1 2 3 4 5 6 7 8; do ln -s "$dir/conv60" "$dir/copy$k"; done
+if "$py" "$plots/plot_horizons.py" "$dir"/copy{1,2,3,4,5,6,7,8}/horizon.dat -o "$dir/x.png" 2>"$dir/err"; then
+  echo "8 runs plotted with 7 colours"; exit 1
+fi
+grep -q "8 runs in one figure: at most 7" "$dir/err"
+# ... and ordered curves (resolutions, times) darken monotonically along the sequential map
+PYTHONPATH="$plots" "$py" - <<'PY'
+import numpy as np
+from gbssn1d_data import QUALITATIVE, qualitative_colors, sequential_colors
+lum = [0.2126 * r + 0.7152 * g + 0.0722 * b for r, g, b, _ in sequential_colors(5)]
+assert all(x > y for x, y in zip(lum, lum[1:])), f"sequential colours not darkening: {lum}"
+assert len(set(qualitative_colors(7, 'runs'))) == 7 == len(QUALITATIVE)
+PY
+echo "plot scripts: 8 figures written, colour rules hold"
