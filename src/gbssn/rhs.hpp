@@ -3,7 +3,8 @@
 //    4th-order lopsided derivatives for the beta d_r advection terms, the point-wise equations
 //    of gbssn/equations.hpp, plus Kreiss-Oliger dissipation;
 //  - outer ghost cells: Sommerfeld condition (Sec. 8) with one-sided derivatives, toward each
-//    variable's asymptotic value from the registry;
+//    variable's asymptotic value from the registry, at the speed the gauge gives its wave
+//    family (Gauge::speed);
 //  - ghost cells at the origin: the mirror's right-hand side times the parity, so that every
 //    Runge-Kutta stage stays parity-consistent.
 #pragma once
@@ -15,8 +16,6 @@
 #include "grid/grid.hpp"
 
 #include <cstdint>
-#include <functional>
-#include <limits>
 #include <optional>
 #include <vector>
 
