@@ -2,8 +2,6 @@
 
 #include "fd/stencils.hpp"
 
-#include <fmt/format.h>
-
 #include <array>
 #include <cmath>
 
