@@ -35,7 +35,7 @@ if old not in text:
 open(path, 'w').write(text.replace(old, new))
 PY
   cmake --build build -j "$(nproc)" >/dev/null
-  failed=$(cd build && ctest -j "$(nproc)" 2>&1 | sed -n 's/^ *[0-9]* - \(.*\) (Failed)$/\1/p' || true)
+  failed=$(cd build && ctest -j "$(nproc)" 2>&1 | sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (Failed)$/\1/p' || true)
   if [ -z "$failed" ]; then
     echo "!! $name: no test fails"; uncaught=1
   else
