@@ -307,6 +307,11 @@ int run_cli(int argc, char** argv) {
       ->capture_default_str();
   sweep_cmd->add_option("--out", sweep_options.out, "output directory (a rerun resumes)")
       ->required();
+  sweep_cmd
+      ->add_option("--progress-every", sweep_options.progress_every,
+                   "seconds between progress lines (k of n done, running members) while "
+                   "members run; 0: none")
+      ->capture_default_str();
   sweep_cmd->add_option("--emit-tasks", sweep_options.emit_tasks,
                         "write the member command lines (GNU parallel, Slurm arrays) and exit");
   sweep_cmd->allow_extras();
@@ -358,6 +363,9 @@ int run_cli(int argc, char** argv) {
                       pass_through(*converge_cmd, {"N", "out", "force"}));
     if (sweep_cmd->parsed()) {
       check_jobs(sweep_options.jobs);
+      if (!std::isfinite(sweep_options.progress_every) || sweep_options.progress_every < 0.0)
+        throw ParamError("--progress-every", fmt::format("{}", sweep_options.progress_every),
+                         "must be a finite number >= 0");
       const auto evolve_args = pass_through(*sweep_cmd, {"out", "force"});
       parse_evolve_args(evolve_args); // common flags must parse before anything runs
       return run_sweep(sweep_options, evolve_args);

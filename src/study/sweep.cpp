@@ -14,10 +14,12 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <csignal>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -278,6 +280,32 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   install_stop_handlers();
   std::mutex mutex;
   std::size_t finished = 0; // members done in this run (under `mutex`)
+  using Clock = std::chrono::steady_clock;
+  std::map<std::string, Clock::time_point> running; // member -> start (under `mutex`)
+  std::size_t done_before = 0; // members finished by an earlier run of the same sweep
+  for (const auto& m : members)
+    done_before += member_done(dir / "logs" / (m.name + ".status")) ? 1 : 0;
+  // A progress line every progress_every seconds while members run: on long runs the [k/n]
+  // lines can be hours apart.
+  std::condition_variable all_done;
+  bool stop_progress = false;
+  std::thread progress;
+  if (options.progress_every > 0.0)
+    progress = std::thread([&] {
+      std::unique_lock lock(mutex);
+      const auto every = std::chrono::duration<double>(options.progress_every);
+      while (!all_done.wait_for(lock, every, [&] { return stop_progress; })) {
+        if (running.empty())
+          continue;
+        const auto longest =
+            std::min_element(running.begin(), running.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        fmt::print(stderr,
+                   "gbssn1d sweep: {} of {} members done, {} running (longest: {}, {:.0f} s)\n",
+                   done_before + finished, members.size(), running.size(), longest->first,
+                   std::chrono::duration<double>(Clock::now() - longest->second).count());
+      }
+    });
   auto member_task = [&](std::size_t k) {
     {
       const SweepMember& m = members[k];
@@ -300,6 +328,10 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       }
       if (status == "ok") {
         const auto start = std::chrono::steady_clock::now();
+        {
+          const std::lock_guard lock(mutex);
+          running[m.name] = start;
+        }
         const fs::path log = dir / "logs" / (m.name + ".log");
         // a member stopped with a checkpoint (interrupted, or killed) continues from it
         const fs::path member_dir = dir / m.name;
@@ -322,12 +354,28 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       }
       write_file_atomically(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
       const std::lock_guard lock(mutex);
+      running.erase(m.name);
       ++finished;
-      fmt::print(stderr, "gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", finished, members.size(),
-                 m.name, status, wall, status == "ok" ? "" : ": " + reason);
+      fmt::print(stderr, "gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", done_before + finished,
+                 members.size(), m.name, status, wall, status == "ok" ? "" : ": " + reason);
     }
   };
-  run_tasks(members.size(), options.jobs, member_task);
+  {
+    struct JoinOnExit { // the reporter stops however run_tasks ends (an exception included)
+      std::function<void()> stop;
+      ~JoinOnExit() { stop(); }
+    } join_progress{[&] {
+      if (!progress.joinable())
+        return;
+      {
+        const std::lock_guard lock(mutex);
+        stop_progress = true;
+      }
+      all_done.notify_all();
+      progress.join();
+    }};
+    run_tasks(members.size(), options.jobs, member_task);
+  }
 
   // summary.dat
   std::vector<std::string> cols;

@@ -32,7 +32,8 @@ struct SweepOptions {
   std::vector<std::string> sweeps; ///< the --sweep arguments
   int jobs = 1;
   std::string out;
-  std::string emit_tasks; ///< write the member command lines here instead of running
+  std::string emit_tasks;       ///< write the member command lines here instead of running
+  double progress_every = 60.0; ///< seconds between progress lines while members run (0: none)
 };
 
 /// Runs (or resumes) the sweep and writes DIR/summary.dat; returns 0 even when members failed

@@ -292,3 +292,24 @@ TEST_CASE("sweep and converge pass --config on: members' own flags override the 
   fs::remove_all(conv_out);
   fs::remove(cfg);
 }
+
+TEST_CASE("sweep: progress lines while members run, k of n as they finish, resumed counts") {
+  const fs::path out = scratch("sweep_progress");
+  const std::string members =
+      " --sweep N=1600,2000 --id 1log-trumpet --grid uniform --rmax 100 --tmax 30";
+  std::string err;
+  // each member takes about 0.6 s here, so a line every 0.1 s shows them running
+  REQUIRE(run("sweep -j 2 --progress-every 0.1 --out " + out.string() + members, &err) == 0);
+  INFO(err);
+  CHECK(err.find("gbssn1d sweep: 0 of 2 members done, 2 running (longest: N=")
+        != std::string::npos);
+  CHECK(err.find("] N=1600 ok") != std::string::npos);
+  CHECK(err.find("[2/2]") != std::string::npos);
+  // --progress-every 0: no progress lines; a rerun has nothing left to run
+  REQUIRE(run("sweep -j 2 --progress-every 0 --out " + out.string() + members, &err) == 0);
+  CHECK(err.find("members done") == std::string::npos);
+  CHECK(err.find("[") == std::string::npos);
+  CHECK(run("sweep --progress-every -1 --out " + out.string() + members, &err) == 2);
+  CHECK(err.find("--progress-every = -1 is invalid") != std::string::npos);
+  fs::remove_all(out);
+}
