@@ -2,7 +2,7 @@
 # Deliberate mistakes that the test suite must catch. Each is applied alone to a clean copy of
 # HEAD (a git worktree in a temporary folder), the suite is rebuilt and run, and the tests that
 # fail are listed; a mistake that no test catches is reported and the script exits 1.
-# About 2 minutes per mistake on 2 cores (not part of tests/run).
+# About 1-2 minutes per mistake on 2 cores (not part of tests/run).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
