@@ -14,50 +14,64 @@ namespace gbssn1d {
 /// The value of Params::eta that stands for its default, 2/M (resolve_defaults).
 inline constexpr double eta_default = -1.0;
 
+/// The typed configuration's defaults, which the parameters below take as theirs (one source).
+inline const EvolutionConfig& evolution_defaults() {
+  static const EvolutionConfig config;
+  return config;
+}
+
+/// Flags as the user gives them; numbers default to the typed configuration's values, except
+/// where a flag's own convention differs (eta and norm-rmax stand for defaults resolved
+/// against M and rmax; the areal norm windows are in units of M; choices are strings).
 struct Params {
   // grid
-  int N = 400;
-  double rmax = 100.0;
+  int N = static_cast<int>(evolution_defaults().grid.N);
+  double rmax = evolution_defaults().grid.rmax;
   std::string grid = "sinh"; ///< uniform | sinh
-  double dr_inner = 0.02;    ///< innermost cell width of the sinh grid at N = sinh_reference_N (M)
+  /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
+  double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data
   std::string id = "wormhole"; ///< wormhole | maximal-trumpet | 1log-trumpet
-  double M = 1.0;
+  double M = evolution_defaults().initial_data.M;
   std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
   // gauge
   double eta = eta_default; ///< Gamma-driver damping; eta_default stands for 2/M
   bool advective_shift = false;
   bool non_advective_lapse = false;
   // numerics
-  double cfl = 0.25;
-  double ko_sigma = 0.1;
-  double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
+  double cfl = evolution_defaults().cfl;
+  double ko_sigma = evolution_defaults().rhs.ko_sigma;
+  /// chi is raised to at least this after every RK4 step (0: off)
+  double chi_floor = evolution_defaults().chi_floor;
   // time
-  double tmax = 10.0;
-  double dt_series = 0.25;
-  double dt_profiles = 5.0;
-  double checkpoint_every = 0.0; ///< simulated time between checkpoints (0: only on a signal)
+  double tmax = evolution_defaults().tmax;
+  double dt_series = evolution_defaults().dt_series;
+  double dt_profiles = evolution_defaults().dt_profiles;
+  /// simulated time between checkpoints (0: only on a signal)
+  double checkpoint_every = evolution_defaults().checkpoint_every;
   // diagnostics
-  double norm_rmin = 1.0;
+  double norm_rmin = evolution_defaults().norms.rmin;
   double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)
   double norm_Rmin = 2.5;  ///< areal-radius window of the *_R norms, in M (the same place in
   double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
   double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
   // apparent horizon and the horizon-adjusting shift (Sec. 6, Sec. 14)
-  double rahA = 0.0;                          ///< strength A of beta_H (0: no horizon shift)
-  double rah0 = 0.89;                         ///< desired coordinate radius h of the horizon (M)
-  double rah_width = 1.0;                     ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
-  double rah_ramp = 0.0;                      ///< T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
-  std::string rah_profile = "auto";           ///< auto | rational | rational3 | gauss | gauss3
-  std::string rah_normal = "conformal";       ///< conformal | unit | smooth
-  double rah_chi_smooth = 0.05;               ///< chi_s of the smooth normal sqrt((chi + chi_s)/a)
+  double rahA = evolution_defaults().rhs.horizon_shift.A; ///< strength A of beta_H (0: no horizon shift)
+  double rah0 = evolution_defaults().rhs.horizon_shift.h; ///< desired coordinate radius h of the horizon (M)
+  double rah_width = evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
+  /// T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
+  double rah_ramp = evolution_defaults().rhs.horizon_shift.ramp;
+  std::string rah_profile = "auto";     ///< auto | rational | rational3 | gauss | gauss3
+  std::string rah_normal = "conformal"; ///< conformal | unit | smooth
+  /// chi_s of the smooth normal sqrt((chi + chi_s)/a)
+  double rah_chi_smooth = evolution_defaults().rhs.horizon_shift.chi_smooth;
   std::string rah_hAH_file;                   ///< open loop: h_AH(t) from columns t, r_ah of a file
   std::string driver_advection = "upwind-gd"; ///< beta_GD d_r Delta^r in B's driver
-  std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
-  std::string ah_every = "substage";           ///< substage | step | n (every n steps)
-  double ah_tmin = 0.0;                        ///< searches are made for ah-tmin <= t ...
-  double ah_tmax = -1.0;                       ///< ... <= ah-tmax; < 0: until the end
-  double ah_tol = 1e-12;                       ///< root-finder tolerance in r (M)
+  std::string delta_advection = "upwind-full";         ///< beta d_r Delta^r in (E6)
+  std::string ah_every = "substage";                   ///< substage | step | n (every n steps)
+  double ah_tmin = evolution_defaults().horizon_search.t_min;    ///< searches are made for ah-tmin <= t ...
+  double ah_tmax = evolution_defaults().horizon_search.t_max;    ///< ... <= ah-tmax; < 0: until the end
+  double ah_tol = evolution_defaults().horizon_search.tolerance; ///< root-finder tolerance in r (M)
   /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
   std::string rah_variant = "consistent";
   // output
