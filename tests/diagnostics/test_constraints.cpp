@@ -6,6 +6,8 @@
 
 #include "../test_support.hpp"
 
+#include "../simulation_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 using namespace gbssn1d;
+using gbssn1d::testing::simulation;
 
 TEST_CASE("central_value is exact for even quadratics, on uniform and sinh grids") {
   for (const Grid& g :
@@ -54,9 +57,7 @@ TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   p.rmax = 20.0;
   p.tmax = 1.0;
   p.dt_series = 0.5;
-  resolve_defaults(p);
-  validate(p);
-  Simulation sim(evolution_config(p));
+  Simulation sim = simulation(p);
   {
     Output out(dir, "test = true\n");
     sim.run(&out);

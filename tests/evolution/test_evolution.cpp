@@ -7,7 +7,9 @@
 
 #include "../test_support.hpp"
 
+#include "../simulation_support.hpp"
 #include <boost/math/interpolators/cubic_hermite.hpp>
+
 #include <doctest/doctest.h>
 
 #include <fmt/format.h>
@@ -24,14 +26,10 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
+using gbssn1d::testing::simulation;
+using gbssn1d::testing::validated;
 
 namespace {
-
-Params validated(Params p) {
-  resolve_defaults(p);
-  validate(p);
-  return p;
-}
 
 /// RMS over the interior points with r in [r1, r2] of f_after - f_before.
 double rms_change(const Grid& g, std::span<const double> before, std::span<const double> after,
@@ -60,7 +58,7 @@ TEST_CASE("1+log trumpet evolved to t = 10 M stays stationary at 4th order") {
     p.tmax = 10.0;
     p.norm_rmin = 1.0;
     p.norm_rmax = 10.0;
-    Simulation sim(evolution_config(validated(p)));
+    Simulation sim = simulation(p);
     const State initial = sim.state();
     sim.run(nullptr);
     const Grid& g = sim.grid();
@@ -95,7 +93,7 @@ TEST_CASE("constraints of all three initial data converge at 4th order away from
       p.N = n;
       p.rmax = 20.0;
       p.tmax = 0.0;
-      const Simulation sim(evolution_config(validated(p)));
+      const Simulation sim = simulation(p);
       const DerivedProfiles d = derived_profiles(sim.state(), sim.grid());
       h.push_back(sim.grid().dx());
       H.push_back(l2_norm(d.H, sim.grid(), 1.0, 10.0));
@@ -123,7 +121,7 @@ TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
   p.rmax = 200.0;
   p.dr_inner = 0.025;
   p.tmax = 120.0;
-  Simulation sim(evolution_config(validated(p)));
+  Simulation sim = simulation(p);
   sim.run(nullptr);
   const Grid& g = sim.grid();
 
@@ -183,7 +181,7 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   p.dt_series = 0.05;
   p.dt_profiles = 0.05;
   p.out = dir.string();
-  Simulation sim(evolution_config(validated(p)));
+  Simulation sim = simulation(p);
   // A huge spike in K: d_t K ~ alpha K^2 / 3 overflows within a few steps.
   const std::size_t i_spike = sim.grid().first_interior() + 50;
   field(sim.state(), sim.grid(), Var::K)[i_spike] = 1e30;
@@ -249,7 +247,7 @@ TEST_CASE("wormhole with the horizon shift: chi crosses zero at the innermost ce
   auto run = [&](double floor) {
     Params q = p;
     q.chi_floor = floor;
-    Simulation sim(evolution_config(validated(q)));
+    Simulation sim = simulation(q);
     double chi_min = 1.0;
     sim.on_series = [&](Simulation& s) { // after steps (the initial data are not floored)
       if (s.time() == 0.0)
@@ -322,7 +320,7 @@ TEST_CASE("the output cadence changes neither the time step nor the evolution") 
                          / fmt::format("gbssn1d_test_cadence_{}_{}", ::getpid(), dt_series);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    Simulation sim(evolution_config(validated(q)));
+    Simulation sim = simulation(q);
     {
       Output out(dir, sim.run_facts());
       sim.run(&out);

@@ -6,12 +6,15 @@
 
 #include "../test_support.hpp"
 
+#include "../simulation_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
+using gbssn1d::testing::simulation;
 
 namespace {
 
@@ -22,8 +25,6 @@ Params grid_params(const char* id, int n) {
   p.N = n;
   p.rmax = 10.0;
   p.tmax = 0.0;
-  resolve_defaults(p);
-  validate(p);
   return p;
 }
 
@@ -44,7 +45,7 @@ TEST_CASE("apparent horizon of the three initial data: M_AH converges to M at or
     std::vector<double> h, err;
     double r_ah_finest = 0;
     for (int n : {160, 320, 640}) { // spacing M/16 ... M/64
-      const Simulation sim(evolution_config(grid_params(id, n)));
+      const Simulation sim = simulation(grid_params(id, n));
       const auto found = find_horizons(sim.state(), sim.grid(), {});
       REQUIRE(found.horizon().has_value());
       h.push_back(sim.grid().dx());
@@ -65,7 +66,7 @@ TEST_CASE("apparent horizon of the three initial data: M_AH converges to M at or
 
 TEST_CASE("the finder reports every marginal surface, the outermost outer one as the horizon") {
   // Static isotropic Schwarzschild with the static lapse has a single minimal surface at M/2.
-  const Simulation sim(evolution_config(grid_params("wormhole", 200)));
+  const Simulation sim = simulation(grid_params("wormhole", 200));
   const auto found = find_horizons(sim.state(), sim.grid(), {});
   REQUIRE(found.surfaces.size() == 1);
   CHECK(found.surfaces[0].outer);

@@ -3,11 +3,14 @@
 #include "evolution/simulation.hpp"
 #include "horizon/apparent_horizon.hpp"
 
+#include "../simulation_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 using namespace gbssn1d;
+using gbssn1d::testing::simulation;
 
 namespace {
 
@@ -20,12 +23,6 @@ Params trumpet_run(int n, double tmax) {
   p.tmax = tmax;
   p.dt_series = 1.0;
   return p;
-}
-
-Simulation make(Params p) {
-  resolve_defaults(p);
-  validate(p);
-  return Simulation(evolution_config(p));
 }
 
 double horizon_radius(const Simulation& sim) {
@@ -42,7 +39,7 @@ TEST_CASE("rahA = 0 is bit-for-bit the run without the horizon shift") {
   with.rah0 = 0.6;
   with.ah_every = "substage";
   with.rah_width = 2.0;
-  Simulation a = make(plain), b = make(with);
+  Simulation a = simulation(plain), b = simulation(with);
   a.run(nullptr);
   b.run(nullptr);
   REQUIRE(a.state().size() == b.state().size());
@@ -53,7 +50,7 @@ TEST_CASE("rahA = 0 is bit-for-bit the run without the horizon shift") {
 }
 
 TEST_CASE("beta_H vanishes where h_AH = h, is odd in r, and has the sign of A (h_AH - h)") {
-  Simulation sim = make(trumpet_run(200, 0.0));
+  Simulation sim = simulation(trumpet_run(200, 0.0));
   const Grid& g = sim.grid();
   HorizonShiftParams hs;
   hs.A = 0.5;
@@ -79,7 +76,7 @@ TEST_CASE("beta_H vanishes where h_AH = h, is odd in r, and has the sign of A (h
 }
 
 TEST_CASE("the horizon moves outward in r when h > h_AH and inward when h < h_AH") {
-  const double r0 = horizon_radius(make(trumpet_run(400, 0.0))); // 0.83 M
+  const double r0 = horizon_radius(simulation(trumpet_run(400, 0.0))); // 0.83 M
   for (const char* every : {"substage", "4"}) {
     Params out = trumpet_run(400, 15.0);
     out.rahA = 0.5;
@@ -87,7 +84,7 @@ TEST_CASE("the horizon moves outward in r when h > h_AH and inward when h < h_AH
     out.ah_every = every;
     Params in = out;
     in.rah0 = 0.65;
-    Simulation grow = make(out), shrink = make(in);
+    Simulation grow = simulation(out), shrink = simulation(in);
     grow.run(nullptr);
     shrink.run(nullptr);
     MESSAGE("ah-every " << std::string(every) << ": r_AH from " << r0 << " to "
@@ -103,7 +100,7 @@ TEST_CASE("the horizon moves outward in r when h > h_AH and inward when h < h_AH
 
 TEST_CASE("during a 1+log trumpet evolution M_AH and r_AH stay where the data put them") {
   // spacing M/64 near the horizon
-  Simulation sim = make(trumpet_run(1280, 10.0));
+  Simulation sim = simulation(trumpet_run(1280, 10.0));
   const auto h0 = sim.horizons().horizon();
   REQUIRE(h0);
   double worst_M = std::abs(h0->mass - 1.0), worst_r = 0.0;
@@ -134,7 +131,7 @@ TEST_CASE("the study's finding: H converges with the consistent shift, not when 
     p.rahA = 0.5;
     p.rah0 = 0.6;
     p.rah_variant = variant;
-    Simulation sim = make(p);
+    Simulation sim = simulation(p);
     sim.run(nullptr);
     return sim.series_row(derived_profiles(sim.state(), sim.grid())).H_L2_ext;
   };

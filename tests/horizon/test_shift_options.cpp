@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "../simulation_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -19,14 +21,9 @@
 #include <limits>
 
 using namespace gbssn1d;
+using gbssn1d::testing::simulation;
 
 namespace {
-
-Simulation make(Params p) {
-  resolve_defaults(p);
-  validate(p);
-  return Simulation(evolution_config(p));
-}
 
 Params trumpet(int n, double rmax, double tmax) {
   Params p;
@@ -81,7 +78,7 @@ TEST_CASE("shift normals: their values, and the unit normal's kink at a trumpet'
 
   // On the 1+log trumpet chi ~ r^2 at the puncture: beta_H ~ r |r| with the unit normal (its
   // second difference across r = 0 jumps), ~ r with the conformal one (smooth and odd).
-  Simulation sim = make(trumpet(400, 20.0, 0.0));
+  Simulation sim = simulation(trumpet(400, 20.0, 0.0));
   const Grid& g = sim.grid();
   HorizonShiftParams hs;
   hs.A = 0.5;
@@ -112,7 +109,7 @@ TEST_CASE("--rah-ramp: the strength grows as A (1 - exp(-(t/T)^2))") {
   CHECK(hs.strength(20.0) == doctest::Approx(0.5 * (1.0 - std::exp(-1.0))).epsilon(1e-15));
   CHECK(hs.strength(200.0) == doctest::Approx(0.5).epsilon(1e-15));
   // beta_H scales with it
-  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  Simulation sim = simulation(trumpet(200, 20.0, 0.0));
   std::vector<double> full, ramped;
   hs.ramp = 0.0;
   horizon_shift_profile(sim.state(), sim.grid(), hs, 0.83, full, 10.0);
@@ -158,7 +155,7 @@ TEST_CASE("the advection stencil options change exactly the term they name") {
   // stencil must change that RHS by beta (D_new - D_old) Delta^r and nothing else.
   Params p = trumpet(100, 20.0, 2.0);
   p.id = "maximal-trumpet"; // its shift evolves, and with it Delta^r (zero at t = 0)
-  Simulation sim = make(p);
+  Simulation sim = simulation(p);
   sim.run(nullptr);
   const Grid& g = sim.grid();
   const State& u = sim.state();
@@ -218,7 +215,7 @@ TEST_CASE("--rah-hAH-file: h_AH(t) read from a file and interpolated smoothly (o
   Params p = trumpet(200, 20.0, 2.0);
   p.rahA = 0.5;
   p.rah_hAH_file = path.string();
-  Simulation sim = make(p);
+  Simulation sim = simulation(p);
   sim.run(nullptr);
   REQUIRE(sim.horizon_radius().has_value());
   CHECK(*sim.horizon_radius() == doctest::Approx(0.8 + 0.1 * std::sin(0.6)).epsilon(1e-6));
@@ -280,7 +277,7 @@ TEST_CASE("areal-radius norms: weights |dR|, select by R, and the interior windo
   CHECK(l2_norm_areal(fw, Rw, 2.5, 12.0) == doctest::Approx(1.0));
 
   // interior: from the innermost point out to R = Rint, dr-weighted
-  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  Simulation sim = simulation(trumpet(200, 20.0, 0.0));
   const Grid& g = sim.grid();
   std::vector<double> Rt(g.n_interior()), two(g.n_interior(), 2.0);
   for (std::size_t k = 0; k < Rt.size(); ++k)
@@ -294,7 +291,7 @@ TEST_CASE("areal-radius norms: weights |dR|, select by R, and the interior windo
 }
 
 TEST_CASE("the horizon finder reports non-finite data instead of crashing") {
-  Simulation sim = make(trumpet(200, 20.0, 0.0));
+  Simulation sim = simulation(trumpet(200, 20.0, 0.0));
   State u = sim.state();
   const Grid& g = sim.grid();
   field(u, g, Var::chi)[g.first_interior() + 20] = std::numeric_limits<double>::quiet_NaN();
@@ -323,7 +320,7 @@ TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24
       Params p = trumpet(n, 200.0, 100.0);
       p.rahA = rahA;
       p.rah0 = 0.89;
-      Simulation sim = make(p);
+      Simulation sim = simulation(p);
       double sum = 0;
       int count = 0;
       sim.on_series = [&](Simulation& s) {
@@ -384,7 +381,7 @@ TEST_CASE("--rah-width reaches the shift: f(r) = (r/w)/(1 + (r/w)^2) with the wi
     p.rah_profile = "rational";
     p.rah_width = w;
     p.rah_normal = "conformal";
-    Simulation sim = make(p);
+    Simulation sim = simulation(p);
     const auto beta_H = sim.horizon_shift();
     const Grid& g = sim.grid();
     const auto a = field(sim.state(), g, Var::a);
@@ -408,7 +405,7 @@ TEST_CASE("driver-full-shift changes B's driver where beta_H is non-zero, and on
   auto rhs_of = [&](const std::string& variant) {
     Params q = p;
     q.rah_variant = variant;
-    Simulation sim = make(q);
+    Simulation sim = simulation(q);
     GbssnRhs rhs(sim.grid(), sim.rhs().params());
     State dudt;
     rhs(sim.state(), dudt, 0.0);
@@ -416,7 +413,7 @@ TEST_CASE("driver-full-shift changes B's driver where beta_H is non-zero, and on
   };
   const auto [base, beta_H] = rhs_of("consistent");
   const auto [full, unused] = rhs_of("driver-full-shift");
-  Simulation sim = make(p);
+  Simulation sim = simulation(p);
   const Grid& g = sim.grid();
   double largest = 0.0;
   for (std::size_t i = g.first_interior() + 3; i < g.end_interior() - 3; ++i) {
@@ -435,7 +432,7 @@ TEST_CASE("midstep-update searches inside the step: the shrink moves the horizon
   p.rah0 = 0.6;
   p.rah_variant = "midstep-update";
   p.ah_every = std::to_string(2); // (a literal trips GCC 12's -Wrestrict false positive)
-  Simulation sim = make(p);
+  Simulation sim = simulation(p);
   const double r0 = sim.horizons().horizon()->r;
   sim.run(nullptr);
   const double r10 = sim.horizons().horizon()->r;

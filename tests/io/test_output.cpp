@@ -5,6 +5,8 @@
 
 #include "../test_support.hpp"
 
+#include "../simulation_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 using namespace gbssn1d;
+using gbssn1d::testing::simulation;
 
 TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields, norms)") {
   namespace fs = std::filesystem;
@@ -25,9 +28,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   p.tmax = 1.0;
   p.dt_series = 1.0;
   p.dt_profiles = 1.0;
-  resolve_defaults(p);
-  validate(p);
-  Simulation sim(evolution_config(p));
+  Simulation sim = simulation(p);
   {
     Output out(dir, sim.run_facts());
     sim.run(&out);
@@ -47,7 +48,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   CHECK(series.at(1, "G_L2") == doctest::Approx(l2_norm(d.G_r, g, 0.0, inf)).epsilon(1e-12));
   CHECK(std::abs(series.at(1, "H_L2") - series.at(1, "M_L2")) > 1e-6 * series.at(1, "H_L2"));
   // the initial block against the initial data's own derived profiles
-  Simulation fresh(evolution_config(p));
+  Simulation fresh = simulation(p);
   const DerivedProfiles d0 = derived_profiles(fresh.state(), fresh.grid());
   for (std::size_t k = 0; k < g.n_interior(); k += 7) {
     const std::size_t i = g.first_interior() + k;
