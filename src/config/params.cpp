@@ -302,7 +302,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.horizon_search.every_steps = ah_every_steps(p);
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax;
-  c.horizon_search.tolerance = p.ah_tol;
+  c.horizon_search.finder.tolerance = p.ah_tol;
   return c;
 }
 

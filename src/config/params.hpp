@@ -56,9 +56,12 @@ struct Params {
   double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
   double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
   // apparent horizon and the horizon-adjusting shift (Sec. 6, Sec. 14)
-  double rahA = evolution_defaults().rhs.horizon_shift.A; ///< strength A of beta_H (0: no horizon shift)
-  double rah0 = evolution_defaults().rhs.horizon_shift.h; ///< desired coordinate radius h of the horizon (M)
-  double rah_width = evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
+  double rahA =
+      evolution_defaults().rhs.horizon_shift.A; ///< strength A of beta_H (0: no horizon shift)
+  double rah0 =
+      evolution_defaults().rhs.horizon_shift.h; ///< desired coordinate radius h of the horizon (M)
+  double rah_width =
+      evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
   /// T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
   double rah_ramp = evolution_defaults().rhs.horizon_shift.ramp;
   std::string rah_profile = "auto";     ///< auto | rational | rational3 | gauss | gauss3
@@ -67,11 +70,14 @@ struct Params {
   double rah_chi_smooth = evolution_defaults().rhs.horizon_shift.chi_smooth;
   std::string rah_hAH_file;                   ///< open loop: h_AH(t) from columns t, r_ah of a file
   std::string driver_advection = "upwind-gd"; ///< beta_GD d_r Delta^r in B's driver
-  std::string delta_advection = "upwind-full";         ///< beta d_r Delta^r in (E6)
-  std::string ah_every = "substage";                   ///< substage | step | n (every n steps)
-  double ah_tmin = evolution_defaults().horizon_search.t_min;    ///< searches are made for ah-tmin <= t ...
-  double ah_tmax = evolution_defaults().horizon_search.t_max;    ///< ... <= ah-tmax; < 0: until the end
-  double ah_tol = evolution_defaults().horizon_search.tolerance; ///< root-finder tolerance in r (M)
+  std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
+  std::string ah_every = "substage";           ///< substage | step | n (every n steps)
+  double ah_tmin =
+      evolution_defaults().horizon_search.t_min; ///< searches are made for ah-tmin <= t ...
+  double ah_tmax =
+      evolution_defaults().horizon_search.t_max; ///< ... <= ah-tmax; < 0: until the end
+  double ah_tol =
+      evolution_defaults().horizon_search.finder.tolerance; ///< root-finder tolerance in r (M)
   /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
   std::string rah_variant = "consistent";
   // output

@@ -6,6 +6,7 @@
 
 #include "gbssn/rhs.hpp"
 #include "grid/grid.hpp"
+#include "horizon/apparent_horizon.hpp"
 #include "initial_data/initial_data.hpp"
 
 namespace gbssn1d {
@@ -19,10 +20,10 @@ struct NormWindows {
 
 /// When the apparent horizon is searched for, for the horizon shift's h_AH.
 struct HorizonSearchSettings {
-  long every_steps = 0;     ///< 0: at every RK substage (inside the RHS); n >= 1: every n steps
-  double t_min = 0.0;       ///< no searches before t_min ...
-  double t_max = -1.0;      ///< ... or after t_max (< 0: none)
-  double tolerance = 1e-12; ///< of the root-finder, in r
+  long every_steps = 0; ///< 0: at every RK substage (inside the RHS); n >= 1: every n steps
+  double t_min = 0.0;   ///< no searches before t_min ...
+  double t_max = -1.0;  ///< ... or after t_max (< 0: none)
+  HorizonFinderParams finder{.tolerance = 1e-12}; ///< the root-finder's settings
   bool in_window(double t) const { return t >= t_min && (t_max < 0.0 || t <= t_max); }
 };
 

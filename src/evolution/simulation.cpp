@@ -52,8 +52,7 @@ namespace {
 /// The configuration's RHS with the horizon finder as its locator (substage searches).
 RhsParams rhs_params_with_finder(const EvolutionConfig& config) {
   RhsParams r = config.rhs;
-  HorizonFinderParams finder;
-  finder.tolerance = config.horizon_search.tolerance;
+  const HorizonFinderParams finder = config.horizon_search.finder;
   r.horizon_shift.locate = [finder](const State& u, const Grid& grid, double seed,
                                     double t) -> std::optional<double> {
     try {
@@ -82,14 +81,8 @@ auto Simulation::with_time(Search search) const {
   }
 }
 
-HorizonFinderParams Simulation::finder() const {
-  HorizonFinderParams finder;
-  finder.tolerance = config_.horizon_search.tolerance;
-  return finder;
-}
-
 HorizonSearch Simulation::horizons() const {
-  return with_time([&] { return find_horizons(u_, *grid_, finder()); });
+  return with_time([&] { return find_horizons(u_, *grid_, config_.horizon_search.finder); });
 }
 
 std::optional<double> Simulation::horizon_radius() {
@@ -100,7 +93,8 @@ std::optional<double> Simulation::horizon_radius() {
     return hs.prescribed_h_AH(t_);
   if (config_.horizon_search.every_steps == 0 && config_.horizon_search.in_window(t_)) {
     const auto found = with_time([&] {
-      return find_horizon_near(u_, *grid_, finder(), rhs_.horizon_radius().value_or(hs.h));
+      return find_horizon_near(u_, *grid_, config_.horizon_search.finder,
+                               rhs_.horizon_radius().value_or(hs.h));
     });
     return found ? std::optional<double>(found->r) : std::nullopt;
   }
@@ -120,7 +114,8 @@ void Simulation::update_held_horizon() {
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
   const auto found = with_time([&] {
-    return find_horizon_near(u_, *grid_, finder(), rhs_.horizon_radius().value_or(hs.h));
+    return find_horizon_near(u_, *grid_, config_.horizon_search.finder,
+                             rhs_.horizon_radius().value_or(hs.h));
   });
   // Without a horizon the held value is dropped: beta_H = 0 until one is found.
   rhs_.set_horizon_radius(found ? std::optional<double>(found->r) : std::nullopt);

@@ -129,7 +129,6 @@ public:
   static constexpr double alpha_max = 10.0; ///< alpha <= 1 in these spacetimes
 
 private:
-  HorizonFinderParams finder() const; ///< the finder's settings (--ah-tol)
   /// Runs a horizon search; a HorizonFinderError gets the current time added.
   template <class Search>
   auto with_time(Search search) const;
