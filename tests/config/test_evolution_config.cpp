@@ -1,0 +1,103 @@
+// config/params.cpp: every flag reaches the evolution's typed configuration, with its unit.
+#include "../simulation_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace gbssn1d;
+using gbssn1d::testing::validated;
+
+// Each flag gets a value that is neither its default nor another flag's, so that a flag
+// dropped or wired to the wrong field fails.
+TEST_CASE("evolution_config: each flag reaches its field; areal windows scale with M") {
+  Params p;
+  p.grid = "uniform";
+  p.N = 123;
+  p.rmax = 61.0;
+  p.id = "maximal-trumpet";
+  p.M = 2.0;
+  p.lapse0 = "one";
+  p.eta = 0.7;
+  p.advective_shift = true;
+  p.non_advective_lapse = true;
+  p.cfl = 0.3;
+  p.ko_sigma = 0.05;
+  p.chi_floor = 2e-6;
+  p.tmax = 7.0;
+  p.dt_series = 0.5;
+  p.dt_profiles = 3.5;
+  p.checkpoint_every = 2.5;
+  p.norm_rmin = 1.5;
+  p.norm_rmax = 9.0;
+  p.norm_Rmin = 3.0;
+  p.norm_Rmax = 11.0;
+  p.norm_Rint = 1.7;
+  p.rahA = 0.4;
+  p.rah0 = 1.3;
+  p.rah_width = 2.5;
+  p.rah_ramp = 4.0;
+  p.rah_profile = "rational3";
+  p.rah_normal = "smooth";
+  p.rah_chi_smooth = 0.02;
+  p.ah_every = std::to_string(3); // (a literal this short trips GCC 12's -Wrestrict)
+  p.ah_tmin = 0.5;
+  p.ah_tmax = 6.0;
+  p.ah_tol = 1e-11;
+  const EvolutionConfig c = evolution_config(validated(p));
+  CHECK(c.grid.kind == GridKind::uniform);
+  CHECK(c.grid.N == 123);
+  CHECK(c.grid.rmax == 61.0);
+  CHECK(c.initial_data.kind == InitialDataKind::maximal_trumpet);
+  CHECK(c.initial_data.M == 2.0);
+  CHECK(c.initial_data.lapse0 == InitialLapse::one);
+  CHECK(c.rhs.gauge.shift.eta == 0.7);
+  CHECK(c.rhs.gauge.shift.advective);
+  CHECK_FALSE(c.rhs.gauge.slicing.advective);
+  CHECK(c.cfl == 0.3);
+  CHECK(c.rhs.ko_sigma == 0.05);
+  CHECK(c.chi_floor == 2e-6);
+  CHECK(c.tmax == 7.0);
+  CHECK(c.dt_series == 0.5);
+  CHECK(c.dt_profiles == 3.5);
+  CHECK(c.checkpoint_every == 2.5);
+  CHECK(c.norms.rmin == 1.5);
+  CHECK(c.norms.rmax == 9.0);
+  CHECK(c.norms.Rmin == 6.0); // --norm-R* are multiples of M
+  CHECK(c.norms.Rmax == 22.0);
+  CHECK(c.norms.Rint == doctest::Approx(3.4));
+  const HorizonShiftParams& hs = c.rhs.horizon_shift;
+  CHECK(hs.A == 0.4);
+  CHECK(hs.h == 1.3);
+  CHECK(hs.width == 2.5);
+  CHECK(hs.ramp == 4.0);
+  CHECK(hs.profile == ShiftProfile::rational3);
+  CHECK(hs.normal == ShiftNormal::smooth);
+  CHECK(hs.chi_smooth == 0.02);
+  CHECK_FALSE(hs.search_every_substage);
+  CHECK(hs.t_min == 0.5);
+  CHECK(hs.t_max == 6.0);
+  CHECK(c.horizon_search.every_steps == 3);
+  CHECK(c.horizon_search.t_min == 0.5);
+  CHECK(c.horizon_search.t_max == 6.0);
+  CHECK(c.horizon_search.finder.tolerance == 1e-11);
+}
+
+TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2/M") {
+  Params p;
+  p.M = 2.0;
+  const EvolutionConfig c = evolution_config(validated(p));
+  const EvolutionConfig& d = evolution_defaults();
+  CHECK(c.grid.kind == GridKind::sinh);
+  CHECK(c.grid.N == d.grid.N);
+  CHECK(c.grid.dr_inner == d.grid.dr_inner);
+  CHECK(c.cfl == d.cfl);
+  CHECK(c.chi_floor == d.chi_floor);
+  CHECK(c.rhs.gauge.shift.eta == 1.0); // 2/M
+  CHECK(c.rhs.gauge.slicing.mu_L == 2.0);
+  CHECK(c.rhs.gauge.shift.xi == 0.75);
+  CHECK(c.norms.rmax == doctest::Approx(std::min(10.0 * 2.0, d.grid.rmax / 2.0)));
+  CHECK(c.horizon_search.every_steps == 0); // every RK substage
+  CHECK(c.rhs.horizon_shift.search_every_substage);
+}
