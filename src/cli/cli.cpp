@@ -1,6 +1,7 @@
 #include "cli/cli.hpp"
 
 #include "config/config_file.hpp"
+#include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/stop_signal.hpp"
 #include "evolution/simulation.hpp"
@@ -134,27 +135,26 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
 
 namespace {
 
-/// A whole string as a number, or ParamError naming `flag` (no partial reads: "40.5" is not
-/// an integer, "1x" not a number).
+/// An item of a comma-separated list as a number (the one reader, config/numbers.hpp), or
+/// ParamError naming `flag` and the list.
 template <class T>
-T parse_number(const std::string& flag, const std::string& list, const std::string& item,
-               const std::string& what) {
-  T value{};
-  const char* end = item.data() + item.size();
-  const auto [ptr, ec] = std::from_chars(item.data(), end, value);
-  if (item.empty() || ec != std::errc() || ptr != end)
-    throw ParamError(flag, list, fmt::format("'{}' is not {}", item, what));
-  if constexpr (std::is_floating_point_v<T>)
-    if (!std::isfinite(value))
-      throw ParamError(flag, list, fmt::format("'{}' is not a finite number", item));
-  return value;
+T list_number(const std::string& flag, const std::string& list, const std::string& item) {
+  if (const auto value = parse_decimal<T>(item))
+    return *value;
+  throw ParamError(flag, printable(list),
+                   fmt::format("'{}' is not {}", printable(item), number_kind<T>()));
 }
 
-std::vector<std::string> split_list(const std::string& s) {
+/// The items of "a,b,c"; ParamError naming `flag` for an empty list or an empty item.
+std::vector<std::string> split_list(const std::string& flag, const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');)
     out.push_back(item);
+  if (out.empty() || (!s.empty() && s.back() == ',')
+      || std::any_of(out.begin(), out.end(), [](const auto& item) { return item.empty(); }))
+    throw ParamError(flag, s.empty() ? "''" : printable(s),
+                     "must be a comma-separated list without empty items");
   return out;
 }
 
@@ -166,13 +166,17 @@ void check_jobs(int jobs) {
 }
 
 /// A flag given twice on the command line is refused (a --config file's values may be
-/// overridden once by the command line; --sweep is meant to repeat).
+/// overridden once by the command line; --sweep is meant to repeat). The short -j is the same
+/// flag as --jobs ("-j 2", "-j2").
 void refuse_repeated_flags(const std::vector<std::string>& args) {
   std::set<std::string> seen;
   for (const auto& a : args) {
-    if (a.rfind("--", 0) != 0 || a == "--")
+    const bool short_jobs = a.rfind("-j", 0) == 0;
+    if ((a.rfind("--", 0) != 0 || a == "--") && !short_jobs)
       continue;
-    const std::string name = a.substr(0, a.find('='));
+    std::string name = a.substr(0, a.find('='));
+    if (short_jobs || name == "--jobs")
+      name = "-j/--jobs";
     if (name == "--sweep")
       continue;
     if (!seen.insert(name).second)
@@ -196,15 +200,15 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
              const std::vector<std::string>& evolve_args) {
   ConvergeOptions options = options_in;
   options.N.clear();
-  for (const auto& n : split_list(N_list))
-    options.N.push_back(parse_number<int>("--N", N_list, n, "a whole number of cells"));
+  for (const auto& n : split_list("--N", N_list))
+    options.N.push_back(list_number<int>("--N", N_list, n));
   if (!factors.empty()) { // a base N and factors: N_k = round(N * f_k)
     if (options.N.size() != 1)
       throw ParamError("--factors", factors, "needs a single base --N");
     const int base_N = options.N.front();
     options.N.clear();
-    for (const auto& f : split_list(factors)) {
-      const double factor = parse_number<double>("--factors", factors, f, "a number");
+    for (const auto& f : split_list("--factors", factors)) {
+      const double factor = list_number<double>("--factors", factors, f);
       if (!(factor > 0))
         throw ParamError("--factors", factors, "factors must be > 0");
       const double n = base_N * factor;
@@ -215,10 +219,11 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
       options.N.push_back(static_cast<int>(std::lround(n)));
     }
   }
-  options.fields = split_list(fields);
+  options.fields = split_list("--fields", fields);
   options.scaled_times.clear();
-  for (const auto& t : split_list(times))
-    options.scaled_times.push_back(parse_number<double>("--scaled-times", times, t, "a time"));
+  if (!times.empty())
+    for (const auto& t : split_list("--scaled-times", times))
+      options.scaled_times.push_back(list_number<double>("--scaled-times", times, t));
   if (!std::isfinite(options.order) || options.order <= 0.0)
     throw ParamError("--order", fmt::format("{}", options.order), "must be a finite number > 0");
   check_jobs(options.jobs);
@@ -280,16 +285,15 @@ int run_cli(int argc, char** argv) {
       "converge", "run one configuration (any evolve flags) at three or more resolutions");
   converge_cmd->add_option("--N", N_list, "resolutions, e.g. 320,480,640, or a base N")->required();
   converge_cmd->add_option("--factors", factors, "with a base N: N_k = N * factor, e.g. 1,1.5,2");
-  converge_cmd->add_option("-j,--jobs", converge_options.jobs, "members run at once")
-      ->capture_default_str();
+  add_number_option(*converge_cmd, "-j,--jobs", converge_options.jobs, "members run at once");
   converge_cmd->add_option("--out", converge_options.out, "output directory")->required();
   converge_cmd->add_flag("--force", converge_options.force, "write into a non-empty --out");
   converge_cmd->add_option("--fields", fields, "fields whose differences give orders")
       ->capture_default_str();
   converge_cmd->add_option("--scaled-times", scaled_times,
                            "times of the Richardson-scaled H profiles (default: tmax)");
-  converge_cmd->add_option("--order", converge_options.order, "order used to scale the profiles")
-      ->capture_default_str();
+  add_number_option(*converge_cmd, "--order", converge_options.order,
+                    "order used to scale the profiles");
   converge_cmd->allow_extras();
   converge_cmd->footer("Every other flag is an evolve flag (see `gbssn1d evolve --help`). Every "
                        "member lives on the same map (uniform, or sinh fixed by --dr-inner).");
@@ -303,15 +307,12 @@ int run_cli(int argc, char** argv) {
                    "flag=value1,value2,... (repeat for more flags); flags that change together "
                    "share an axis: flag1,flag2=a1:b1,a2:b2")
       ->required();
-  sweep_cmd->add_option("-j,--jobs", sweep_options.jobs, "members run at once")
-      ->capture_default_str();
+  add_number_option(*sweep_cmd, "-j,--jobs", sweep_options.jobs, "members run at once");
   sweep_cmd->add_option("--out", sweep_options.out, "output directory (a rerun resumes)")
       ->required();
-  sweep_cmd
-      ->add_option("--progress-every", sweep_options.progress_every,
-                   "seconds between progress lines (k of n done, running members) while "
-                   "members run; 0: none")
-      ->capture_default_str();
+  add_number_option(*sweep_cmd, "--progress-every", sweep_options.progress_every,
+                    "seconds between progress lines (k of n done, running members) while "
+                    "members run; 0: none");
   sweep_cmd->add_option("--emit-tasks", sweep_options.emit_tasks,
                         "write the member command lines (GNU parallel, Slurm arrays) and exit");
   sweep_cmd->allow_extras();
@@ -323,12 +324,18 @@ int run_cli(int argc, char** argv) {
   CLI::App* resume_cmd = app.add_subcommand(
       "resume", "continue a run in DIR from DIR/checkpoint.bin, bit for bit as if uninterrupted");
   resume_cmd->add_option("DIR", resume_dir, "output directory of the run")->required();
-  CLI::Option* resume_tmax_opt =
-      resume_cmd->add_option("--tmax", resume_tmax, "new final time (M); default: the run's own");
+  CLI::Option* resume_tmax_opt = add_number_option(*resume_cmd, "--tmax", resume_tmax,
+                                                   "new final time (M); default: the run's own");
+  resume_tmax_opt->default_str("the run's own");
   resume_cmd->footer("The output files are cut back to the checkpoint and continued.");
 
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
+    const std::set<std::string> subcommands{"evolve", "resume", "converge", "sweep"};
+    if (!args.empty() && args.front().rfind("-", 0) != 0 && !subcommands.count(args.front()))
+      throw ParamError("subcommand", fmt::format("'{}' is not a subcommand: use evolve, resume, "
+                                                 "converge or sweep (gbssn1d --help)",
+                                                 printable(args.front())));
     refuse_repeated_flags(args);
     // evolve reads --config here; converge and sweep pass it on to their members, whose own
     // flags may then override the file's values once

@@ -1,12 +1,16 @@
 #include "config/config_file.hpp"
 
+#include "config/numbers.hpp"
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -18,7 +22,9 @@ namespace {
 /// The same table drives the CLI11 options and the config file, so they cannot drift apart.
 struct ParamSpec {
   const char* name;
-  std::variant<int Params::*, double Params::*, std::string Params::*, bool Params::*> member;
+  std::variant<int Params::*, double Params::*, std::optional<double> Params::*,
+               std::string Params::*, bool Params::*>
+      member;
   const char* group;
   const char* help;
 };
@@ -85,7 +91,7 @@ const std::vector<ParamSpec>& param_specs() {
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), step, or a number of steps"},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time"},
-      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time (< 0: none)"},
+      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time"},
       {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius"},
       {"rah-variant", &Params::rah_variant, "Horizon",
        "consistent (the method); for the study only: no-shift-derivatives, "
@@ -96,18 +102,29 @@ const std::vector<ParamSpec>& param_specs() {
   return specs;
 }
 
-std::string value_text(const Params& p, const ParamSpec& spec) {
+/// The value as config-file text, or nothing for an unset optional (the file then leaves the
+/// key out, which reads back as unset).
+std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
   return std::visit(
-      [&](auto member) -> std::string {
+      [&](auto member) -> std::optional<std::string> {
         using T = std::decay_t<decltype(p.*member)>;
         if constexpr (std::is_same_v<T, std::string>)
           return fmt::format("\"{}\"", p.*member);
         else if constexpr (std::is_same_v<T, bool>)
           return p.*member ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::optional<double>>)
+          return p.*member ? std::optional(fmt::format("{}", *(p.*member))) : std::nullopt;
         else
           return fmt::format("{}", p.*member); // shortest representation that round-trips
       },
       spec.member);
+}
+
+/// The rule a flag's unset value stands for, shown by --help as its default.
+const std::map<std::string, std::string>& default_rules() {
+  static const std::map<std::string, std::string> rules{
+      {"eta", "2/M"}, {"norm-rmax", "min(10 M, rmax/2)"}, {"ah-tmax", "none"}};
+  return rules;
 }
 
 } // namespace
@@ -119,39 +136,68 @@ void add_options(CLI::App& app, Params& p) {
         [&](auto member) {
           using T = std::decay_t<decltype(p.*member)>;
           CLI::Option* opt;
-          if constexpr (std::is_same_v<T, bool>)
+          if constexpr (std::is_same_v<T, bool>) {
             opt = app.add_flag(flag, p.*member, spec.help);
-          else
+          } else if constexpr (std::is_same_v<T, std::string>) {
             opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
-          if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::string>)
-            opt->check([](const std::string& v) {
-              return v.empty() ? std::string("needs a number, not an empty value") : std::string();
-            });
+          } else {
+            // numbers go through the one reader (config/numbers.hpp), not CLI11's, which
+            // reads leading zeros as octal
+            using Number = std::conditional_t<std::is_same_v<T, int>, int, double>;
+            opt = app.add_option_function<std::string>(
+                flag,
+                [&p, member, flag](const std::string& text) {
+                  p.*member = parse_number<Number>(flag, text);
+                },
+                spec.help);
+            if constexpr (std::is_same_v<T, std::optional<double>>) {
+              if (p.*member)
+                opt->default_str(fmt::format("{}", *(p.*member)));
+            } else {
+              opt->default_str(fmt::format("{}", p.*member));
+            }
+            opt->type_name(std::is_same_v<Number, int> ? "INT" : "FLOAT");
+          }
           opt->group(spec.group);
-          // defaults that stand for a rule, shown as the rule rather than the sentinel
-          static const std::map<std::string, std::string> rules{
-              {"eta", "2/M"}, {"norm-rmax", "min(10 M, rmax/2)"}, {"ah-tmax", "none"}};
-          if (const auto rule = rules.find(spec.name); rule != rules.end())
+          if (const auto rule = default_rules().find(spec.name); rule != default_rules().end())
             opt->default_str(rule->second);
         },
         spec.member);
   }
 }
 
+namespace {
+
+template <class T>
+CLI::Option* number_option(CLI::App& app, const std::string& names, T& target,
+                           const std::string& help) {
+  const std::string flag = names.substr(0, names.find(','));
+  return app
+      .add_option_function<std::string>(
+          names, [&target, flag](const std::string& text) { target = parse_number<T>(flag, text); },
+          help)
+      ->default_str(fmt::format("{}", target))
+      ->type_name(std::is_same_v<T, int> ? "INT" : "FLOAT");
+}
+
+} // namespace
+
+CLI::Option* add_number_option(CLI::App& app, const std::string& names, int& target,
+                               const std::string& help) {
+  return number_option(app, names, target, help);
+}
+
+CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& target,
+                               const std::string& help) {
+  return number_option(app, names, target, help);
+}
+
 std::string config_text(const Params& p) {
   std::string text;
   for (const auto& spec : param_specs())
-    text += fmt::format("{} = {}\n", spec.name, value_text(p, spec));
+    if (const auto value = value_text(p, spec))
+      text += fmt::format("{} = {}\n", spec.name, *value);
   return text;
-}
-
-/// Non-printable bytes of a text as \xNN, for messages that quote user input.
-std::string printable(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s)
-    out += (c >= 0x20 && c < 0x7f) ? std::string(1, static_cast<char>(c))
-                                   : fmt::format("\\x{:02x}", c);
-  return out;
 }
 
 /// Arguments after expanding `--config FILE` (or --config=FILE) of the evolve subcommand into

@@ -10,12 +10,21 @@
 
 namespace CLI {
 class App;
-}
+class Option;
+} // namespace CLI
 
 namespace gbssn1d {
 
 /// Adds every evolve flag, grouped, with its default, to `app`, bound to `p`.
 void add_options(CLI::App& app, Params& p);
+
+/// A numeric option of a subcommand (e.g. "-j,--jobs") read by the one number reader
+/// (config/numbers.hpp); a bad value is a ParamError naming the option's first name. The
+/// default shown by --help is the target's value.
+CLI::Option* add_number_option(CLI::App& app, const std::string& names, int& target,
+                               const std::string& help);
+CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& target,
+                               const std::string& help);
 
 /// The effective configuration as a TOML/INI file that `evolve --config` reads back: one
 /// `key = value` line per parameter, at full precision.
@@ -32,8 +41,5 @@ Params parse_evolve_args(const std::vector<std::string>& args);
 
 /// Whether `name` (without "--") is an evolve flag.
 bool is_parameter_name(const std::string& name);
-
-/// Non-printable bytes of a text as \xNN, for messages that quote user input.
-std::string printable(const std::string& s);
 
 } // namespace gbssn1d

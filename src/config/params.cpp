@@ -1,5 +1,6 @@
 #include "config/params.hpp"
 
+#include "config/numbers.hpp"
 #include "io/table.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string_view>
 #include <unistd.h>
@@ -23,6 +25,15 @@ namespace {
 /// c dt/dr < 2.06; the fastest characteristic speeds are the 1+log gauge speed sqrt(2) plus
 /// the shift, so 1 keeps a margin. (dt = cfl * smallest spacing.)
 constexpr double cfl_max = 1.0;
+/// Smallest CFL factor accepted: below it a run only accumulates round-off in t (and a value
+/// such as 4.9e-324 would otherwise be reported as too many steps for --tmax).
+constexpr double cfl_min = 1e-4;
+/// The smallest cell accepted, relative to rmax: below it double precision cannot tell the
+/// cell's faces apart well enough for 4th-order differences.
+constexpr double min_spacing_over_rmax = 1e-10;
+/// The horizon's radius must be found well within one cell: at most this fraction of the
+/// smallest cell width (a loose tolerance returns a point of the bracket, not the root).
+constexpr double ah_tol_over_spacing_max = 1e-3;
 /// RK4 stability limit of the Gamma-driver damping term, eta dt < 2.78 (Schnetter 2010).
 constexpr double eta_dt_max = 2.78;
 /// Largest grid accepted: 9 fields on about 6 state-sized buffers (state, RK4 stages, output).
@@ -78,10 +89,18 @@ void require_positive(const std::string& flag, double v) {
 
 } // namespace
 
+std::string printable(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s)
+    out += (c >= 0x20 && c < 0x7f) ? std::string(1, static_cast<char>(c))
+                                   : fmt::format("\\x{:02x}", c);
+  return out;
+}
+
 void resolve_defaults(Params& p) {
-  if (p.eta == eta_default && p.M > 0.0) // only the default stands for 2/M; -3 is refused
-    p.eta = 2.0 / p.M;
-  if (p.norm_rmax < 0.0 && std::isfinite(p.norm_rmax) && p.rmax > 0.0)
+  if (!p.eta)
+    p.eta = 2.0 / p.M; // M and rmax are validated afterwards: a bad M gives a non-finite eta
+  if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
 }
 
@@ -91,12 +110,12 @@ std::vector<std::string> warnings(const Params& p) {
   // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
   // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
   if (p.id == "wormhole" && p.rahA > 0.0 && p.rah0 < standard_horizon_radius * p.M
-      && p.eta > 1.0 / p.M)
+      && p.eta.value_or(2.0 / p.M) > 1.0 / p.M)
     w.push_back(fmt::format(
         "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
         "then drifts and such runs went non-finite after 100-200 M; --eta 1 held them to 1000 M "
         "(docs/horizon-shift-study.md, Sec. 4)",
-        num(p.rah0), num(p.eta)));
+        num(p.rah0), num(p.eta.value_or(2.0 / p.M))));
   return w;
 }
 
@@ -143,10 +162,16 @@ void validate(const Params& p) {
   if (p.lapse0 != "one" && p.lapse0 != "precollapsed")
     throw ParamError("--lapse0", p.lapse0, "must be 'one' or 'precollapsed'");
 
-  require_finite("--eta", p.eta);
-  if (p.eta < 0.0)
-    throw ParamError("--eta", num(p.eta), "must be >= 0");
+  if (!p.eta || !p.norm_rmax)
+    throw std::logic_error("validate() before resolve_defaults()");
+  const double eta = *p.eta, norm_rmax = *p.norm_rmax;
+  require_finite("--eta", eta);
+  if (eta < 0.0)
+    throw ParamError("--eta", num(eta), "must be >= 0");
   require_positive("--cfl", p.cfl);
+  if (p.cfl < cfl_min)
+    throw ParamError("--cfl", num(p.cfl),
+                     fmt::format("below {}: such steps only accumulate round-off", cfl_min));
   if (p.cfl > cfl_max)
     throw ParamError("--cfl", num(p.cfl),
                      fmt::format("outside the stable range (0, {}] of RK4 with 4th-order "
@@ -169,13 +194,13 @@ void validate(const Params& p) {
     throw ParamError("--checkpoint-every", num(p.checkpoint_every), "must be >= 0 (0: off)");
 
   require_finite("--norm-rmin", p.norm_rmin);
-  require_finite("--norm-rmax", p.norm_rmax);
+  require_finite("--norm-rmax", norm_rmax);
   if (p.norm_rmin < 0.0)
     throw ParamError("--norm-rmin", num(p.norm_rmin), "must be >= 0");
-  if (!(p.norm_rmax > p.norm_rmin))
-    throw ParamError("--norm-rmax", num(p.norm_rmax), "must be > --norm-rmin");
-  if (p.norm_rmax > p.rmax)
-    throw ParamError("--norm-rmax", num(p.norm_rmax), "must not exceed --rmax");
+  if (!(norm_rmax > p.norm_rmin))
+    throw ParamError("--norm-rmax", num(norm_rmax), "must be > --norm-rmin");
+  if (norm_rmax > p.rmax)
+    throw ParamError("--norm-rmax", num(norm_rmax), "must not exceed --rmax");
 
   require_positive("--norm-Rmin", p.norm_Rmin);
   require_finite("--norm-Rmax", p.norm_Rmax);
@@ -187,12 +212,10 @@ void validate(const Params& p) {
   require_positive("--rah0", p.rah0);
   require_positive("--rah-width", p.rah_width);
   if (p.ah_every != "substage" && p.ah_every != "step") {
-    const bool integer = !p.ah_every.empty()
-                         && std::all_of(p.ah_every.begin(), p.ah_every.end(),
-                                        [](char c) { return c >= '0' && c <= '9'; });
-    if (!integer || std::stol(p.ah_every) < 1)
-      throw ParamError("--ah-every", p.ah_every,
-                       "must be 'substage', 'step' or a positive number of steps");
+    const auto n = parse_decimal<long>(p.ah_every);
+    if (!n || *n < 1)
+      throw ParamError("--ah-every", printable(p.ah_every),
+                       "must be 'substage', 'step' or a whole number of steps >= 1");
   }
   (void)choice("--rah-profile", p.rah_profile, profile_choices);
   (void)choice("--rah-normal", p.rah_normal, normal_choices);
@@ -203,11 +226,14 @@ void validate(const Params& p) {
   (void)choice("--driver-advection", p.driver_advection, stencil_choices);
   (void)choice("--delta-advection", p.delta_advection, stencil_choices);
   require_finite("--ah-tmin", p.ah_tmin);
-  require_finite("--ah-tmax", p.ah_tmax);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
-  if (p.ah_tmax >= 0.0 && p.ah_tmax < p.ah_tmin)
-    throw ParamError("--ah-tmax", num(p.ah_tmax), "must be >= --ah-tmin (or < 0: no limit)");
+  if (p.ah_tmax) {
+    require_finite("--ah-tmax", *p.ah_tmax);
+    if (*p.ah_tmax < p.ah_tmin)
+      throw ParamError("--ah-tmax", num(*p.ah_tmax),
+                       "must be >= --ah-tmin (leave it out for no limit)");
+  }
   require_positive("--ah-tol", p.ah_tol);
   constexpr std::array<std::string_view, 6> variants{
       "consistent",        "no-shift-derivatives", "no-shift-second-derivatives",
@@ -220,14 +246,53 @@ void validate(const Params& p) {
     throw ParamError("--rah-variant", p.rah_variant,
                      "needs searches every n steps (--ah-every step or a number)");
 
+  // The grid itself: a map whose cells are not finite, increasing and resolvable in double
+  // precision is refused here, before anything is written.
+  const Grid grid = [&] {
+    const std::string flag = p.grid == "sinh" ? "--dr-inner" : "--N";
+    const std::string value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
+    try {
+      return make_grid(grid_spec(p));
+    } catch (const std::exception& e) {
+      throw ParamError(flag, value, fmt::format("gives no usable grid: {}", e.what()));
+    }
+  }();
+  {
+    const std::string flag = p.grid == "sinh" ? "--dr-inner" : "--N";
+    const std::string value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
+    for (std::size_t i = 0; i < grid.n_total(); ++i)
+      if (!std::isfinite(grid.r()[i]) || !std::isfinite(grid.dr()[i])
+          || !std::isfinite(grid.inv_dr_dx()[i]) || !std::isfinite(grid.d2_fx_coeff()[i])
+          || (i > 0 && !(grid.r()[i] > grid.r()[i - 1])))
+        throw ParamError(flag, value,
+                         fmt::format("gives a grid whose radii are not finite and increasing "
+                                     "(cell {})",
+                                     i));
+    if (!(grid.min_spacing() >= min_spacing_over_rmax * p.rmax))
+      throw ParamError(flag, value,
+                       fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
+                                   "double precision cannot difference",
+                                   grid.min_spacing(), min_spacing_over_rmax));
+  }
+  if (p.ah_tol > ah_tol_over_spacing_max * grid.min_spacing())
+    throw ParamError("--ah-tol", num(p.ah_tol),
+                     fmt::format("must be at most {} x the smallest cell width ({:.3g}), so that "
+                                 "the horizon is found well within one cell",
+                                 ah_tol_over_spacing_max, grid.min_spacing()));
   // The Gamma-driver's damping term limits the step independently of the spacing.
-  const double dt = time_step(p.cfl, make_grid(grid_spec(p)));
+  const double dt = time_step(p.cfl, grid);
+  if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
+    throw ParamError("--checkpoint-every", num(p.checkpoint_every),
+                     fmt::format("is shorter than the time step dt = {:.6g} (checkpoints are "
+                                 "written between steps; 0: only on a signal)",
+                                 dt));
   // The step count (the step is the CFL step whatever the output cadence) and the row counts.
   const double n_steps = std::ceil(p.tmax / dt - 1e-9);
   if (n_steps > steps_max)
     throw ParamError(
         "--tmax", num(p.tmax),
-        fmt::format("would take {:.3g} steps of {} (at most {:.0e})", n_steps, dt, steps_max));
+        fmt::format("would take {:.3g} steps of dt = --cfl x smallest cell = {} (at most {:.0e})",
+                    n_steps, dt, steps_max));
   if (p.tmax / p.dt_series > rows_max)
     throw ParamError("--dt-series", num(p.dt_series),
                      fmt::format("would write {:.3g} rows to --tmax = {} (at most {:.0e})",
@@ -237,11 +302,11 @@ void validate(const Params& p) {
         "--dt-profiles", num(p.dt_profiles),
         fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
                     p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
-  if (p.eta * dt > eta_dt_max)
+  if (eta * dt > eta_dt_max)
     throw ParamError("--cfl", num(p.cfl),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
-                                 p.eta, p.eta * dt, eta_dt_max));
+                                 eta, eta * dt, eta_dt_max));
 }
 
 void validate_output_dir(const Params& p) {
@@ -295,13 +360,13 @@ EvolutionConfig evolution_config(const Params& p) {
   c.dt_profiles = p.dt_profiles;
   c.checkpoint_every = p.checkpoint_every;
   c.norms.rmin = p.norm_rmin;
-  c.norms.rmax = p.norm_rmax;
+  c.norms.rmax = p.norm_rmax.value();
   c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
   c.norms.Rmax = p.norm_Rmax * p.M;
   c.norms.Rint = p.norm_Rint * p.M;
   c.horizon_search.every_steps = ah_every_steps(p);
   c.horizon_search.t_min = p.ah_tmin;
-  c.horizon_search.t_max = p.ah_tmax;
+  c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   c.horizon_search.finder.tolerance = p.ah_tol;
   return c;
 }
@@ -318,7 +383,7 @@ InitialDataParams initial_data_params(const Params& p) {
 
 RhsParams rhs_params(const Params& p) {
   RhsParams r;
-  r.gauge.shift.eta = p.eta;
+  r.gauge.shift.eta = p.eta.value();
   r.gauge.shift.advective = p.advective_shift;
   r.gauge.slicing.advective = !p.non_advective_lapse;
   r.ko_sigma = p.ko_sigma;
@@ -336,7 +401,7 @@ RhsParams rhs_params(const Params& p) {
   r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
   r.horizon_shift.t_min = p.ah_tmin;
-  r.horizon_shift.t_max = p.ah_tmax;
+  r.horizon_shift.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   using Variant = HorizonShiftParams::Variant;
   r.horizon_shift.variant =
       p.rah_variant == "no-shift-second-derivatives" ? Variant::no_shift_second_derivatives
@@ -354,6 +419,14 @@ RhsParams rhs_params(const Params& p) {
 
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {
   const std::string flag = "--rah-hAH-file";
+  // A regular file of sane size, checked before reading (/dev/zero would be read for ever).
+  constexpr std::uintmax_t max_bytes = 1u << 30;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw ParamError(flag, printable(path), "is not a regular file");
+  if (const auto size = std::filesystem::file_size(path, ec); ec || size > max_bytes)
+    throw ParamError(flag, printable(path),
+                     fmt::format("is larger than {} bytes (not a gbssn1d output file)", max_bytes));
   Table table;
   try {
     table = read_table(path);
@@ -376,6 +449,9 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
   if (t.size() < 5)
     throw ParamError(flag, path, "needs at least 5 rows");
   const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw ParamError(flag, printable(path),
+                     fmt::format("its times must increase (t = {} ... {})", t.front(), t.back()));
   for (std::size_t k = 1; k < t.size(); ++k)
     if (std::abs(t[k] - t[0] - static_cast<double>(k) * dt) > 1e-9 * (1.0 + std::abs(t[k])))
       throw ParamError(flag, path,
@@ -402,7 +478,7 @@ long ah_every_steps(const Params& p) {
     return 0;
   if (p.ah_every == "step")
     return 1;
-  return std::stol(p.ah_every);
+  return parse_decimal<long>(p.ah_every).value(); // validated
 }
 
 } // namespace gbssn1d

@@ -5,14 +5,12 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gbssn1d {
-
-/// The value of Params::eta that stands for its default, 2/M (resolve_defaults).
-inline constexpr double eta_default = -1.0;
 
 /// The typed configuration's defaults, which the parameters below take as theirs (one source).
 inline const EvolutionConfig& evolution_defaults() {
@@ -21,8 +19,10 @@ inline const EvolutionConfig& evolution_defaults() {
 }
 
 /// Flags as the user gives them; numbers default to the typed configuration's values, except
-/// where a flag's own convention differs (eta and norm-rmax stand for defaults resolved
-/// against M and rmax; the areal norm windows are in units of M; choices are strings).
+/// where a flag's own convention differs (an unset eta or norm-rmax stands for a rule resolved
+/// against M and rmax, an unset ah-tmax for no limit; the areal norm windows are in units of
+/// M; choices are strings). A flag whose default is a rule is an optional, never a sentinel
+/// value: any number the user gives is validated as that number.
 struct Params {
   // grid
   int N = static_cast<int>(evolution_defaults().grid.N);
@@ -35,7 +35,7 @@ struct Params {
   double M = evolution_defaults().initial_data.M;
   std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
   // gauge
-  double eta = eta_default; ///< Gamma-driver damping; eta_default stands for 2/M
+  std::optional<double> eta; ///< Gamma-driver damping; unset: 2/M (resolve_defaults)
   bool advective_shift = false;
   bool non_advective_lapse = false;
   // numerics
@@ -51,7 +51,7 @@ struct Params {
   double checkpoint_every = evolution_defaults().checkpoint_every;
   // diagnostics
   double norm_rmin = evolution_defaults().norms.rmin;
-  double norm_rmax = -1.0; ///< < 0 means min(10 M, rmax / 2)
+  std::optional<double> norm_rmax; ///< unset: min(10 M, rmax / 2) (resolve_defaults)
   double norm_Rmin = 2.5;  ///< areal-radius window of the *_R norms, in M (the same place in
   double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
   double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
@@ -74,8 +74,7 @@ struct Params {
   std::string ah_every = "substage";           ///< substage | step | n (every n steps)
   double ah_tmin =
       evolution_defaults().horizon_search.t_min; ///< searches are made for ah-tmin <= t ...
-  double ah_tmax =
-      evolution_defaults().horizon_search.t_max; ///< ... <= ah-tmax; < 0: until the end
+  std::optional<double> ah_tmax;                 ///< ... <= ah-tmax; unset: until the end
   double ah_tol =
       evolution_defaults().horizon_search.finder.tolerance; ///< root-finder tolerance in r (M)
   /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
@@ -99,7 +98,11 @@ private:
   std::string flag_;
 };
 
-/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax).
+/// Non-printable bytes of a text as \xNN, for messages that quote user input.
+std::string printable(const std::string& s);
+
+/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax); after it, eta and
+/// norm_rmax hold values.
 void resolve_defaults(Params& p);
 
 /// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.

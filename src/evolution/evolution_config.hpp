@@ -9,6 +9,8 @@
 #include "horizon/apparent_horizon.hpp"
 #include "initial_data/initial_data.hpp"
 
+#include <limits>
+
 namespace gbssn1d {
 
 /// Windows of the constraint norms of timeseries.dat (diagnostics/constraints.hpp).
@@ -22,9 +24,9 @@ struct NormWindows {
 struct HorizonSearchSettings {
   long every_steps = 0; ///< 0: at every RK substage (inside the RHS); n >= 1: every n steps
   double t_min = 0.0;   ///< no searches before t_min ...
-  double t_max = -1.0;  ///< ... or after t_max (< 0: none)
-  HorizonFinderParams finder{.tolerance = 1e-12}; ///< the root-finder's settings
-  bool in_window(double t) const { return t >= t_min && (t_max < 0.0 || t <= t_max); }
+  double t_max = std::numeric_limits<double>::infinity(); ///< ... or after t_max
+  HorizonFinderParams finder{.tolerance = 1e-12};         ///< the root-finder's settings
+  bool in_window(double t) const { return t >= t_min && t <= t_max; }
 };
 
 struct EvolutionConfig {

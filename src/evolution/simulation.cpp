@@ -315,8 +315,12 @@ void Simulation::run(Output* out) {
   // Checkpoints at full steps (never after the shortened last one, so that a resumed run with
   // a later tmax steps exactly as an uninterrupted one).
   const double every = config_.checkpoint_every;
-  double next_checkpoint = every > 0.0 ? (std::floor(t_ / every + 1e-9) + 1.0) * every
-                                       : std::numeric_limits<double>::infinity();
+  // the first multiple of `every` after t (arithmetic, never a loop: it cannot stall)
+  auto checkpoint_after = [every](double t) {
+    return every > 0.0 ? (std::floor(t / every + 1e-9) + 1.0) * every
+                       : std::numeric_limits<double>::infinity();
+  };
+  double next_checkpoint = checkpoint_after(t_);
   auto save = [&](const std::optional<double>& h_AH) {
     if (!out)
       return;
@@ -354,8 +358,7 @@ void Simulation::run(Output* out) {
     write_due(t_prev, dense);
     if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
       save(h_AH_before_rhs);
-      while (next_checkpoint <= t_ + 1e-9 * s.dt)
-        next_checkpoint += every;
+      next_checkpoint = checkpoint_after(t_);
     }
     if (const int signal = stop_signal(); signal != 0 && !last) {
       save(h_AH_before_rhs); // the run can be resumed from here

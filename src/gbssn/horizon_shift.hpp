@@ -81,7 +81,8 @@ struct HorizonShiftParams {
   /// true: h_AH is found on the state of every RK substage (the RHS is a function of the state
   /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
   bool search_every_substage = true;
-  double t_min = 0.0, t_max = -1.0; ///< substage searches only in this window (t_max < 0: none)
+  double t_min = 0.0; ///< substage searches only in t_min <= t <= t_max
+  double t_max = std::numeric_limits<double>::infinity();
   /// Open loop: h_AH(t) prescribed as a function of time (no searches); empty: closed loop.
   std::function<double(double)> prescribed_h_AH;
   /// Deliberately inconsistent implementations, for the study of why a 3D code lost

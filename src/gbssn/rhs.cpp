@@ -114,7 +114,7 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
   if (!hs.active()) {
     interior<false>(u, dudt);
   } else {
-    const bool in_window = t >= hs.t_min && (hs.t_max < 0.0 || t <= hs.t_max);
+    const bool in_window = t >= hs.t_min && t <= hs.t_max;
     const bool midstep_search =
         hs.variant == HorizonShiftParams::Variant::midstep_update
         && evaluations_ % static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;

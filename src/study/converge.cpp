@@ -131,7 +131,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   const Grid coarse = make_grid(grid_spec(members.front()));
   std::vector<double> radii;
   for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
-    if (coarse.r()[i] >= members.front().norm_rmin && coarse.r()[i] <= members.front().norm_rmax)
+    if (coarse.r()[i] >= members.front().norm_rmin && coarse.r()[i] <= *members.front().norm_rmax)
       radii.push_back(coarse.r()[i]);
   if (radii.empty())
     throw ParamError("--norm-rmin", fmt::format("{}", members.front().norm_rmin),

@@ -1,6 +1,7 @@
 #include "study/sweep.hpp"
 
 #include "config/config_file.hpp"
+#include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/stop_signal.hpp"
 #include "io/output.hpp"
@@ -175,6 +176,9 @@ SweepAxis parse_sweep_axis(const std::string& text) {
     if (flag == "out" || flag == "force")
       throw ParamError("--sweep", text, "the sweep chooses each member's --out itself");
   }
+  if (std::any_of(text.begin(), text.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+    throw ParamError("--sweep", printable(text),
+                     "holds a control character (a value must be one line of text)");
   for (const auto& point : split(text.substr(eq + 1), ',')) {
     std::vector<std::string> values = split(point, ':');
     if (values.size() != axis.flags.size()
@@ -216,6 +220,31 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
       m.args.push_back("--" + flag + "=" + value);
     m.args.push_back("--out=" + (fs::path(out) / m.name).string());
     m.args.push_back("--force");
+  }
+  // Two members in one folder would share (and overwrite) their results, and two members of
+  // one configuration would run the same thing twice and repeat it in the summary.
+  std::map<std::string, const SweepMember*> by_name, by_config;
+  auto values_text = [](const SweepMember& m) {
+    std::string s;
+    for (const auto& [flag, value] : m.values)
+      s += (s.empty() ? "" : " ") + flag + "=" + value;
+    return printable(s);
+  };
+  for (const auto& m : members) {
+    if (const auto [it, fresh] = by_name.emplace(m.name, &m); !fresh)
+      throw ParamError("--sweep", values_text(m),
+                       fmt::format("gives the member folder '{}' of '{}' again", printable(m.name),
+                                   values_text(*it->second)));
+    std::string config;
+    try { // members that do not parse are marked invalid when the sweep runs
+      config = config_text(parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}));
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (const auto [it, fresh] = by_config.emplace(config, &m); !fresh)
+      throw ParamError(
+          "--sweep", values_text(m),
+          fmt::format("runs the same configuration as '{}'", values_text(*it->second)));
   }
   return members;
 }
@@ -421,7 +450,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
         if (statuses[k] == "ok") {
           for (const auto& [flag, value] : members[k].values)
             if (flag == "N")
-              N.push_back(std::stod(value));
+              N.push_back(parse_number<int>("--sweep", value)); // as the member read it
           E.push_back(results[k].H_final);
         }
       if (N.size() >= 2)

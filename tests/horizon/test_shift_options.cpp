@@ -144,6 +144,7 @@ TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 
   Params p = trumpet(200, 20.0, 0.0);
   p.rahA = 0.5;
   p.rah0 = 0.6;
+  resolve_defaults(p);
   CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
   p.rah0 = 0.89;
   CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::rational);
