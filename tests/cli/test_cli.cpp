@@ -379,3 +379,37 @@ TEST_CASE("the Gamma-driver damping limit: eta dt = 2.7 runs, 2.8 is refused as 
   check_refused(grid.substr(0, grid.find("--tmax")) + "--eta " + std::to_string(2.8 / 1.25),
                 "--cfl");
 }
+
+// CLI11 and strtol read "032" as octal 26; the one number reader reads decimal everywhere, so
+// the command line, a config file, a sweep value (and its fitted order) and a converge list
+// agree on what a text means.
+TEST_CASE("numbers are decimal on every path: 032 is 32 in flags, config files, sweeps, lists") {
+  auto header_N = [](const fs::path& dir) {
+    std::ifstream in(dir / "timeseries.dat");
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("# N = ", 0) == 0)
+        return std::stoi(line.substr(6));
+    return -1;
+  };
+  const fs::path flag = scratch("octal_flag");
+  REQUIRE(run("evolve --N 032 --tmax 0 --out " + flag.string()).status == 0);
+  CHECK(header_N(flag) == 32);
+  const fs::path cfg = scratch("octal.toml");
+  std::ofstream(cfg) << "N = 040\ndr-inner = 0.020\n";
+  const fs::path file = scratch("octal_file");
+  REQUIRE(run("evolve --config " + cfg.string() + " --tmax 0 --out " + file.string()).status == 0);
+  CHECK(header_N(file) == 40);
+  const fs::path sweep = scratch("octal_sweep");
+  REQUIRE(
+      run("sweep --sweep N=040,060,0100 --tmax 0 --progress-every 0 --out " + sweep.string()).status
+      == 0);
+  CHECK(header_N(sweep / "N=040") == 40);
+  CHECK(header_N(sweep / "N=060") == 60);
+  CHECK(header_N(sweep / "N=0100") == 100);
+  const fs::path conv = scratch("octal_converge");
+  REQUIRE(run("converge --N 032,048,064 --tmax 0 --out " + conv.string()).status == 0);
+  CHECK(header_N(conv / "N32") == 32);
+  CHECK(header_N(conv / "N64") == 64);
+  for (const auto& d : {flag, cfg, file, sweep, conv})
+    fs::remove_all(d);
+}
