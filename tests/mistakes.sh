@@ -21,6 +21,11 @@ mistakes=(
   "driver-full-shift a no-op|src/gbssn/rhs.cpp|          gd = full_shift(p);|          ;"
   "midstep-update never firing|src/gbssn/rhs.cpp|static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;|static_cast<std::uint64_t>(4 * hs.midstep_every) == 99;"
   "--rah-width ignored|src/config/params.cpp|  r.horizon_shift.width = p.rah_width;|  r.horizon_shift.width = 1.0;"
+  "checkpoint written in place, not renamed over|src/evolution/checkpoint.cpp|const std::filesystem::path tmp = file.string() + \".tmp\";|const std::filesystem::path tmp = file;"
+  "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"
+  "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
+  "sweep reruns reuse members of other inputs|src/study/sweep.cpp|      if (!diff.empty())|      if (false)"
+  "converge samples reused for other radii|src/study/converge.cpp|saved_key != key)|saved_key != saved_key)"
 )
 uncaught=0
 for m in "${mistakes[@]}"; do

@@ -61,18 +61,22 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
   // How the run ended goes to stderr and, as the last line, into timeseries.dat.
   auto stopped = [&](const std::string& prefix, const std::string& what, const std::string& kept,
                      int status) {
-    fmt::print(stderr, "gbssn1d: {}{}; {} in {}\n", prefix, what, kept, p.out);
+    fmt::print(stderr, "gbssn1d: {}{}; {}\n", prefix, what, kept);
     out.write_end(fmt::format("stopped: {}", what));
     return status;
   };
   try {
     sim.run(&out);
   } catch (const NonFiniteError& e) {
-    return stopped("error: ", e.what(), "output up to the last finite state kept", 3);
+    return stopped("error: ", e.what(), "output up to the last finite state kept in " + p.out, 3);
   } catch (const HorizonFinderError& e) {
-    return stopped("error: ", e.what(), "output up to then kept", 3);
+    return stopped("error: ", e.what(), "output up to then kept in " + p.out, 3);
   } catch (const Interrupted& e) {
-    return stopped("", e.what(), "output up to then kept", 128 + e.signal);
+    return stopped("", e.what(),
+                   fmt::format("output up to then and a checkpoint kept in {}; resume with: "
+                               "gbssn1d resume {}",
+                               p.out, p.out),
+                   128 + e.signal);
   } catch (const OutputError& e) {
     fmt::print(stderr, "gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
     try {
@@ -87,6 +91,27 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
   fmt::print(stderr, "gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n",
              sim.time(), wall, sim.schedule().n_steps, sim.rhs().evaluations());
   return 0;
+}
+
+/// How far timeseries.dat goes: the time of its last data row, and whether its last line says
+/// the run completed.
+struct SeriesEnd {
+  double t_last = 0.0;
+  bool completed = false;
+};
+
+SeriesEnd series_end(const std::filesystem::path& file) {
+  SeriesEnd end;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# end: completed", 0) == 0)
+      end.completed = true;
+    else if (!line.empty() && line[0] != '#') {
+      end.completed = false; // rows after an end line: a later resume wrote them
+      end.t_last = std::strtod(line.c_str(), nullptr);
+    }
+  }
+  return end;
 }
 
 int resume(const std::string& dir_name, std::optional<double> tmax) {
@@ -116,12 +141,31 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),
                      fmt::format("is before the checkpoint at t = {}", c.t));
+  // What the files hold already: a completed run is left alone, and no resume may cut away
+  // output beyond the new end.
+  const SeriesEnd written = series_end(dir / "timeseries.dat");
+  if (written.completed && (!tmax || p.tmax <= written.t_last)) {
+    fmt::print(stderr,
+               "gbssn1d: {} is complete at t = {}; nothing to do (`gbssn1d resume {} --tmax T` "
+               "continues it to a later T)\n",
+               dir_name, written.t_last, dir_name);
+    return 0;
+  }
+  if (p.tmax < written.t_last)
+    throw ParamError("--tmax", fmt::format("{}", p.tmax),
+                     fmt::format("is before the last output at t = {}: resuming would cut "
+                                 "the output written after it",
+                                 written.t_last));
   Simulation sim(evolution_config(p));
   try {
     sim.restore(c);
+    Output::check_resumable(dir, c.marks);
   } catch (const CheckpointError& e) {
     throw ParamError("DIR", dir_name, e.what());
+  } catch (const OutputError& e) {
+    throw ParamError("DIR", dir_name, e.what());
   }
+  // every check is done: only now is any file changed
   sim.show_progress = true;
   sim.checkpoint_config = config;
   write_file_atomically(dir / "config.toml", header_text("") + config);

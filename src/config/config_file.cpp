@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -260,6 +262,38 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
   if (rest.size() > 1)
     out.insert(out.end(), rest.begin() + 1, rest.end());
   return out;
+}
+
+std::vector<std::string> config_differences(const std::string& old_text,
+                                            const std::string& new_text,
+                                            const std::vector<std::string>& ignored) {
+  auto values = [&](const std::string& text) {
+    std::map<std::string, std::string> kv;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+      const auto eq = line.find(" = ");
+      if (line.empty() || line[0] == '#' || eq == std::string::npos)
+        continue;
+      const std::string key = line.substr(0, eq);
+      if (std::find(ignored.begin(), ignored.end(), key) == ignored.end())
+        kv[key] = line.substr(eq + 3);
+    }
+    return kv;
+  };
+  const auto a = values(old_text), b = values(new_text);
+  std::vector<std::string> diff;
+  auto value_of = [](const std::map<std::string, std::string>& kv, const std::string& key) {
+    const auto it = kv.find(key);
+    return it == kv.end() ? std::string("(unset)") : it->second;
+  };
+  std::set<std::string> keys;
+  for (const auto* kv : {&a, &b})
+    for (const auto& [key, value] : *kv)
+      keys.insert(key);
+  for (const auto& key : keys)
+    if (value_of(a, key) != value_of(b, key))
+      diff.push_back(fmt::format("{}: {} -> {}", key, value_of(a, key), value_of(b, key)));
+  return diff;
 }
 
 bool is_parameter_name(const std::string& name) {

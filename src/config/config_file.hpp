@@ -30,6 +30,13 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& 
 /// `key = value` line per parameter, at full precision.
 std::string config_text(const Params& p);
 
+/// The parameters whose values differ between two configuration texts (config.toml), as
+/// "key: old -> new" (a key missing on one side reads "(unset)"); '#' lines and the keys in
+/// `ignored` are not compared.
+std::vector<std::string>
+config_differences(const std::string& old_text, const std::string& new_text,
+                   const std::vector<std::string>& ignored = {"out", "force"});
+
 /// Arguments after expanding `--config FILE` into `--key=value` arguments placed before the
 /// command line's own, so that flags override the file. Throws ParamError for a missing file,
 /// a key that names no parameter or a bad boolean.

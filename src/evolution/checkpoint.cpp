@@ -6,35 +6,36 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <sstream>
+#include <string_view>
 #include <unistd.h>
 
 namespace gbssn1d {
 
 namespace {
 
-constexpr char magic[] = "gbssn1d checkpoint 1\n";
+// Format 2: the magic line (with the format's number), the fields below in order (native byte
+// order, as the file never leaves the machine type that wrote it), then the FNV-1a 64-bit hash
+// of every byte before it. Format 1 had no hash and is refused by name.
+constexpr std::string_view magic = "gbssn1d checkpoint 2\n";
+constexpr std::string_view magic_prefix = "gbssn1d checkpoint ";
+/// The largest checkpoint read (16 GiB: a grid of 2e8 points); anything larger is not one.
+constexpr std::uintmax_t max_file_bytes = std::uintmax_t{1} << 34;
 
-class Writer {
-public:
-  explicit Writer(std::FILE* f) : f_(f) {}
-  template <class T>
-  void put(const T& v) {
-    ok_ = ok_ && std::fwrite(&v, sizeof(T), 1, f_) == 1;
+std::uint64_t fnv1a(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
   }
-  void put_bytes(const void* p, std::size_t n) {
-    ok_ = ok_ && (n == 0 || std::fwrite(p, 1, n, f_) == n);
-  }
-  bool ok() const { return ok_; }
+  return h;
+}
 
-private:
-  std::FILE* f_;
-  bool ok_ = true;
-};
-
+/// Reads fields from the checked bytes; never past their end.
 class Reader {
 public:
-  Reader(std::FILE* f, const std::filesystem::path& path) : f_(f), path_(path) {}
+  Reader(std::string_view bytes, const std::filesystem::path& path) : rest_(bytes), path_(path) {}
   template <class T>
   T get() {
     T v{};
@@ -42,12 +43,16 @@ public:
     return v;
   }
   void get_bytes(void* p, std::size_t n) {
-    if (n != 0 && std::fread(p, 1, n, f_) != n)
-      throw CheckpointError(fmt::format("{} is truncated", path_.string()));
+    if (n > rest_.size())
+      throw CheckpointError(
+          fmt::format("{} is corrupt (a field runs past its end)", path_.string()));
+    std::memcpy(p, rest_.data(), n);
+    rest_.remove_prefix(n);
   }
+  std::size_t left() const { return rest_.size(); }
 
 private:
-  std::FILE* f_;
+  std::string_view rest_;
   const std::filesystem::path& path_;
 };
 
@@ -67,58 +72,89 @@ bool same_run(const std::string& config_a, const std::string& config_b) {
 }
 
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
+  std::string bytes(magic);
+  auto put_bytes = [&](const void* p, std::size_t n) {
+    bytes.append(static_cast<const char*>(p), n);
+  };
+  auto put = [&](const auto& v) { put_bytes(&v, sizeof(v)); };
+  put(std::uint64_t{c.config.size()});
+  put_bytes(c.config.data(), c.config.size());
+  put(c.step);
+  put(c.t);
+  put(c.dt);
+  put(c.k_series);
+  put(c.k_profiles);
+  put(std::uint8_t{c.h_AH.has_value()});
+  put(c.h_AH.value_or(0.0));
+  put(std::uint8_t{c.had_horizon});
+  put(std::uint8_t{c.reported});
+  put(c.evaluations);
+  for (std::uint64_t v : {c.marks.series, c.marks.profiles, c.marks.horizons, c.marks.series_header,
+                          c.marks.profiles_header, c.marks.horizons_header})
+    put(v);
+  put(std::uint64_t{c.u.size()});
+  put_bytes(c.u.data(), c.u.size() * sizeof(double));
+  put(fnv1a(bytes));
+
+  // a temporary file, flushed to disk, then renamed over the old checkpoint (atomic: a reader
+  // sees the old checkpoint or the new one, never a mixture)
   const std::filesystem::path tmp = file.string() + ".tmp";
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f)
     throw OutputError(
         fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
-  Writer w(f);
-  w.put_bytes(magic, sizeof(magic) - 1);
-  w.put<std::uint64_t>(c.config.size());
-  w.put_bytes(c.config.data(), c.config.size());
-  w.put(c.step);
-  w.put(c.t);
-  w.put(c.dt);
-  w.put(c.k_series);
-  w.put(c.k_profiles);
-  w.put<std::uint8_t>(c.h_AH.has_value());
-  w.put(c.h_AH.value_or(0.0));
-  w.put<std::uint8_t>(c.had_horizon);
-  w.put<std::uint8_t>(c.reported);
-  w.put(c.evaluations);
-  for (std::uint64_t v : {c.marks.series, c.marks.profiles, c.marks.horizons, c.marks.series_header,
-                          c.marks.profiles_header, c.marks.horizons_header})
-    w.put(v);
-  w.put<std::uint64_t>(c.u.size());
-  w.put_bytes(c.u.data(), c.u.size() * sizeof(double));
-  const bool ok = w.ok() && std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size()
+                  && std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
   std::fclose(f);
   if (!ok) {
     std::filesystem::remove(tmp);
     throw OutputError(fmt::format("cannot write the checkpoint {}", tmp.string()));
   }
   std::error_code ec;
-  std::filesystem::rename(tmp, file, ec); // atomic: the old checkpoint or the new one
+  std::filesystem::rename(tmp, file, ec);
   if (ec)
     throw OutputError(fmt::format("cannot replace {}: {}", file.string(), ec.message()));
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& file) {
-  std::FILE* f = std::fopen(file.c_str(), "rb");
-  if (!f)
-    throw CheckpointError(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
-  struct Closer {
-    std::FILE* f;
-    ~Closer() { std::fclose(f); }
-  } closer{f};
-  Reader r(f, file);
-  char head[sizeof(magic) - 1];
-  r.get_bytes(head, sizeof(head));
-  if (std::memcmp(head, magic, sizeof(head)) != 0)
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw CheckpointError(fmt::format("{} is not a regular file", file.string()));
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec || size > max_file_bytes)
+    throw CheckpointError(fmt::format("{} is not a gbssn1d checkpoint (size)", file.string()));
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+      throw CheckpointError(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
+    bytes.resize(size);
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(size)))
+      throw CheckpointError(fmt::format("cannot read {}", file.string()));
+  }
+  const std::string_view all(bytes);
+  if (all.substr(0, magic.size()) != magic) {
+    if (all.substr(0, magic_prefix.size()) == magic_prefix)
+      throw CheckpointError(fmt::format("{} was written in another checkpoint format ({}); this "
+                                        "version reads format 2",
+                                        file.string(),
+                                        all.substr(0, all.find('\n')).substr(magic_prefix.size())));
     throw CheckpointError(fmt::format("{} is not a gbssn1d checkpoint", file.string()));
+  }
+  if (all.size() < magic.size() + sizeof(std::uint64_t))
+    throw CheckpointError(fmt::format("{} is truncated", file.string()));
+  std::uint64_t stored_hash = 0;
+  std::memcpy(&stored_hash, all.data() + all.size() - sizeof(stored_hash), sizeof(stored_hash));
+  const std::string_view body = all.substr(0, all.size() - sizeof(stored_hash));
+  if (fnv1a(body) != stored_hash)
+    throw CheckpointError(fmt::format(
+        "{} is corrupt: its checksum does not match (truncated, or changed since written)",
+        file.string()));
+
+  Reader r(body.substr(magic.size()), file);
   Checkpoint c;
   const auto n_config = r.get<std::uint64_t>();
-  if (n_config > (1u << 20))
+  if (n_config > r.left())
     throw CheckpointError(fmt::format("{} is corrupt", file.string()));
   c.config.resize(n_config);
   r.get_bytes(c.config.data(), n_config);
@@ -127,24 +163,28 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   c.dt = r.get<double>();
   c.k_series = r.get<std::int64_t>();
   c.k_profiles = r.get<std::int64_t>();
-  const bool has_h = r.get<std::uint8_t>() != 0;
+  const auto flag = [&](const char* what) {
+    const auto v = r.get<std::uint8_t>();
+    if (v > 1)
+      throw CheckpointError(fmt::format("{} is corrupt ({})", file.string(), what));
+    return v == 1;
+  };
+  const bool has_h = flag("h_AH flag");
   const double h = r.get<double>();
   if (has_h)
     c.h_AH = h;
-  c.had_horizon = r.get<std::uint8_t>() != 0;
-  c.reported = r.get<std::uint8_t>() != 0;
+  c.had_horizon = flag("horizon flag");
+  c.reported = flag("report flag");
   c.evaluations = r.get<std::uint64_t>();
   for (std::uint64_t* v :
        {&c.marks.series, &c.marks.profiles, &c.marks.horizons, &c.marks.series_header,
         &c.marks.profiles_header, &c.marks.horizons_header})
     *v = r.get<std::uint64_t>();
   const auto n = r.get<std::uint64_t>();
-  if (n > (std::uint64_t{1} << 34))
-    throw CheckpointError(fmt::format("{} is corrupt", file.string()));
+  if (n != r.left() / sizeof(double) || r.left() % sizeof(double) != 0)
+    throw CheckpointError(fmt::format("{} is corrupt (its value count)", file.string()));
   c.u.resize(n);
   r.get_bytes(c.u.data(), n * sizeof(double));
-  if (std::fgetc(f) != EOF)
-    throw CheckpointError(fmt::format("{} has trailing bytes", file.string()));
   return c;
 }
 

@@ -154,6 +154,10 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
   row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, w.Rmin, w.Rmax);
   row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, w.Rint);
   diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
+  // The midstep-update variant times its searches by the RHS's evaluation count: reset so that
+  // the diagnostic evaluation never searches on a schedule of its own (which would make
+  // d_t alpha depend on how many outputs came before, and a resumed run differ).
+  diagnostic_rhs_.set_evaluations(0);
   diagnostic_rhs_(u_, dudt_, t_);
   const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
   const auto horizon = found.horizon();
@@ -214,9 +218,35 @@ void Simulation::restore(const Checkpoint& c) {
   if (c.dt != schedule_.dt)
     throw CheckpointError(
         fmt::format("the checkpoint's step {} is not this run's {}", c.dt, schedule_.dt));
-  if (c.step > schedule_.n_steps)
+  if (c.step < 0 || c.step > schedule_.n_steps)
+    throw CheckpointError(fmt::format(
+        "the checkpoint at step {} lies outside this run's steps 0 ... {} (--tmax = {})", c.step,
+        schedule_.n_steps, config_.tmax));
+  // Every counter must be the one the run itself would hold at this step (run() sets
+  // t = n dt, writes the outputs at k dt_series <= t, and evaluates the RHS four times a step).
+  if (c.t != static_cast<double>(c.step) * schedule_.dt)
+    throw CheckpointError(fmt::format("the checkpoint's time {} is not step {} x dt = {}", c.t,
+                                      c.step, static_cast<double>(c.step) * schedule_.dt));
+  const double tol = 1e-9 * schedule_.dt;
+  auto next_output = [&](double cadence) { // the first k with k cadence > t (as run() counts)
+    auto k = static_cast<std::int64_t>(std::floor((c.t + tol) / cadence)) + 1;
+    if (k > 1 && static_cast<double>(k - 1) * cadence > c.t + tol)
+      --k;
+    if (static_cast<double>(k) * cadence <= c.t + tol)
+      ++k;
+    return k;
+  };
+  if (c.k_series != next_output(config_.dt_series)
+      || c.k_profiles != next_output(config_.dt_profiles))
+    throw CheckpointError(fmt::format(
+        "the checkpoint's output counters ({}, {}) are not those of t = {} ({}, {})", c.k_series,
+        c.k_profiles, c.t, next_output(config_.dt_series), next_output(config_.dt_profiles)));
+  if (c.evaluations != 4 * static_cast<std::uint64_t>(c.step))
     throw CheckpointError(
-        fmt::format("the checkpoint at t = {} lies beyond --tmax = {}", c.t, config_.tmax));
+        fmt::format("the checkpoint's RHS count {} is not 4 x step {}", c.evaluations, c.step));
+  if (c.h_AH && !(std::isfinite(*c.h_AH) && *c.h_AH > 0.0))
+    throw CheckpointError(
+        fmt::format("the checkpoint's horizon radius {} is not a radius", *c.h_AH));
   u_ = c.u;
   t_ = c.t;
   step_ = c.step;

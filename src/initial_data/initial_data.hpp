@@ -4,7 +4,6 @@
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
 
-
 namespace gbssn1d {
 
 enum class InitialDataKind { wormhole, maximal_trumpet, onelog_trumpet };
@@ -22,6 +21,5 @@ struct InitialDataParams {
 ///  maximal-trumpet: Baumgarte-Naculich analytic trumpet with its lapse and shift (Sec. 9.5);
 ///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13).
 State initial_data(const Grid& grid, const InitialDataParams& params);
-
 
 } // namespace gbssn1d

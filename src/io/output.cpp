@@ -167,6 +167,23 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
                 m.horizons_header, m.horizons),
       first_block_(m.profiles <= m.profiles_header) {}
 
+void Output::check_resumable(const std::filesystem::path& dir, const OutputMarks& m) {
+  const std::pair<const char*, std::pair<std::uint64_t, std::uint64_t>> files[] = {
+      {"timeseries.dat", {m.series_header, m.series}},
+      {"profiles.dat", {m.profiles_header, m.profiles}},
+      {"horizon.dat", {m.horizons_header, m.horizons}}};
+  for (const auto& [name, mark] : files) {
+    const std::filesystem::path path = dir / name;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw OutputError(fmt::format("{} is missing: the run cannot be resumed", path.string()));
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || size < mark.second || mark.second < mark.first)
+      throw OutputError(fmt::format("{} is shorter than at the checkpoint ({} bytes, {} expected)",
+                                    path.string(), size, mark.second));
+  }
+}
+
 OutputMarks Output::marks() {
   OutputMarks m;
   m.series = series_.size();

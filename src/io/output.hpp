@@ -89,6 +89,10 @@ public:
   Output(const std::filesystem::path& dir, const std::string& parameter_header,
          const OutputMarks& marks);
 
+  /// Throws OutputError unless every file of `dir` is there and at least as long as its mark
+  /// (what the resuming constructor needs); touches nothing. Call before changing any file.
+  static void check_resumable(const std::filesystem::path& dir, const OutputMarks& marks);
+
   const std::filesystem::path& dir() const { return dir_; }
   /// The current marks (flushes).
   OutputMarks marks();

@@ -34,12 +34,17 @@ struct MemberRecord {
 };
 
 /// A member's samples saved with each of its checkpoints (DIR/N<n>/converge_samples.bin), so
-/// that a rerun of the study continues the member from the checkpoint: the step they belong
-/// to, then the rows and the samples, each list as a count and raw doubles.
-void write_samples(const fs::path& file, std::int64_t step, const MemberRecord& rec) {
+/// that a rerun of the study continues the member from the checkpoint: what was sampled (`key`:
+/// the fields and the radii, which depend on the study's coarsest member), the step they belong
+/// to, then the rows and the samples, each list as a count and raw doubles. Samples of another
+/// key are never reused.
+void write_samples(const fs::path& file, const std::string& key, std::int64_t step,
+                   const MemberRecord& rec) {
   std::string blob;
   auto put = [&](const void* p, std::size_t n) { blob.append(static_cast<const char*>(p), n); };
-  const std::uint64_t rows = rec.rows.size();
+  const std::uint64_t rows = rec.rows.size(), key_size = key.size();
+  put(&key_size, sizeof(key_size));
+  put(key.data(), key.size());
   put(&step, sizeof(step));
   put(&rows, sizeof(rows));
   put(rec.rows.data(), rows * sizeof(SeriesRow));
@@ -53,11 +58,18 @@ void write_samples(const fs::path& file, std::int64_t step, const MemberRecord& 
 }
 
 /// The samples saved with the checkpoint at `step`, or nothing (missing, other step, broken).
-std::optional<MemberRecord> read_samples(const fs::path& file, std::int64_t step) {
+std::optional<MemberRecord> read_samples(const fs::path& file, const std::string& key,
+                                         std::int64_t step) {
   std::ifstream in(file, std::ios::binary);
   auto get = [&](void* p, std::size_t n) {
     return static_cast<bool>(in.read(static_cast<char*>(p), static_cast<std::streamsize>(n)));
   };
+  std::uint64_t key_size = 0;
+  if (!get(&key_size, sizeof(key_size)) || key_size != key.size())
+    return std::nullopt;
+  std::string saved_key(key_size, '\0');
+  if (!get(saved_key.data(), key_size) || saved_key != key)
+    return std::nullopt;
   std::int64_t saved_step = -1;
   std::uint64_t rows = 0;
   if (!get(&saved_step, sizeof(saved_step)) || saved_step != step || !get(&rows, sizeof(rows))
@@ -140,6 +152,11 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   for (const auto& name : options.fields)
     fields.push_back(*var_from_name(name));
 
+  // what every member samples, exactly: saved samples are reused only for the same key
+  std::string samples_key = fmt::format("fields = {}\nradii =", fmt::join(options.fields, ","));
+  for (double r : radii)
+    samples_key += fmt::format(" {:.17g}", r);
+
   create_output_dir("--out", options.out);
   std::vector<MemberRecord> records(m);
   std::mutex log_mutex;
@@ -168,19 +185,23 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         sim.checkpoint_config = config;
         sim.label = fmt::format(" converge N={}", p.N);
         const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
-        sim.on_checkpoint = [&](const Checkpoint& c) { write_samples(samples_file, c.step, rec); };
+        sim.on_checkpoint = [&](const Checkpoint& c) {
+          write_samples(samples_file, samples_key, c.step, rec);
+        };
         // A member with a checkpoint of this configuration, and its samples, continues from it.
         std::optional<Checkpoint> from;
         if (fs::is_regular_file(fs::path(p.out) / "checkpoint.bin")) {
           try {
             Checkpoint c = read_checkpoint(fs::path(p.out) / "checkpoint.bin");
             if (same_run(c.config, config) && c.t <= p.tmax)
-              if (auto saved = read_samples(samples_file, c.step)) {
+              if (auto saved = read_samples(samples_file, samples_key, c.step)) {
+                Output::check_resumable(p.out, c.marks);
                 sim.restore(c);
                 rec = std::move(*saved);
                 from = std::move(c);
               }
-          } catch (const CheckpointError&) {
+          } catch (const CheckpointError&) { // not resumable: the member starts afresh
+          } catch (const OutputError&) {
           }
         }
         std::optional<Output> out_storage;

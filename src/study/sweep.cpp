@@ -155,6 +155,33 @@ MemberResult read_result(const fs::path& series) {
   return res;
 }
 
+/// A member's inputs: its effective configuration (defaults resolved), as its config.toml would
+/// hold it; for a member that does not parse, its arguments.
+std::string member_inputs(const SweepMember& m) {
+  try {
+    Params p = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // without --out, --force
+    p.out.clear();
+    resolve_defaults(p);
+    return config_text(p);
+  } catch (const std::exception&) {
+    return fmt::format("args = \"{}\"\n", fmt::join(m.args, " "));
+  }
+}
+
+/// What an earlier run of the sweep in `dir` ran member `m` with: the inputs file written when
+/// it started, or (for a member folder without one) the member's config.toml; empty if nothing
+/// of it is there.
+std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
+  for (const fs::path& file : {dir / "logs" / (m.name + ".inputs"), dir / m.name / "config.toml"})
+    if (fs::is_regular_file(file)) {
+      std::ifstream in(file);
+      std::stringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+  return {};
+}
+
 std::string token(std::string s) {
   for (char& c : s)
     if (c == ' ' || c == '\t')
@@ -305,6 +332,30 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
 
   const fs::path dir(options.out);
+  // A rerun into the same folder continues the sweep only if every member that has left
+  // anything there was run with the inputs it would run with now; results of other inputs are
+  // never reused or mixed in. Checked before anything is written or launched.
+  {
+    std::vector<std::string> changed;
+    for (const auto& m : members) {
+      const std::string before = earlier_inputs(dir, m);
+      if (before.empty())
+        continue;
+      const auto diff = config_differences(before, member_inputs(m));
+      if (!diff.empty())
+        changed.push_back(fmt::format("{} ({})", m.name, fmt::join(diff, ", ")));
+    }
+    if (!changed.empty())
+      throw ParamError(
+          "--out", options.out,
+          fmt::format("holds members run with other inputs: {}; nothing was run or changed. "
+                      "Use another --out, or remove those members' folders and logs/ files to "
+                      "rerun them",
+                      fmt::join(changed.begin(),
+                                changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3),
+                                "; "))
+              + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
+  }
   create_output_dir("--out", dir / "logs");
   install_stop_handlers();
   std::mutex mutex;
@@ -343,6 +394,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
         return; // finished in an earlier run of the same sweep
       if (stop_signal() != 0)
         return; // interrupted: start nothing new (a rerun resumes)
+      write_file_atomically(dir / "logs" / (m.name + ".inputs"), member_inputs(m));
       // Invalid values are caught here, before a subprocess is started.
       std::string status = "ok", reason = "-";
       double wall = 0.0;

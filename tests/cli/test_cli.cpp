@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -327,24 +329,34 @@ std::string without_out(const fs::path& file) {
 
 TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an uninterrupted one") {
   const fs::path whole = scratch("whole"), parts = scratch("parts");
-  for (const std::string mode : {"substage", "4"}) {
+  // substage searches, held searches every 4 steps, and the midstep-update variant (whose
+  // searches are timed by the RHS-evaluation counter the checkpoint carries)
+  for (const std::string mode :
+       {"--ah-every substage", "--ah-every 4", "--ah-every 2 --rah-variant midstep-update"}) {
     fs::remove_all(whole);
     fs::remove_all(parts);
     const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 400 --rmax 50 --rahA "
                               "0.5 --rah0 0.6 --dt-series 0.3 --dt-profiles 2.5 "
-                              "--checkpoint-every 3 --ah-every "
+                              "--checkpoint-every 3 "
                               + mode;
     REQUIRE(run(flags + " --tmax 20 --out " + whole.string()).status == 0);
     REQUIRE(run(flags + " --tmax 10 --out " + parts.string()).status == 0);
     // a kill mid-write: a cut line after the checkpoint and a stale temporary checkpoint
     std::ofstream(parts / "profiles.dat", std::ios::app) << "1.25 3.5e-0";
     std::ofstream(parts / "checkpoint.bin.tmp") << "garbage";
+    // checkpoints are replaced by renaming a complete new file over the old one, never
+    // rewritten in place: a hard link to the old one keeps the old bytes
+    const std::string old_checkpoint = slurp(parts / "checkpoint.bin");
+    fs::create_hard_link(parts / "checkpoint.bin", parts / "old_checkpoint.bin");
     const Result r = run("resume " + parts.string() + " --tmax 20");
     INFO(mode << ": " << r.err);
     REQUIRE(r.status == 0);
     CHECK(r.err.find("resuming") != std::string::npos);
     for (const char* f : {"timeseries.dat", "profiles.dat", "horizon.dat", "config.toml"})
       CHECK(without_out(whole / f) == without_out(parts / f));
+    CHECK(slurp(parts / "old_checkpoint.bin") == old_checkpoint);
+    CHECK(slurp(parts / "checkpoint.bin") != old_checkpoint);
+    fs::remove(parts / "old_checkpoint.bin");
   }
   // a checkpoint of another configuration, a missing one, and --tmax before it are refused
   const Result before = run("resume " + parts.string() + " --tmax 1");
@@ -412,4 +424,159 @@ TEST_CASE("numbers are decimal on every path: 032 is 32 in flags, config files, 
   CHECK(header_N(conv / "N64") == 64);
   for (const auto& d : {flag, cfg, file, sweep, conv})
     fs::remove_all(d);
+}
+
+namespace {
+
+/// Every file of a folder with its bytes.
+std::map<std::string, std::string> folder(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file())
+      files[e.path().filename().string()] = slurp(e.path());
+  return files;
+}
+
+/// FNV-1a 64 (the checkpoint's checksum), written here from its definition.
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes)
+    h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+/// The checkpoint `bytes` with `value` written at `offset` and its checksum made valid again:
+/// a counter changed consistently, which only the checks against the run can catch.
+std::string patched(std::string bytes, std::size_t offset, const void* value, std::size_t n) {
+  std::memcpy(bytes.data() + offset, value, n);
+  bytes.resize(bytes.size() - 8);
+  const std::uint64_t h = fnv1a64(bytes);
+  bytes.append(reinterpret_cast<const char*>(&h), 8);
+  return bytes;
+}
+
+} // namespace
+
+TEST_CASE("resume checks the checkpoint and every file before it changes any: corrupt, patched, "
+          "foreign or incomplete input is refused and the run is left byte for byte") {
+  const fs::path dir = scratch("resume_checks");
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --N 64 --rmax 20 --tmax 4 "
+              "--checkpoint-every 1 --out "
+              + dir.string())
+              .status
+          == 0);
+  const auto finished = folder(dir);
+  const std::string good = finished.at("checkpoint.bin");
+  // a completed run is complete: nothing to do, nothing touched
+  const Result complete = run("resume " + dir.string());
+  CHECK(complete.status == 0);
+  CHECK(complete.err.find("complete at t = 4") != std::string::npos);
+  CHECK(folder(dir) == finished);
+  CHECK(run("resume " + dir.string() + " --tmax 3.5").status == 0);
+  CHECK(folder(dir) == finished);
+  // a killed run (no end line) resumed to a --tmax before its last output would lose the
+  // output after it: refused
+  {
+    std::string series = finished.at("timeseries.dat");
+    series = series.substr(0, series.rfind("# end:"));
+    std::ofstream(dir / "timeseries.dat", std::ios::trunc) << series;
+  }
+  const auto killed = folder(dir);
+  const Result cut = run("resume " + dir.string() + " --tmax 3.5");
+  CHECK(cut.status == 2);
+  CHECK(cut.err.find("--tmax") != std::string::npos);
+  CHECK(folder(dir) == killed);
+
+  // offsets of the fields after the magic line and the configuration text
+  const std::string magic = "gbssn1d checkpoint 2\n";
+  REQUIRE(good.rfind(magic, 0) == 0);
+  std::uint64_t n_config = 0;
+  std::memcpy(&n_config, good.data() + magic.size(), 8);
+  const std::size_t step_at = magic.size() + 8 + n_config, t_at = step_at + 8;
+  const std::size_t evaluations_at = t_at + 8 + 8 + 8 + 8 + 1 + 8 + 1 + 1;
+  const std::size_t count_at = evaluations_at + 8 + 6 * 8;
+  std::string flipped = good;
+  for (std::size_t k = 0; k < 4; ++k) // 4 bytes inside the state
+    flipped[count_at + 8 + 800 + k] ^= 0x5a;
+  const double t_patched = 2.5;
+  const std::int64_t step_patched = 3;
+  const std::uint64_t evaluations_patched = 0, count_patched = std::uint64_t{1} << 60;
+  std::string old_format = good;
+  old_format[magic.size() - 2] = '1';
+  const std::pair<const char*, std::string> bad[] = {
+      {"checksum", flipped},
+      {"time", patched(good, t_at, &t_patched, 8)},
+      {"step", patched(good, step_at, &step_patched, 8)},
+      {"RHS count", patched(good, evaluations_at, &evaluations_patched, 8)},
+      {"value count", patched(good, count_at, &count_patched, 8)},
+      {"another checkpoint format", old_format},
+      {"truncated", good.substr(0, magic.size() + 4)},
+  };
+  for (const auto& [why, bytes] : bad) {
+    std::ofstream(dir / "checkpoint.bin", std::ios::binary | std::ios::trunc) << bytes;
+    const auto before = folder(dir);
+    const Result r = run("resume " + dir.string() + " --tmax 6");
+    INFO(why << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("DIR") != std::string::npos);
+    CHECK(r.err.find("std::") == std::string::npos);
+    CHECK(folder(dir) == before);
+  }
+  // a missing output file: refused before timeseries.dat is cut back
+  std::ofstream(dir / "checkpoint.bin", std::ios::binary | std::ios::trunc) << good;
+  fs::rename(dir / "profiles.dat", dir / "profiles.moved");
+  const auto before = folder(dir);
+  const Result missing = run("resume " + dir.string() + " --tmax 6");
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find("profiles.dat") != std::string::npos);
+  CHECK(folder(dir) == before);
+  fs::rename(dir / "profiles.moved", dir / "profiles.dat");
+  // and with everything in place the run continues
+  CHECK(run("resume " + dir.string() + " --tmax 6").status == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("sweep: a rerun with other inputs is refused, naming the member and the flags that "
+          "changed, before anything runs or changes; the same inputs continue the sweep") {
+  const fs::path dir = scratch("sweep_rerun");
+  const std::string sweep = "sweep --progress-every 0 --sweep N=32,40 --grid uniform --rmax 20 ";
+  REQUIRE(run(sweep + "--tmax 1 --out " + dir.string()).status == 0);
+  // an interrupted member: its status gone, a checkpoint left (as a stopped sweep leaves it)
+  fs::remove(dir / "logs" / "N=40.status");
+  auto snapshot = [&] {
+    std::map<std::string, std::string> all;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      if (e.is_regular_file())
+        all[fs::relative(e.path(), dir).string()] = slurp(e.path());
+    return all;
+  };
+  const auto before = snapshot();
+  const Result changed = run(sweep + "--tmax 2 --out " + dir.string());
+  CHECK(changed.status == 2);
+  CHECK(changed.err.find("N=32 (tmax: 1 -> 2)") != std::string::npos);
+  CHECK(changed.err.find("N=40 (tmax: 1 -> 2)") != std::string::npos);
+  CHECK(snapshot() == before);
+  const Result eta = run(sweep + "--tmax 1 --eta 1 --out " + dir.string());
+  CHECK(eta.status == 2);
+  CHECK(eta.err.find("eta: 2 -> 1") != std::string::npos);
+  CHECK(snapshot() == before);
+  // the same inputs: the finished member is kept, the interrupted one runs again
+  const Result same = run(sweep + "--tmax 1 --out " + dir.string());
+  CHECK(same.status == 0);
+  CHECK(slurp(dir / "N=32" / "timeseries.dat") == before.at("N=32/timeseries.dat"));
+  CHECK(fs::exists(dir / "logs" / "N=40.status"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("converge: samples saved with a member's checkpoint are reused only for the same fields "
+          "and radii (a rerun with another coarsest member gives a fresh run's numbers)") {
+  const fs::path a = scratch("converge_a"), fresh = scratch("converge_fresh");
+  const std::string flags = " --grid uniform --rmax 20 --tmax 3 --checkpoint-every 1 ";
+  REQUIRE(run("converge --N 32,48,64" + flags + "--out " + a.string()).status == 0);
+  // members N48 and N64 have checkpoints and samples at the radii of N32's grid
+  REQUIRE(run("converge --N 40,48,64 --force" + flags + "--out " + a.string()).status == 0);
+  REQUIRE(run("converge --N 40,48,64" + flags + "--out " + fresh.string()).status == 0);
+  CHECK(without_out(a / "convergence.dat") == without_out(fresh / "convergence.dat"));
+  fs::remove_all(a);
+  fs::remove_all(fresh);
 }
