@@ -3,6 +3,7 @@
 #include "config/config_file.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
+#include "core/console.hpp"
 #include "core/stop_signal.hpp"
 #include "evolution/simulation.hpp"
 #include "study/converge.hpp"
@@ -12,12 +13,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <optional>
@@ -35,12 +39,15 @@ int evolve(Params p, bool print_config) {
   resolve_defaults(p);
   validate(p);
   if (print_config) {
-    fmt::print("{}", config_text(p));
+    const std::string text = config_text(p);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+      throw OutputError(fmt::format("cannot write the configuration to standard output: {}",
+                                    std::strerror(errno)));
     return 0;
   }
   validate_output_dir(p);
   for (const auto& w : warnings(p))
-    fmt::print(stderr, "gbssn1d: warning: {}\n", w);
+    say("gbssn1d: warning: {}\n", w);
 
   Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
@@ -61,7 +68,7 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
   // How the run ended goes to stderr and, as the last line, into timeseries.dat.
   auto stopped = [&](const std::string& prefix, const std::string& what, const std::string& kept,
                      int status) {
-    fmt::print(stderr, "gbssn1d: {}{}; {}\n", prefix, what, kept);
+    say("gbssn1d: {}{}; {}\n", prefix, what, kept);
     out.write_end(fmt::format("stopped: {}", what));
     return status;
   };
@@ -78,7 +85,7 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
                                p.out, p.out),
                    128 + e.signal);
   } catch (const OutputError& e) {
-    fmt::print(stderr, "gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
+    say("gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
     try {
       out.write_end(fmt::format("stopped: {}", e.what())); // other files may still take it
     } catch (const OutputError&) {
@@ -88,8 +95,8 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.write_end(fmt::format("completed at t = {}", sim.time()));
-  fmt::print(stderr, "gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n",
-             sim.time(), wall, sim.schedule().n_steps, sim.rhs().evaluations());
+  say("gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n", sim.time(), wall,
+      sim.schedule().n_steps, sim.rhs().evaluations());
   return 0;
 }
 
@@ -145,10 +152,9 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   // output beyond the new end.
   const SeriesEnd written = series_end(dir / "timeseries.dat");
   if (written.completed && (!tmax || p.tmax <= written.t_last)) {
-    fmt::print(stderr,
-               "gbssn1d: {} is complete at t = {}; nothing to do (`gbssn1d resume {} --tmax T` "
-               "continues it to a later T)\n",
-               dir_name, written.t_last, dir_name);
+    say("gbssn1d: {} is complete at t = {}; nothing to do (`gbssn1d resume {} --tmax T` "
+        "continues it to a later T)\n",
+        dir_name, written.t_last, dir_name);
     return 0;
   }
   if (p.tmax < written.t_last)
@@ -169,8 +175,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   sim.show_progress = true;
   sim.checkpoint_config = config;
   write_file_atomically(dir / "config.toml", header_text("") + config);
-  fmt::print(stderr, "gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step,
-             p.tmax);
+  say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step, p.tmax);
   Output out(dir, config + sim.run_facts(), c.marks);
   return run_and_report(sim, out, p);
 }
@@ -286,10 +291,29 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
 
 } // namespace
 
+namespace {
+
+/// --help or --version printed by CLI11 to standard output, whose failure (a full disk, a closed
+/// pipe) is an error, not a success.
+int help_or_version(CLI::App& app, const CLI::Error& e) {
+  const int status = app.exit(e);
+  std::cout.flush();
+  if (!std::cout) {
+    say("gbssn1d: error: cannot write to standard output\n");
+    return 1;
+  }
+  return status;
+}
+
+} // namespace
+
 int run_cli(int argc, char** argv) {
   // A file-size limit then fails the write (EFBIG, reported by the checked flush) instead of
   // killing the process.
   std::signal(SIGXFSZ, SIG_IGN);
+  // A closed pipe or terminal gives EPIPE on a write instead of killing the process: console
+  // messages are best effort (core/console.hpp), files report their write errors.
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
                "black hole",
                "gbssn1d"};
@@ -388,18 +412,18 @@ int run_cli(int argc, char** argv) {
     std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
     app.parse(args);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return help_or_version(app, e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return help_or_version(app, e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return help_or_version(app, e);
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
-    fmt::print(stderr, "gbssn1d: error: {}\n", what);
+    say("gbssn1d: error: {}\n", what);
     return 2;
   } catch (const ParamError& e) {
-    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
+    say("gbssn1d: error: {}\n", e.what());
     return 2;
   }
 
@@ -422,10 +446,10 @@ int run_cli(int argc, char** argv) {
       return run_sweep(sweep_options, evolve_args);
     }
   } catch (const ParamError& e) {
-    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
+    say("gbssn1d: error: {}\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "gbssn1d: error: {}\n", e.what());
+    say("gbssn1d: error: {}\n", e.what());
     return 1;
   }
   return 0;

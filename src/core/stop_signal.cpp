@@ -19,8 +19,8 @@ void install_stop_handlers() {
   action.sa_handler = record_signal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = 0; // no SA_RESTART: a blocking call returns EINTR and the caller looks
-  sigaction(SIGTERM, &action, nullptr);
-  sigaction(SIGINT, &action, nullptr);
+  for (int signal : stop_signals)
+    sigaction(signal, &action, nullptr);
 }
 
 int stop_signal() {
@@ -33,6 +33,12 @@ std::string signal_name(int signal) {
     return "SIGTERM";
   case SIGINT:
     return "SIGINT";
+  case SIGHUP:
+    return "SIGHUP";
+  case SIGUSR1:
+    return "SIGUSR1";
+  case SIGUSR2:
+    return "SIGUSR2";
   default:
     return "signal " + std::to_string(signal);
   }

@@ -1,5 +1,6 @@
 #include "evolution/simulation.hpp"
 
+#include "core/console.hpp"
 #include "core/stop_signal.hpp"
 
 #include <fmt/format.h>
@@ -125,10 +126,10 @@ void Simulation::report_horizon(const std::optional<MarginalSurface>& h) {
   if (reported_ && h.has_value() == had_horizon_)
     return;
   if (h)
-    fmt::print(stderr, "gbssn1d{}: apparent horizon at t = {:.6g}: r = {:.6g}, M_AH = {:.10g}\n",
-               label, t_, h->r, h->mass);
+    say("gbssn1d{}: apparent horizon at t = {:.6g}: r = {:.6g}, M_AH = {:.10g}\n", label, t_, h->r,
+        h->mass);
   else
-    fmt::print(stderr, "gbssn1d{}: no apparent horizon found at t = {:.6g}\n", label, t_);
+    say("gbssn1d{}: no apparent horizon found at t = {:.6g}\n", label, t_);
   had_horizon_ = h.has_value();
   reported_ = true;
 }
@@ -400,10 +401,10 @@ void Simulation::run(Output* out) {
         last_report = now;
         const double wall = std::chrono::duration<double>(now - start).count();
         const double speed = t_ / std::max(wall, 1e-9); // simulated M per wall second
-        fmt::print(stderr, "\r  t = {:.2f} / {:g} M   {:.1f} M/s   {:.0f} s left   ", t_, t_end,
-                   speed, (t_end - t_) / std::max(speed, 1e-300));
+        say("\r  t = {:.2f} / {:g} M   {:.1f} M/s   {:.0f} s left   ", t_, t_end, speed,
+            (t_end - t_) / std::max(speed, 1e-300));
         if (last)
-          fmt::print(stderr, "\n");
+          say("\n");
       }
     }
   }

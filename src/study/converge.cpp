@@ -1,5 +1,6 @@
 #include "study/converge.hpp"
 
+#include "core/console.hpp"
 #include "core/stop_signal.hpp"
 
 #include "config/config_file.hpp"
@@ -207,7 +208,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         std::optional<Output> out_storage;
         if (from) {
           const std::lock_guard lock(log_mutex);
-          fmt::print(stderr, "gbssn1d converge: member N = {} resumes at t = {}\n", p.N, from->t);
+          say("gbssn1d converge: member N = {} resumes at t = {}\n", p.N, from->t);
           out_storage.emplace(p.out, config + sim.run_facts(), from->marks);
         } else {
           out_storage.emplace(p.out, config + sim.run_facts());
@@ -225,7 +226,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       } catch (const std::exception& e) {
         rec.error = e.what();
         const std::lock_guard lock(log_mutex);
-        fmt::print(stderr, "gbssn1d converge: member N = {} failed: {}\n", members[k].N, e.what());
+        say("gbssn1d converge: member N = {} failed: {}\n", members[k].N, e.what());
       }
     }
   };
@@ -243,6 +244,24 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                             + fmt::format("# converge: N = {}, fields {}\n",
                                           fmt::join(options.N, ","), fmt::join(options.fields, ","))
                             + base_config);
+
+  // How the study ended, in both files' headers and as their last line: a reader (and a plot
+  // script) must be able to tell a partial study from a complete one.
+  const int signal = stop_signal();
+  std::string failed;
+  for (std::size_t k = 0; k < m; ++k)
+    if (!records[k].error.empty() && failed.empty())
+      failed = fmt::format("member N = {} failed: {}", members[k].N, records[k].error);
+  const double t_common = n_times > 0 ? records.front().rows[n_times - 1].t : 0.0;
+  const std::string ending =
+      signal != 0 ? fmt::format("interrupted by {} at t = {} (partial: every member only to this "
+                                "time; rerun the same command to resume)",
+                                signal_name(signal), t_common)
+      : !failed.empty()
+          ? fmt::format("stopped: {} (partial: common times up to t = {})", failed, t_common)
+          : fmt::format("completed at t = {}", t_common);
+  const std::string status_line = fmt::format("status: {}\n", ending);
+  const std::string end_line = fmt::format("# end: {}\n", ending);
 
   // convergence.dat
   std::vector<std::string> cols{"t"};
@@ -267,7 +286,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       cols.push_back(
           fmt::format("p3_{}_{}_{}_{}", name, members[k].N, members[k + 1].N, members[k + 2].N));
   const std::string header =
-      base_config
+      base_config + status_line
       + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the norms (X_L2_ext: "
                     "coordinate window, X_L2_R: areal window, H_L2_int: near the puncture); "
                     "p3_f_a_b_c solves |f_a - f_b|/|f_b - f_c| = (a^-p - b^-p)/(b^-p - c^-p) "
@@ -299,6 +318,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       line += "\n";
       file.write(line.data(), line.size());
     }
+    file.write(end_line.data(), end_line.size());
     file.flush(); // checked: a failed write throws OutputError
   }
 
@@ -309,7 +329,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       scols.push_back(k == 0 ? fmt::format("H_N{}", members[k].N)
                              : fmt::format("H_N{}_scaled", members[k].N));
     DataFile file(fs::path(options.out) / "scaled_H.dat",
-                  base_config
+                  base_config + status_line
                       + fmt::format("scaled_H.dat: H of member N_k times (N_k/N_0)^{} "
                                     "at the coarsest grid's exterior radii\n",
                                     options.order),
@@ -337,15 +357,21 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       }
       file.write(block.data(), block.size());
     }
+    file.write(end_line.data(), end_line.size());
     file.flush();
   }
-  fmt::print(stderr, "gbssn1d converge: N = {} done; norms and orders in {}/convergence.dat\n",
-             fmt::join(options.N, ", "), options.out);
-  if (const int signal = stop_signal(); signal != 0)
+  if (signal != 0) {
+    say("gbssn1d converge: N = {} {}; the partial norms and orders are in {}/convergence.dat\n",
+        fmt::join(options.N, ", "), ending, options.out);
     return 128 + signal;
-  for (const auto& rec : records)
-    if (!rec.error.empty())
-      return 3;
+  }
+  if (!failed.empty()) {
+    say("gbssn1d converge: N = {} {}; see {}/convergence.dat\n", fmt::join(options.N, ", "), ending,
+        options.out);
+    return 3;
+  }
+  say("gbssn1d converge: N = {} done; norms and orders in {}/convergence.dat\n",
+      fmt::join(options.N, ", "), options.out);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "config/config_file.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
+#include "core/console.hpp"
 #include "core/stop_signal.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"
@@ -317,17 +318,23 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   const std::string exe = fs::canonical("/proc/self/exe").string();
 
   if (!options.emit_tasks.empty()) {
+    std::string lines;
+    for (const auto& m : members) {
+      lines += shell_quote(exe);
+      for (const auto& a : m.args)
+        lines += ' ' + shell_quote(a);
+      lines += '\n';
+    }
     std::ofstream tasks(options.emit_tasks);
     if (!tasks)
       throw ParamError("--emit-tasks", options.emit_tasks, "cannot be written");
-    for (const auto& m : members) {
-      tasks << shell_quote(exe);
-      for (const auto& a : m.args)
-        tasks << ' ' << shell_quote(a);
-      tasks << '\n';
-    }
-    fmt::print(stderr, "gbssn1d sweep: {} member command lines written to {}\n", members.size(),
-               options.emit_tasks);
+    tasks << lines;
+    tasks.close(); // flushes: a full disk shows here
+    if (!tasks)
+      throw OutputError(fmt::format("--emit-tasks {}: the command lines could not be written",
+                                    options.emit_tasks));
+    say("gbssn1d sweep: {} member command lines written to {}\n", members.size(),
+        options.emit_tasks);
     return 0;
   }
 
@@ -380,10 +387,9 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
         const auto longest =
             std::min_element(running.begin(), running.end(),
                              [](const auto& a, const auto& b) { return a.second < b.second; });
-        fmt::print(stderr,
-                   "gbssn1d sweep: {} of {} members done, {} running (longest: {}, {:.0f} s)\n",
-                   done_before + finished, members.size(), running.size(), longest->first,
-                   std::chrono::duration<double>(Clock::now() - longest->second).count());
+        say("gbssn1d sweep: {} of {} members done, {} running (longest: {}, {:.0f} s)\n",
+            done_before + finished, members.size(), running.size(), longest->first,
+            std::chrono::duration<double>(Clock::now() - longest->second).count());
       }
     });
   auto member_task = [&](std::size_t k) {
@@ -437,8 +443,8 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       const std::lock_guard lock(mutex);
       running.erase(m.name);
       ++finished;
-      fmt::print(stderr, "gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", done_before + finished,
-                 members.size(), m.name, status, wall, status == "ok" ? "" : ": " + reason);
+      say("gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", done_before + finished, members.size(),
+          m.name, status, wall, status == "ok" ? "" : ": " + reason);
     }
   };
   {
@@ -533,15 +539,15 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
   summary.flush(); // checked: a failed write throws OutputError
   if (const int signal = stop_signal(); signal != 0) {
-    fmt::print(stderr, "gbssn1d sweep: interrupted by {}; rerun the same command to finish\n",
-               signal_name(signal));
+    say("gbssn1d sweep: interrupted by {}; rerun the same command to finish\n",
+        signal_name(signal));
     return 128 + signal;
   }
   const auto bad = std::count_if(statuses.begin(), statuses.end(),
                                  [](const std::string& s) { return s != "ok"; });
   if (bad > 0) {
-    fmt::print(stderr, "gbssn1d sweep: {} of {} members did not complete (see summary.dat)\n", bad,
-               members.size());
+    say("gbssn1d sweep: {} of {} members did not complete (see summary.dat)\n", bad,
+        members.size());
     return 3;
   }
   return 0;

@@ -580,3 +580,74 @@ TEST_CASE("converge: samples saved with a member's checkpoint are reused only fo
   fs::remove_all(a);
   fs::remove_all(fresh);
 }
+
+// A closed terminal (SIGHUP) and a batch scheduler's warning ahead of its time limit (SIGUSR1,
+// SIGUSR2) stop a run as SIGTERM does: the step finished, a checkpoint, the end line, 128 + n.
+TEST_CASE("SIGHUP, SIGUSR1 and SIGUSR2 stop a run resumably, as SIGTERM does") {
+  for (const auto& [name, status] :
+       {std::pair{"HUP", 129}, std::pair{"USR1", 138}, std::pair{"USR2", 140}}) {
+    const fs::path out = scratch(std::string("signal_") + name);
+    const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                            + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+                              " --tmax 2000 --out "
+                            + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
+                            + "/horizon.dat ]; do sleep 0.05; done; sleep 0.2; kill -" + name
+                            + " $p; wait $p; exit $?'";
+    const int raw = std::system(cmd.c_str());
+    INFO(name);
+    REQUIRE(WIFEXITED(raw));
+    CHECK(WEXITSTATUS(raw) == status);
+    const std::string text = slurp(out / "timeseries.dat");
+    CHECK(text.substr(text.rfind("# end:")).find(std::string("interrupted by SIG") + name)
+          != std::string::npos);
+    CHECK(fs::exists(out / "checkpoint.bin"));
+    fs::remove_all(out);
+  }
+}
+
+// The reader of stderr going away (a pager quit, `| head`) must neither kill nor fail a run or a
+// sweep: SIGPIPE is ignored and console messages are best effort; the files say how it ended.
+TEST_CASE("a closed stderr pipe stops neither a run nor a sweep: exit 0, complete files") {
+  const fs::path out = scratch("pipe_run"), sweep = scratch("pipe_sweep");
+  auto piped = [](const std::string& args) {
+    // the reader takes one byte and leaves; the status is gbssn1d's (pipefail)
+    const std::string cmd = "bash -c 'set -o pipefail; " + std::string(GBSSN1D_EXECUTABLE) + " "
+                            + args + " 2>&1 >/dev/null | head -c 1 >/dev/null'";
+    const int raw = std::system(cmd.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  };
+  CHECK(piped("evolve --id wormhole --N 200 --tmax 30 --out " + out.string()) == 0);
+  const std::string text = slurp(out / "timeseries.dat");
+  CHECK(text.find("# end: completed at t = 30") != std::string::npos);
+  CHECK(piped("sweep --progress-every 0 --sweep N=32,40,48 --tmax 20 --out " + sweep.string())
+        == 0);
+  const auto summary = gbssn1d::testing::read_table((sweep / "summary.dat").string());
+  CHECK(summary.rows.size() == 3);
+  fs::remove_all(out);
+  fs::remove_all(sweep);
+}
+
+TEST_CASE("converge interrupted: exit 130, and its files and message say they are partial") {
+  const fs::path out = scratch("converge_sigint");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " converge --N 800,1000,1200 -j 3 --grid uniform --rmax 100"
+                            " --id 1log-trumpet --tmax 500 --out "
+                          + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
+                          + out.string()
+                          + "/N1200/horizon.dat ]; do sleep 0.05; done; sleep 0.3; kill -INT $p;"
+                            " wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 130);
+  const std::string err = slurp(out.string() + ".err");
+  CHECK(err.find("interrupted by SIGINT") != std::string::npos);
+  CHECK(err.find("done;") == std::string::npos);
+  for (const char* file : {"convergence.dat", "scaled_H.dat"}) {
+    const std::string text = slurp(out / file);
+    INFO(file);
+    CHECK(text.find("# status: interrupted by SIGINT") != std::string::npos);
+    CHECK(text.substr(text.rfind("# end:")).find("# end: interrupted by SIGINT") == 0);
+  }
+  fs::remove_all(out);
+  fs::remove(out.string() + ".err");
+}
