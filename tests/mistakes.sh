@@ -12,7 +12,7 @@ cd "$work/src"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)" >/dev/null
 
-# name | file | text | replacement
+# name | file | text | replacement   (\n in text or replacement stands for a newline)
 mistakes=(
   "K boundary speed sqrt(2) -> 1|src/core/registry.hpp|{Var::K, \"K\", +1, 0.0, Wave::slicing, 1.0}|{Var::K, \"K\", +1, 0.0, Wave::light, 1.0}"
   "Delta^r parity flipped|src/core/registry.hpp|{Var::Delta_r, \"Delta_r\", -1,|{Var::Delta_r, \"Delta_r\", +1,"
@@ -21,6 +21,12 @@ mistakes=(
   "driver-full-shift a no-op|src/gbssn/rhs.cpp|          gd = full_shift(p);|          ;"
   "midstep-update never firing|src/gbssn/rhs.cpp|static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;|static_cast<std::uint64_t>(4 * hs.midstep_every) == 99;"
   "--rah-width ignored|src/config/params.cpp|  r.horizon_shift.width = p.rah_width;|  r.horizon_shift.width = 1.0;"
+  "horizon: the innermost outer surface instead of the outermost|src/horizon/apparent_horizon.cpp|  for (const auto& s : surfaces)\n    if (s.outer)\n      return s;\n  return std::nullopt;|  std::optional<MarginalSurface> found;\n  for (const auto& s : surfaces)\n    if (s.outer)\n      found = s;\n  return found;"
+  "converge ignores -j|src/study/converge.cpp|  run_tasks(m, options.jobs, member_task);|  run_tasks(m, 1, member_task);"
+  "B's advective bracket with the wrong sign|src/gbssn/gauge.hpp|advection * (p.adv[Var::B] - gauge_shift.adv_Delta_r)|advection * (p.adv[Var::B] + gauge_shift.adv_Delta_r)"
+  "beta's advective bracket dropped|src/gbssn/gauge.hpp|  return driver.xi * p.f[Var::B] + advection * p.adv[Var::beta];|  return driver.xi * p.f[Var::B];"
+  "--advective-shift not reaching the evolution|src/config/params.cpp|  r.gauge.shift.advective = p.advective_shift;|  r.gauge.shift.advective = false;"
+  "numbers read as octal again|src/config/numbers.hpp|    result = std::from_chars(text.data(), end, value, 10);|    result = std::from_chars(text.data(), end, value, text.size() > 1 && text[0] == '0' ? 8 : 10);"
   "checkpoint written in place, not renamed over|src/evolution/checkpoint.cpp|const std::filesystem::path tmp = file.string() + \".tmp\";|const std::filesystem::path tmp = file;"
   "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"
   "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
@@ -28,12 +34,13 @@ mistakes=(
   "converge samples reused for other radii|src/study/converge.cpp|saved_key != key)|saved_key != saved_key)"
 )
 uncaught=0
+caught=0
 for m in "${mistakes[@]}"; do
   IFS='|' read -r name file from to <<<"$m"
   git checkout -q -- .
   python3 - "$file" "$from" "$to" <<'PY' || { echo "!! $name: text not found in $file (update this script)"; uncaught=1; continue; }
 import sys
-path, old, new = sys.argv[1:]
+path, old, new = (a.replace('\\n', '\n') for a in sys.argv[1:])  # \n in a mistake: a newline
 text = open(path).read()
 if old not in text:
     sys.exit(1)
@@ -45,7 +52,10 @@ PY
     echo "!! $name: no test fails"; uncaught=1
   else
     echo "== $name: caught by"; echo "$failed" | sed 's/^/   /'
+    caught=$((caught + 1))
   fi
 done
+total=${#mistakes[@]}
+echo "planted mistakes: $caught passed, $((total - caught)) failed"
 git checkout -q -- .
 exit $uncaught

@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -164,6 +165,11 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   auto member_task = [&](std::size_t k) {
     {
       MemberRecord& rec = records[k];
+      const auto start = std::chrono::steady_clock::now();
+      {
+        const std::lock_guard lock(log_mutex);
+        say("gbssn1d converge: member N = {} started\n", members[k].N);
+      }
       try {
         const Params& p = members[k];
         create_output_dir("--out", p.out);
@@ -217,6 +223,9 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         try {
           sim.run(&out);
           out.write_end(fmt::format("completed at t = {}", sim.time()));
+          const std::lock_guard lock(log_mutex);
+          say("gbssn1d converge: member N = {} completed at t = {} ({:.1f} s)\n", p.N, sim.time(),
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         } catch (const OutputError&) {
           throw;
         } catch (const std::exception& e) { // stopped or interrupted: say so in the file too

@@ -79,3 +79,50 @@ TEST_CASE("the finder reports every marginal surface, the outermost outer one as
   CHECK_FALSE(find_horizons(flat, g, {}).horizon().has_value());
   CHECK(find_horizons(flat, g, {}).surfaces.empty());
 }
+
+// Time-symmetric data (K = A_a = 0, flat conformal metric) whose areal radius R(r) = psi^2 r
+// has two minima and a maximum between: Theta_+ is proportional to dR/dr, so the marginal
+// surfaces are the zeros of R'(r) = 1 - M^2/(4 r^2) - B exp(-((r - r1)/s)^2), found here by
+// bisection of that closed form; the minima are outer trapping boundaries and the apparent
+// horizon is the outermost of them, not the one at M/2.
+TEST_CASE("with several marginal surfaces the horizon is the outermost outer one") {
+  const double M = 1.0, B = 2.0, r1 = 3.0, s = 0.5;
+  auto R = [&](double r) {
+    return r + M + M * M / (4 * r) - B * s * std::sqrt(M_PI) / 2 * (std::erf((r - r1) / s) + 1);
+  };
+  auto dR = [&](double r) {
+    return 1 - M * M / (4 * r * r) - B * std::exp(-((r - r1) / s) * ((r - r1) / s));
+  };
+  auto root = [&](double lo, double hi) {
+    for (int k = 0; k < 200; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (dR(lo) * dR(mid) <= 0 ? hi : lo) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double inner = root(0.3, 1.0), middle = root(1.5, 3.0), outer = root(3.0, 4.5);
+  REQUIRE(dR(0.3) < 0);
+  REQUIRE(dR(1.5) > 0);
+  REQUIRE(dR(3.0) < 0);
+  REQUIRE(dR(4.5) > 0);
+  const Grid g(RadialMap::uniform(10.0), 800);
+  State u = make_state(g);
+  for (std::size_t i = g.first_interior(); i < g.n_total(); ++i) {
+    const double r = g.r()[i], psi2 = R(r) / r;
+    field(u, g, Var::chi)[i] = 1.0 / (psi2 * psi2); // chi = psi^-4
+    for (Var v : {Var::alpha, Var::a, Var::b})
+      field(u, g, v)[i] = 1.0;
+  }
+  fill_origin_ghosts(u, g);
+  const auto found = find_horizons(u, g, {});
+  REQUIRE(found.surfaces.size() == 3);
+  CHECK(found.surfaces[0].r == doctest::Approx(outer).epsilon(1e-7));
+  CHECK(found.surfaces[1].r == doctest::Approx(middle).epsilon(1e-7));
+  CHECK(found.surfaces[2].r == doctest::Approx(inner).epsilon(1e-7));
+  CHECK(found.surfaces[0].outer);
+  CHECK_FALSE(found.surfaces[1].outer);
+  CHECK(found.surfaces[2].outer);
+  REQUIRE(found.horizon().has_value());
+  CHECK(found.horizon()->r == doctest::Approx(outer).epsilon(1e-7));
+  CHECK(found.horizon()->mass == doctest::Approx(R(outer) / 2).epsilon(1e-7));
+}

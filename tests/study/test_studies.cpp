@@ -313,3 +313,31 @@ TEST_CASE("sweep: progress lines while members run, k of n as they finish, resum
   CHECK(err.find("--progress-every = -1 is invalid") != std::string::npos);
   fs::remove_all(out);
 }
+
+// -j is the number of members run at once: with -j 3 every member starts before the first one
+// ends; with -j 1 each starts only after the one before it has ended.
+TEST_CASE("converge -j runs that many members at once") {
+  namespace fs = std::filesystem;
+  const fs::path out = gbssn1d::testing::scratch("converge_jobs");
+  auto order = [&](int jobs) {
+    fs::remove_all(out);
+    const std::string cmd = std::string(GBSSN1D_EXECUTABLE)
+                            + " converge --N 800,1000,1200 --grid uniform --rmax 40 --tmax 20"
+                              " --id 1log-trumpet -j "
+                            + std::to_string(jobs) + " --out " + out.string() + " 2>" + out.string()
+                            + ".log";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::ifstream log(out.string() + ".log");
+    std::string events; // S for a start, E for an end, in the order they were said
+    for (std::string line; std::getline(log, line);)
+      if (line.find(" started") != std::string::npos)
+        events += 'S';
+      else if (line.find(" completed at") != std::string::npos)
+        events += 'E';
+    fs::remove(out.string() + ".log");
+    return events;
+  };
+  CHECK(order(3) == "SSSEEE");
+  CHECK(order(1) == "SESESE");
+  fs::remove_all(out);
+}
