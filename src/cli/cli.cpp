@@ -129,7 +129,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   if (!fs::is_regular_file(dir / "checkpoint.bin"))
     throw ParamError("DIR", dir_name,
                      "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
-                     "SIGTERM/SIGINT)");
+                     "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
   Params p = parse_evolve_args({"--config", (dir / "config.toml").string()});
   if (tmax)
     p.tmax = *tmax;
@@ -280,6 +280,20 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   base.N = options.N.front(); // the first member; each member sets its own
   base.out = options.out;
   resolve_defaults(base);
+  // A converge folder of other inputs: say which, so that nobody takes --force lightly (with
+  // --force the members rerun; a member resumes only from a checkpoint of its own inputs).
+  if (const auto old = std::filesystem::path(options.out) / "config.toml";
+      !options.force && std::filesystem::is_regular_file(old)) {
+    std::ifstream in(old);
+    std::stringstream text;
+    text << in.rdbuf();
+    const auto diff = config_differences(text.str(), config_text(base), {"out", "force", "N"});
+    if (!diff.empty())
+      throw ParamError("--out", options.out,
+                       fmt::format("holds a converge study of other inputs ({}); use another "
+                                   "--out, or --force to rerun into it",
+                                   fmt::join(diff, ", ")));
+  }
   validate_output_dir([&] {
     Params o = base;
     o.force = options.force;
@@ -335,7 +349,9 @@ int run_cli(int argc, char** argv) {
       "--dt-profiles), horizon.dat, checkpoint.bin (with --checkpoint-every or after a "
       "signal; `gbssn1d resume DIR` continues).\nExit status: 0 completed; 1 a failed write; 2 "
       "invalid input (nothing written); 3 stopped (non-finite value, chi or alpha out of range, "
-      "horizon finder failure); 128 + n interrupted by signal n.");
+      "horizon finder failure); 128 + n interrupted by signal n: SIGTERM, SIGINT, SIGHUP, "
+      "SIGUSR1 and SIGUSR2 (what batch schedulers send ahead of a time limit) finish the step, "
+      "write a checkpoint and the end line; `gbssn1d resume DIR` continues.");
   evolve_cmd
       ->add_option("--config", config_file,
                    "read parameters from a TOML/INI file of `key = value` lines (as "

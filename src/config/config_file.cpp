@@ -58,7 +58,7 @@ const std::vector<ParamSpec>& param_specs() {
       {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat"},
       {"checkpoint-every", &Params::checkpoint_every, "Output",
        "simulated time between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
-       "(0: none; SIGTERM/SIGINT always write one)"},
+       "(0: none; SIGTERM, SIGINT, SIGHUP, SIGUSR1 and SIGUSR2 always write one)"},
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms"},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
        "outer radius of the exterior norms; default min(10 M, rmax/2)"},
