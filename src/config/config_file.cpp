@@ -94,7 +94,8 @@ const std::vector<ParamSpec>& param_specs() {
        "horizon search: substage (every RK stage), step, or a number of steps"},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time"},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time"},
-      {"ah-tol", &Params::ah_tol, "Horizon", "root-finder tolerance of the horizon radius"},
+      {"ah-tol", &Params::ah_tol, "Horizon",
+       "root-finder tolerance of the horizon radius; at most 1e-3 x the smallest cell width"},
       {"rah-variant", &Params::rah_variant, "Horizon",
        "consistent (the method); for the study only: no-shift-derivatives, "
        "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update"},
