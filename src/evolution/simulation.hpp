@@ -7,7 +7,6 @@
 #include "evolution/evolution_config.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
-#include "mesh/hierarchy.hpp"
 
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 
@@ -48,6 +47,11 @@ struct Schedule {
   long n_steps;
 };
 Schedule make_schedule(const EvolutionConfig& config, const Grid& grid);
+
+/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
+/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
+void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
+                         double dt, double theta, State& out);
 
 /// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
 /// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,

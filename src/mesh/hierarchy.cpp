@@ -1,236 +1,228 @@
 #include "mesh/hierarchy.hpp"
 
-#include "core/registry.hpp"
+#include "mesh/transfer.hpp"
 
-#include <fmt/format.h>
-
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
-namespace gbssn1d {
+namespace gbssn1d::mesh {
 
-namespace {
-
-/// Coarse nodes of the prolongation stencil, relative to the coarse cell holding the fine cell:
-/// three either side of the fine centre, which is a quarter cell left (even fine index) or right
-/// (odd) of the coarse centre.
-constexpr int stencil_left[6] = {-3, -2, -1, 0, 1, 2}; // fine centre at -1/4
-constexpr int stencil_right[6] = {-2, -1, 0, 1, 2, 3}; // fine centre at +1/4
-
-std::vector<double> weights_at(const int (&nodes)[6], double x) {
-  return lagrange_weights({double(nodes[0]), double(nodes[1]), double(nodes[2]), double(nodes[3]),
-                           double(nodes[4]), double(nodes[5])},
-                          x);
-}
-
-} // namespace
-
-std::vector<double> lagrange_weights(const std::vector<double>& nodes, double x) {
-  std::vector<double> w(nodes.size(), 1.0);
-  for (std::size_t k = 0; k < nodes.size(); ++k)
-    for (std::size_t m = 0; m < nodes.size(); ++m)
-      if (m != k)
-        w[k] *= (x - nodes[m]) / (nodes[k] - nodes[m]);
-  return w;
-}
-
-std::vector<Grid> make_levels(const HierarchySpec& spec) {
-  if (spec.levels < 1)
-    throw std::invalid_argument("a hierarchy needs at least one level");
-  if (spec.levels > 1) {
-    if (spec.N % 2 != 0)
-      throw std::invalid_argument(fmt::format(
-          "N = {} is odd: a fine level's outer edge would lie inside a coarse cell", spec.N));
-    if (restricted_cells(spec.N) < 1)
-      throw std::invalid_argument(fmt::format(
-          "N = {} leaves no coarse cell to restrict: a fine level needs more than {} cells "
-          "(its buffer of {} and the 6-point stencil)",
-          spec.N, buffer_cells + 4, buffer_cells));
-  }
-  std::vector<Grid> grids;
-  for (std::size_t l = 0; l < spec.levels; ++l)
-    grids.emplace_back(RadialMap::uniform(spec.rmax / std::ldexp(1.0, static_cast<int>(l))),
-                       spec.N);
-  return grids;
-}
-
-void prolongate(const Grid& coarse, const State& u_coarse, const Grid& fine, State& u_fine,
-                std::size_t i_begin, std::size_t i_end) {
-  if (i_begin < Grid::n_ghost || i_end > fine.n_total())
-    throw std::invalid_argument("prolongation fills interior and outer ghost cells only (the "
-                                "origin ghosts hold parity images)");
-  static const std::vector<double> w_left = weights_at(stencil_left, -0.25);
-  static const std::vector<double> w_right = weights_at(stencil_right, 0.25);
-  const std::size_t g = Grid::n_ghost;
-  for (const auto& entry : registry) {
-    const auto c = field(u_coarse, coarse, entry.var);
-    const auto f = field(u_fine, fine, entry.var);
-    for (std::size_t i = i_begin; i < i_end; ++i) {
-      // fine interior index (may be negative for origin ghosts) and its coarse cell
-      const auto fi = static_cast<std::ptrdiff_t>(i) - static_cast<std::ptrdiff_t>(g);
-      const std::ptrdiff_t j = fi >= 0 ? fi / 2 : (fi - 1) / 2;
-      const bool right = (fi - 2 * j) == 1;
-      const auto& nodes = right ? stencil_right : stencil_left;
-      const auto& w = right ? w_right : w_left;
-      double sum = 0.0;
-      for (int k = 0; k < 6; ++k)
-        sum += w[k] * c[static_cast<std::size_t>(j + nodes[k] + static_cast<std::ptrdiff_t>(g))];
-      f[i] = sum;
+MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
+                         StepperOptions options)
+    : layout_(&layout), rhs_(std::move(rhs)), options_(options), levels_(layout.levels()),
+      evaluations_(layout.levels(), 0) {
+  if (rhs_.size() != layout.levels())
+    throw std::invalid_argument("the mesh stepper needs one right-hand side per level ("
+                                + std::to_string(layout.levels()) + "), got "
+                                + std::to_string(rhs_.size()));
+  if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
+    throw std::invalid_argument("--cfl = " + std::to_string(options_.cfl)
+                                + " is invalid: outside (0, 1]");
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    Level& L = levels_[l];
+    const Grid& g = layout.grid(l);
+    L.tmp = make_state(g);
+    for (auto& k : L.k)
+      k = make_state(g);
+    if (l + 1 < layout.levels()) {
+      L.u0 = make_state(g);
+      L.scratch = make_state(g);
     }
   }
 }
 
-std::size_t restricted_cells(std::size_t N) {
-  // coarse cell j takes fine cells 2j - 2 ... 2j + 3, which must lie below the buffer
-  const std::ptrdiff_t exact = static_cast<std::ptrdiff_t>(N) - std::ptrdiff_t{buffer_cells};
-  if (exact < 4)
-    return 0;
-  return static_cast<std::size_t>((exact - 4) / 2 + 1); // 2j + 3 <= exact - 1
+double MeshStepper::dt() const {
+  const std::size_t l = options_.subcycling ? 0 : layout_->levels() - 1;
+  return options_.cfl * layout_->spacing(l);
 }
 
-void restrict_to_coarse(const Grid& fine, const State& u_fine, const Grid& coarse,
-                        State& u_coarse) {
-  // the value midway between two fine centres, 6-point Lagrange: (3, -25, 150, 150, -25, 3)/256
-  constexpr double w[6] = {3.0 / 256,   -25.0 / 256, 150.0 / 256,
-                           150.0 / 256, -25.0 / 256, 3.0 / 256};
-  const std::size_t g = Grid::n_ghost, cells = restricted_cells(fine.n_interior());
-  for (const auto& entry : registry) {
-    const auto f = field(u_fine, fine, entry.var);
-    const auto c = field(u_coarse, coarse, entry.var);
-    for (std::size_t j = 0; j < cells; ++j) {
-      double sum = 0.0;
-      for (std::size_t k = 0; k < 6; ++k)
-        sum += w[k] * f[g + 2 * j + k - 2];
-      c[g + j] = sum;
+double MeshStepper::level_dt(std::size_t level, double dt) const {
+  return options_.subcycling ? std::ldexp(dt, -static_cast<int>(level)) : dt;
+}
+
+long MeshStepper::restricted_cells() const {
+  // coarse cell i reads fine cells up to 2i + 3, which must lie below N - buffer
+  const long n = static_cast<long>(layout_->n_cells()), b = static_cast<long>(buffer());
+  return (n - b - 4) / 2 + 1;
+}
+
+void MeshStepper::restrict_level(std::vector<State>& u, std::size_t fine_level) const {
+  restrict_to(u[fine_level], layout_->grid(fine_level), u[fine_level - 1],
+              layout_->grid(fine_level - 1), 0, restricted_cells());
+}
+
+void MeshStepper::fill_ghosts(std::vector<State>& u) const {
+  const long end = static_cast<long>(layout_->n_cells() + Grid::n_ghost);
+  const long begin = static_cast<long>(layout_->n_cells() - buffer());
+  for (std::size_t l = 1; l < layout_->levels(); ++l)
+    prolong(u[l - 1], layout_->grid(l - 1), u[l], layout_->grid(l), begin, end);
+}
+
+void MeshStepper::initialise(std::vector<State>& u, double t) {
+  if (u.size() != layout_->levels())
+    throw std::invalid_argument("the mesh stepper needs one state per level");
+  for (std::size_t l = 0; l < layout_->levels(); ++l)
+    fill_origin_ghosts(u[l], layout_->grid(l));
+  for (std::size_t l = layout_->levels() - 1; l >= 1; --l)
+    restrict_level(u, l);
+  fill_ghosts(u);
+  for (auto& L : levels_) {
+    L.history.clear();
+    L.t0 = t;
+    L.dt = 0.0;
+  }
+  // Quadratic interpolation in time needs three time levels from the first step on: the level
+  // before t is made by one RK4 step backwards, as Carpet's init_3_timelevels (Scott Hawley's
+  // algorithm) evolves to fill past time levels. Without it
+  // the first coarse step would interpolate linearly, an O(dt^2) error at the fine boundary
+  // that does not converge where it focuses at r = 0 (measured: the 3-level gauge pulse's
+  // self-convergence stalls). The backward step of a level > 0 keeps its ghosts from t; what
+  // that spoils stays within 12 points of its outer ghosts, away from the cells its child reads.
+  if (options_.time == TimeInterpolation::quadratic)
+    for (std::size_t l = 0; l + 1 < layout_->levels(); ++l) {
+      const double dt_l = level_dt(l, dt());
+      State back = u[l];
+      rk4(l, back, t, -dt_l, nullptr);
+      levels_[l].history.push_back({t - dt_l, std::move(back)});
     }
+}
+
+void MeshStepper::fill_from_parent(std::size_t l, State& fine,
+                                   const std::vector<const State*>& arrays,
+                                   const std::vector<double>& w, long j_begin) const {
+  const Grid& gc = layout_->grid(l - 1);
+  const Grid& gf = layout_->grid(l);
+  const long j_end = static_cast<long>(gf.n_interior() + Grid::n_ghost);
+  // the coarse cells the prolongation reads: floor(j/2) - 3 ... floor(j/2) + 3, mirrored below 0
+  long lo = j_begin / 2 - 3;
+  long hi = (j_end - 1) / 2 + 4;
+  if (lo < 0) {
+    hi = std::max(hi, -lo);
+    lo = 0;
   }
-  fill_origin_ghosts(u_coarse, coarse);
+  const std::size_t nt = gc.n_total(), g = Grid::n_ghost;
+  State& s = levels_[l - 1].scratch;
+  for (std::size_t v = 0; v < n_vars; ++v)
+    for (long i = lo; i < hi; ++i) {
+      const std::size_t idx = v * nt + g + static_cast<std::size_t>(i);
+      double sum = 0.0;
+      for (std::size_t m = 0; m < arrays.size(); ++m)
+        sum += w[m] * (*arrays[m])[idx];
+      s[idx] = sum;
+    }
+  prolong(s, gc, fine, gf, j_begin, j_end);
 }
 
-BergerOliger::BergerOliger(HierarchySpec spec, double cfl, std::vector<State> u,
-                           std::vector<LevelRhs> rhs)
-    : spec_(spec), cfl_(cfl), grids_(make_levels(spec)), levels_(grids_.size()),
-      rhs_(std::move(rhs)) {
-  if (u.size() != grids_.size() || rhs_.size() != grids_.size())
-    throw std::invalid_argument("one state and one right-hand side per level");
-  for (std::size_t l = 0; l < grids_.size(); ++l) {
-    if (u[l].size() != n_vars * grids_[l].n_total())
-      throw std::invalid_argument(fmt::format("level {}: the state has the wrong size", l));
-    levels_[l].u = std::move(u[l]);
+void MeshStepper::fill_quadratic(std::vector<State>& u, std::size_t l, double t) const {
+  const Level& P = levels_[l - 1];
+  const double t_now = P.t0 + P.dt; // the parent's current state u[l - 1]
+  const long j_begin = static_cast<long>(layout_->n_cells() - buffer());
+  const auto& h = P.history;
+  if (h.size() >= 2) {
+    const auto w = quadratic_weights(h[h.size() - 2].t, h.back().t, t_now, t);
+    fill_from_parent(l, u[l], {&h[h.size() - 2].u, &h.back().u, &u[l - 1]}, {w[0], w[1], w[2]},
+                     j_begin);
+  } else if (h.size() == 1) {
+    const auto w = linear_weights(h.back().t, t_now, t);
+    fill_from_parent(l, u[l], {&h.back().u, &u[l - 1]}, {w[0], w[1]}, j_begin);
+  } else {
+    fill_from_parent(l, u[l], {&u[l - 1]}, {1.0}, j_begin);
   }
 }
 
-double BergerOliger::dt(std::size_t l) const {
-  const std::size_t finest = grids_.size() - 1;
-  return cfl_ * grids_[spec_.subcycling ? l : finest].min_spacing();
-}
-
-void BergerOliger::evaluate(std::size_t l, const State& u, State& dudt, double t) {
-  rhs_[l](u, dudt, t);
-  ++levels_[l].evaluations;
-}
-
-void BergerOliger::rk4(std::size_t l, double dt) {
-  // Boost.Odeint's runge_kutta4 (classic), operation for operation, with k1 = f_start.
+void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
+                      const std::function<void(int, State&)>& fill) {
+  // Classical RK4 with the arithmetic of Boost.Odeint's runge_kutta4 (explicit_generic_rk:
+  // stage sums 1 x u + (a_ij dt) k_j in the same order, stage times t + c_i dt), so that one
+  // level reproduces it bit for bit; `fill` sets the outer ghosts of each stage's input.
   Level& L = levels_[l];
-  State& u = L.u;
-  const State& k1 = L.f_start;
+  LevelRhs& f = rhs_[l];
+  State &k1 = L.k[0], &k2 = L.k[1], &k3 = L.k[2], &k4 = L.k[3], &x = L.tmp;
   const std::size_t n = u.size();
-  const double t = L.t, dh = dt / 2.0, th = t + dh;
-  L.tmp.resize(n);
+  x.resize(n);
+  const double a21 = 0.5 * dt, a32 = 0.5 * dt, a31 = 0.0 * dt, a41 = 0.0 * dt, a42 = 0.0 * dt,
+               a43 = 1.0 * dt;
+  const double b1 = (1.0 / 6.0) * dt, b2 = (1.0 / 3.0) * dt, b3 = (1.0 / 3.0) * dt,
+               b4 = (1.0 / 6.0) * dt;
+  if (fill)
+    fill(0, u);
+  f(u, k1, t);
   for (std::size_t i = 0; i < n; ++i)
-    L.tmp[i] = 1.0 * u[i] + dh * k1[i];
-  evaluate(l, L.tmp, L.k2, th);
+    x[i] = 1.0 * u[i] + a21 * k1[i];
+  if (fill)
+    fill(1, x);
+  f(x, k2, t + 0.5 * dt);
   for (std::size_t i = 0; i < n; ++i)
-    L.tmp[i] = 1.0 * u[i] + dh * L.k2[i];
-  evaluate(l, L.tmp, L.k3, th);
+    x[i] = 1.0 * u[i] + a31 * k1[i] + a32 * k2[i];
+  if (fill)
+    fill(2, x);
+  f(x, k3, t + 0.5 * dt);
   for (std::size_t i = 0; i < n; ++i)
-    L.tmp[i] = 1.0 * u[i] + dt * L.k3[i];
-  evaluate(l, L.tmp, L.k4, t + dt);
-  const double dt6 = dt / 6.0, dt3 = dt / 3.0;
+    x[i] = 1.0 * u[i] + a41 * k1[i] + a42 * k2[i] + a43 * k3[i];
+  if (fill)
+    fill(3, x);
+  f(x, k4, t + 1.0 * dt);
   for (std::size_t i = 0; i < n; ++i)
-    u[i] = 1.0 * u[i] + dt6 * k1[i] + dt3 * L.k2[i] + dt3 * L.k3[i] + dt6 * L.k4[i];
+    u[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
+  evaluations_[l] += 4;
 }
 
-void BergerOliger::advance(std::size_t l) {
+void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double dt) {
+  const bool quadratic = options_.time == TimeInterpolation::quadratic;
+  const bool has_child = l + 1 < layout_->levels();
   Level& L = levels_[l];
-  const bool coarse_of_another = l + 1 < levels();
-  const double dt_l = dt(l);
-  if (coarse_of_another) { // what the finer level's boundary zone is interpolated from
-    if (spec_.time_interpolation == TimeInterpolation::quadratic && L.stepped)
-      L.u_earlier = L.u_start;
-    L.u_start = L.u;
+  if (l > 0 && quadratic)
+    fill_quadratic(u, l, t);
+  if (has_child) {
+    if (quadratic) {
+      if (L.history.size() == 2)
+        L.history.erase(L.history.begin());
+      L.history.push_back({t, u[l]});
+    } else {
+      L.u0 = u[l];
+    }
   }
-  L.t_start = L.t;
-  evaluate(l, L.u, L.f_start, L.t);
-  rk4(l, dt_l);
-  L.t = L.t_start + dt_l;
-  if (l > 0) { // end the step exactly where the coarser level's step ends
+  L.t0 = t;
+  L.dt = dt;
+  std::function<void(int, State&)> fill;
+  if (l > 0 && !quadratic) {
     const Level& P = levels_[l - 1];
-    if (std::abs(L.t - P.t) <= 1e-12 * dt_l)
-      L.t = P.t;
-    fill_boundary_zone(l, L.t);
+    const double theta = (t - P.t0) / P.dt, ratio = dt / P.dt;
+    const long j_begin = static_cast<long>(layout_->n_cells());
+    const bool stages = options_.time == TimeInterpolation::rk_stages;
+    fill = [this, &P, l, theta, ratio, j_begin, stages](int s, State& x) {
+      const StageWeights w = stages
+                                 ? rk_stage_weights(theta, ratio, s, P.dt)
+                                 : dense_output_weights(theta + rk4_stage_times[s] * ratio, P.dt);
+      fill_from_parent(l, x, {&P.u0, &P.k[0], &P.k[1], &P.k[2], &P.k[3]},
+                       {w[0], w[1], w[2], w[3], w[4]}, j_begin);
+    };
   }
+  rk4(l, u[l], t, dt, fill);
   if (after_step)
-    after_step(l, L.u);
-  L.stepped = true;
-  if (!coarse_of_another)
-    return;
-  if (spec_.time_interpolation == TimeInterpolation::dense)
-    evaluate(l, L.u, L.u_end_rhs, L.t);
-  const int substeps = spec_.subcycling ? 2 : 1;
-  for (int s = 0; s < substeps; ++s)
-    advance(l + 1);
-  restrict_to_coarse(grids_[l + 1], levels_[l + 1].u, grids_[l], L.u);
-  if (after_step)
-    after_step(l, L.u);
-}
-
-void BergerOliger::coarse_at(std::size_t l, double t, State& out) const {
-  const Level& P = levels_[l];
-  const double dt = P.t - P.t_start, theta = (t - P.t_start) / dt;
-  if (std::abs(theta - 1.0) <= 1e-12) {
-    out = P.u; // the end of the coarse step: no interpolation
-    return;
+    after_step(l, u[l]);
+  if (has_child) {
+    if (options_.subcycling) {
+      advance(u, l + 1, t, 0.5 * dt);
+      advance(u, l + 1, t + 0.5 * dt, 0.5 * dt);
+    } else {
+      advance(u, l + 1, t, dt);
+    }
+    restrict_level(u, l + 1);
   }
-  if (spec_.time_interpolation == TimeInterpolation::dense) {
-    hermite_interpolate(P.u_start, P.f_start, P.u, P.u_end_rhs, dt, theta, out);
-    return;
-  }
-  out.resize(P.u.size());
-  if (!P.u_earlier) { // the first step: only two time levels yet
-    for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] = (1.0 - theta) * P.u_start[i] + theta * P.u[i];
-    return;
-  }
-  // the parabola through t_start - dt, t_start and t_start + dt
-  const double w_earlier = 0.5 * theta * (theta - 1.0), w_start = (1.0 - theta) * (1.0 + theta),
-               w_end = 0.5 * theta * (theta + 1.0);
-  const State& e = *P.u_earlier;
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = w_earlier * e[i] + w_start * P.u_start[i] + w_end * P.u[i];
 }
 
-void BergerOliger::fill_boundary_zone(std::size_t l, double t) {
-  coarse_at(l - 1, t, scratch_);
-  const Grid& fine = grids_[l];
-  prolongate(grids_[l - 1], scratch_, fine, levels_[l].u, fine.end_interior() - buffer_cells,
-             fine.n_total());
+void MeshStepper::step(std::vector<State>& u, double t, double dt) {
+  if (u.size() != layout_->levels())
+    throw std::invalid_argument("the mesh stepper needs one state per level");
+  advance(u, 0, t, dt);
+  // Every level is at t + dt now: its outer ghosts (and buffer) by prolongation, so that each
+  // state is complete for output. This changes nothing in the evolution: the next step's first
+  // fill at t + dt selects the same parent state with weights exactly 1 and 0.
+  fill_ghosts(u);
 }
 
-void BergerOliger::step() {
-  advance(0);
-  t_ = levels_[0].t;
-}
-
-void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
-                         double dt, double theta, State& out) {
-  const double s = theta, s2 = s * s, s3 = s2 * s;
-  const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h01 = -2.0 * s3 + 3.0 * s2;
-  const double h10 = (s3 - 2.0 * s2 + s) * dt, h11 = (s3 - s2) * dt;
-  out.resize(u0.size());
-  for (std::size_t i = 0; i < u0.size(); ++i)
-    out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
-}
-
-} // namespace gbssn1d
+} // namespace gbssn1d::mesh

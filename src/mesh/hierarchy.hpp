@@ -1,151 +1,157 @@
-// Box-in-box mesh refinement in r: a hierarchy of nested cell-centred levels and the
-// Berger-Oliger time stepping that advances it.
+// Box-in-box mesh refinement: a hierarchy of levels and its Berger-Oliger stepper.
 //
-// Layout. Level l = 0 ... L-1 covers 0 <= r <= rmax / 2^l with the same N cells (uniform map),
-// so each coarse cell holds exactly two fine cells and N alone refines every level. Each level
-// is an ordinary Grid (ghost cells at the origin by parity, three outer ghost cells); the
-// point-wise right-hand side runs on it unchanged and never learns that levels exist.
+// Design note. Everything that knows about refinement lives in src/mesh/; the point-wise RHS
+// (GbssnRhs) and a level's Grid do not: each level is an ordinary Grid with its own GbssnRhs,
+// and the stepper sees a level only through a State and a right-hand-side functor
+// void(const State&, State&, double t). One level is the single grid (any map), stepped by the
+// same RK4 as Boost.Odeint's runge_kutta4, bit for bit (tests/mesh/test_hierarchy.cpp).
 //
-// The operations, each named once (the names follow AMReX's FillPatchTwoLevels and
-// average_down; the methods follow Carpet and BAM):
-//  - prolongation (coarse -> fine, `prolongate`): 6-point Lagrange interpolation in r, 5th
-//    order, at the fine centres, which lie a quarter of a coarse cell either side of a coarse
-//    centre; near r = 0 the coarse origin ghosts hold each variable's parity image, so the
-//    stencil respects the symmetry as the single grid's derivatives do;
-//  - the fine boundary zone (`fill_boundary_zone`): the outer ghost cells and a buffer of
-//    `buffer_cells` interior cells of every fine level are refilled from the coarser level at
-//    the end of each fine step, so that every level is valid everywhere between its steps.
-//    Within a step the outer ghosts' own right-hand side is not the fine solution's; each of
-//    RK4's later three stages carries that one stencil radius (3 cells) further in, so 3 ghosts
-//    + 9 buffer cells = stages x radius = 12 cells are refilled and the rest of the level is
-//    exact (Schnetter, Hawley & Hawke 2004, CQG 21, 1465: buffer zones);
-//  - time interpolation of the coarse level to a fine step's start: `dense`, the cubic Hermite
-//    interpolant of the coarse step's ends and their time derivatives (RK4's dense output,
-//    error O(dt^4), consistent with the scheme), or `quadratic`, the parabola through three
-//    coarse time levels (error O(dt^3): Carpet's and BAM's default second-order choice);
-//  - restriction (fine -> coarse, `restrict_to_coarse`): at each coarse centre inside the
-//    fine level's exact region, the 6-point Lagrange value of the fine solution at the
-//    midpoint of two fine centres (weights (3, -25, 150, 150, -25, 3)/256, 6th order). A
-//    two-cell average would be only 2nd order for the point values finite differences carry;
-//  - Berger-Oliger subcycling (`BergerOliger::step`): level l steps with dt_l = cfl dr_l, two
-//    fine steps per coarse step, coarse first, then the finer levels, then restriction; or,
-//    for comparison, every level steps with the finest dt (no time interpolation is then
-//    needed: each fine step starts where the coarse one did).
-// A one-level hierarchy is the single grid: its RK4 step does exactly what Boost.Odeint's
-// runge_kutta4 does, operation for operation.
+//  - Layout (layout.hpp): level l covers 0 <= r <= rmax/2^l with N cells, cell-centred, so that
+//    each coarse cell holds two fine cells; origin ghosts by parity, as on the single grid.
+//  - Prolongation (transfer.hpp): 6-point Lagrange interpolation in r from coarse centres to the
+//    fine centres at +-1/4 coarse spacing, 6th order (exact for degree 5), every variable
+//    through the registry with its parity at r = 0 (Carpet's and BAM's 5th-order operators:
+//    Schnetter, Hawley & Hawke 2004, CQG 21:1465; Bruegmann et al. 2008, PRD 77:024027).
+//  - Restriction (transfer.hpp): 6-point centred Lagrange interpolation to the coarse centre,
+//    the midpoint of two fine centres, 6th order; the 2-point average would be 2nd order for
+//    point values. Applied after every pair of fine steps (or every fine step without
+//    subcycling) to the coarse cells whose stencil lies in the fine level's valid region (the
+//    fine interior less the buffer). Berger & Oliger 1984 (JCP 53:484), Berger & Colella 1989.
+//  - Time (time_interpolation.hpp), selectable:
+//      rk_stages: the fine ghosts get, at every RK4 stage, the stage values of the fine step
+//        reconstructed from the coarse step's four stage derivatives (McCorquodale & Colella
+//        2011, CAMCoS 6:1; Mongwane 2015, GRG 47:60): consistent, 4th order, no buffer;
+//      dense_output: every stage gets the coarse step's RK4 dense output at the stage time
+//        (accurate values, inconsistent with the stages);
+//      quadratic: ghosts and a buffer of buffer_cells + 3 = 12 points (stages x stencil
+//        radius, Schnetter, Hawley & Hawke 2004) are filled once per fine step by quadratic
+//        interpolation in time through three coarse time levels (Carpet's and BAM's default),
+//        2nd/3rd order in time.
+//  - Stepper: Berger-Oliger recursion (Berger & Oliger 1984): level l takes one RK4 step of dt_l
+//    (= cfl dr_l), then level l+1 two steps of dt_l / 2, then restriction l+1 -> l; or, without
+//    subcycling, every level steps with the finest dt. The coarsest level's outer ghosts keep
+//    GbssnRhs's Sommerfeld condition; every finer level's outer ghosts come from its parent
+//    (the RHS the functor writes there is ignored). Kreiss-Oliger dissipation and upwinding are
+//    those of GbssnRhs on each level, scaled with that level's spacing.
+//  - Start: initialise() restricts from the finest level down and fills every fine boundary;
+//    for `quadratic` it also makes each parent's level at t - dt_l by one RK4 step backwards
+//    (like Carpet's init_3_timelevels), since a linear first step leaves an O(dt^2) error that
+//    focuses at r = 0 and stops convergence. Every step() ends with each fine level's ghosts
+//    and buffer prolongated from its parent, so each State is complete between steps.
+//
+// Measured (tests/mesh/test_hierarchy.cpp; flat-space lapse pulse crossing the refinement
+// boundaries, RMS over 15 times of all levels and variables, cfl 0.25, N = 32 ... 1024):
+// rk_stages converges at 4.0 (pair orders -> 4.01) with 2 and 3 levels, with and without
+// subcycling; dense_output at 4 with 2 levels but falls to about 2 with 3 levels at high
+// resolution; quadratic at 4-5 while the space error dominates, then, subcycled with 3 levels,
+// 3.8 -> 2.8 (2.2 at cfl 0.5): the time interpolation limits it. RHS evaluations per coarse
+// step: 4 x 2^l on level l with subcycling, 4 per level per (finest) step without.
+//
+// State a checkpoint of the hierarchy needs: every level's State and time; for `quadratic` the
+// stored coarse time levels of every level but the finest (history()); the rk_stages and
+// dense_output choices need nothing beyond the states (a coarse step's stages are used within
+// that step only).
 #pragma once
 
 #include "gbssn/state.hpp"
-#include "grid/grid.hpp"
+#include "mesh/layout.hpp"
+#include "mesh/time_interpolation.hpp"
 
-#include <cstddef>
+#include <array>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <vector>
 
-namespace gbssn1d {
+namespace gbssn1d::mesh {
 
-/// Interior cells of a fine level refilled from the coarser level after each fine step: with
-/// the 3 outer ghosts, RK4's 4 stages x the stencil radius 3.
-inline constexpr std::size_t buffer_cells = 3 * Grid::n_ghost;
+/// One level's right-hand side d u / dt (GbssnRhs has this signature).
+using LevelRhs = std::function<void(const State&, State&, double)>;
 
-enum class TimeInterpolation {
-  dense,     ///< cubic Hermite of the coarse step (RK4's dense output), O(dt^4)
-  quadratic, ///< parabola through three coarse time levels, O(dt^3)
-};
-
-struct HierarchySpec {
-  std::size_t levels = 1;
-  std::size_t N = 32; ///< cells of every level
-  double rmax = 128.0;
+struct StepperOptions {
+  TimeInterpolation time = TimeInterpolation::rk_stages;
   bool subcycling = true; ///< false: every level steps with the finest dt
-  TimeInterpolation time_interpolation = TimeInterpolation::dense;
+  double cfl = 0.25;      ///< dt_l = cfl dr_l
 };
 
-/// The level grids of `spec`; throws std::invalid_argument naming what is wrong (odd N, too
-/// few cells for the buffer and the prolongation stencil).
-std::vector<Grid> make_levels(const HierarchySpec& spec);
-
-/// Lagrange weights of the nodes `nodes` (distinct) for the value at `x`.
-std::vector<double> lagrange_weights(const std::vector<double>& nodes, double x);
-
-/// Fills the fine cells [i_begin, i_end) (indices of the fine grid: interior and outer ghost
-/// cells, i_begin >= Grid::n_ghost) of every variable by 6-point Lagrange interpolation of the
-/// coarse state, whose origin ghosts must hold the parity images. The fine grid's cells lie
-/// inside coarse cells (two per coarse cell).
-void prolongate(const Grid& coarse, const State& u_coarse, const Grid& fine, State& u_fine,
-                std::size_t i_begin, std::size_t i_end);
-
-/// The coarse cells whose restriction stencil lies in the fine level's exact region (interior
-/// cells below its buffer): coarse interior cells 0 ... restricted_cells(N) - 1.
-std::size_t restricted_cells(std::size_t N);
-
-/// Overwrites the coarse interior cells 0 ... restricted_cells(N) - 1 with the fine solution
-/// interpolated to their centres, and refreshes the coarse origin ghosts by parity.
-void restrict_to_coarse(const Grid& fine, const State& u_fine, const Grid& coarse, State& u_coarse);
-
-/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
-/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
-void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
-                         double dt, double theta, State& out);
-
-/// The right-hand side of one level: d u / dt at time t (GbssnRhs has this signature).
-using LevelRhs = std::function<void(const State& u, State& dudt, double t)>;
-/// Called after every full step of a level (e.g. the chi floor).
-using LevelHook = std::function<void(std::size_t level, State& u)>;
-
-/// The Berger-Oliger time stepping of a hierarchy of levels.
-class BergerOliger {
+class MeshStepper {
 public:
-  /// `u` holds every level's state (initial data), `rhs` one right-hand side per level.
-  BergerOliger(HierarchySpec spec, double cfl, std::vector<State> u, std::vector<LevelRhs> rhs);
+  /// One RHS per level, in level order (`layout` must outlive the stepper). Throws
+  /// std::invalid_argument on a count mismatch.
+  MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs, StepperOptions options);
 
-  std::size_t levels() const { return grids_.size(); }
-  const Grid& grid(std::size_t l) const { return grids_[l]; }
-  const State& state(std::size_t l) const { return levels_[l].u; }
-  State& state(std::size_t l) { return levels_[l].u; }
-  double time() const { return t_; }
-  /// The step of level l (with subcycling dt_0 / 2^l, without it the finest dt on every level).
-  double dt(std::size_t l) const;
-  /// Right-hand-side evaluations of level l so far.
-  std::uint64_t evaluations(std::size_t l) const { return levels_[l].evaluations; }
+  const MeshLayout& layout() const { return *layout_; }
+  const StepperOptions& options() const { return options_; }
 
-  LevelHook after_step;
+  /// The step of the whole hierarchy: cfl dr_0 with subcycling (each level l takes 2^l steps of
+  /// dt / 2^l), cfl dr_{L-1} without (every level takes one step of it).
+  double dt() const;
+  /// The step level l takes when the hierarchy steps by `dt`.
+  double level_dt(std::size_t level, double dt) const;
 
-  /// Advances every level by the coarsest level's step dt(0) (with subcycling; without it, by
-  /// the finest dt).
-  void step();
+  /// Makes the levels consistent at time t before the first step: restriction from the finest
+  /// level down, then each finer level's ghosts (and buffer) from its parent; forgets the
+  /// stored time levels (for `quadratic`, stores each parent's level at t - dt_l, made by one
+  /// RK4 step backwards: 4 RHS evaluations per level but the finest).
+  void initialise(std::vector<State>& u, double t);
+  /// Advances every level from t to t + dt (dt may be shorter than dt(), e.g. a last step);
+  /// afterwards every level's outer ghosts and buffer hold the prolongation of its parent.
+  void step(std::vector<State>& u, double t, double dt);
+  /// Fills the outer ghosts of levels 1 ... L-1 at time t from their parents by prolongation
+  /// alone (after initialise or a completed step, when all levels are at t).
+  void fill_ghosts(std::vector<State>& u) const;
+
+  /// Called after every step of a level (e.g. a chi floor).
+  std::function<void(std::size_t level, State& u)> after_step;
+
+  /// RHS evaluations of level l so far.
+  std::uint64_t evaluations(std::size_t level) const { return evaluations_.at(level); }
+  void set_evaluations(std::size_t level, std::uint64_t n) {
+    evaluations_.at(level) = n;
+  } ///< resume
+  /// Fine interior cells (next to the outer ghosts) refilled from the parent every fine step.
+  std::size_t buffer() const {
+    return options_.time == TimeInterpolation::quadratic ? buffer_cells : 0;
+  }
+  /// The coarse cells [0, restricted_cells()) of a parent overwritten by restriction.
+  long restricted_cells() const;
+
+  /// A stored time level of a parent level (for the quadratic choice).
+  struct TimeLevel {
+    double t;
+    State u;
+  };
+  /// Level l's stored time levels, oldest first (at most two; empty for the finest level and
+  /// for the stage choices).
+  const std::vector<TimeLevel>& history(std::size_t level) const {
+    return levels_.at(level).history;
+  }
+  void set_history(std::size_t level, std::vector<TimeLevel> h) {
+    levels_.at(level).history = std::move(h);
+  }
 
 private:
   struct Level {
-    State u;                        ///< the state at the level's current time
-    State u_start, f_start;         ///< at the start of its last step, and d_t u there
-    State u_end_rhs;                ///< d_t u at the end of its last step (dense)
-    std::optional<State> u_earlier; ///< at the start of the step before (quadratic)
-    double t_start = 0.0, t = 0.0;
-    bool stepped = false; ///< has taken a step (u_start holds a time level)
-    std::uint64_t evaluations = 0;
-    State k2, k3, k4, tmp; ///< RK4 stages
+    State u0, tmp, scratch;         ///< step start, stage input, coarse combination scratch
+    std::array<State, 4> k;         ///< stage derivatives of the current step
+    double t0 = 0.0, dt = 0.0;      ///< the current (or last) step
+    std::vector<TimeLevel> history; ///< quadratic: the states before the last steps
   };
+  void advance(std::vector<State>& u, std::size_t l, double t, double dt);
+  /// RK4 step of level l; `fill(stage, input)` before each RHS evaluation.
+  void rk4(std::size_t l, State& u, double t, double dt,
+           const std::function<void(int, State&)>& fill);
+  /// Fine level l's points [j_begin, N + n_ghost) from the parent's arrays `arrays` combined with
+  /// weights w.
+  void fill_from_parent(std::size_t l, State& fine, const std::vector<const State*>& arrays,
+                        const std::vector<double>& w, long j_begin) const;
+  void fill_quadratic(std::vector<State>& u, std::size_t l, double t) const;
+  void restrict_level(std::vector<State>& u, std::size_t fine_level) const;
 
-  /// One RK4 step of level l from its current time by dt (Odeint's runge_kutta4 arithmetic).
-  void rk4(std::size_t l, double dt);
-  /// Advances level l by one of its steps, then its finer levels, then restricts them into it.
-  void advance(std::size_t l);
-  /// The outer ghosts and buffer of level l (> 0) at time t from level l - 1.
-  void fill_boundary_zone(std::size_t l, double t);
-  /// Level l (a coarse level of a finer one) at time t within its last step.
-  void coarse_at(std::size_t l, double t, State& out) const;
-  void evaluate(std::size_t l, const State& u, State& dudt, double t);
-
-  HierarchySpec spec_;
-  double cfl_;
-  std::vector<Grid> grids_;
-  std::vector<Level> levels_;
+  const MeshLayout* layout_;
   std::vector<LevelRhs> rhs_;
-  double t_ = 0.0;
-  State scratch_; ///< a coarse level in time, before prolongation
+  StepperOptions options_;
+  mutable std::vector<Level> levels_;
+  std::vector<std::uint64_t> evaluations_;
 };
 
-} // namespace gbssn1d
+} // namespace gbssn1d::mesh

@@ -1,12 +1,14 @@
-// Box-in-box refinement (mesh/hierarchy.hpp) against independent facts: polynomials that the
-// prolongation and restriction stencils must reproduce exactly, Boost.Odeint's RK4 step that a
-// one-level hierarchy must reproduce bit for bit, and a gauge pulse crossing two refinement
-// boundaries whose difference to a single grid at the finest spacing must converge away at the
-// design order.
-#include "gbssn/rhs.hpp"
-#include "grid/interpolation.hpp"
-#include "initial_data/initial_data.hpp"
+// The Berger-Oliger stepper of box-in-box levels with GbssnRhs unchanged on every level: the
+// layout's checks, one level reproducing Boost.Odeint's runge_kutta4 bit for bit, and a gauge
+// pulse in flat space crossing the refinement boundaries: self-convergence at the design order
+// with each time interpolation, with and without subcycling, and its difference to a single
+// uniform grid at the finest spacing (the reflection off the refinement boundary) converging
+// away.
 #include "mesh/hierarchy.hpp"
+#include "mesh/transfer.hpp"
+
+#include "gbssn/rhs.hpp"
+#include "initial_data/initial_data.hpp"
 
 #include "../test_support.hpp"
 
@@ -15,273 +17,378 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace gbssn1d;
+using namespace gbssn1d::mesh;
 using gbssn1d::testing::fit_order;
 
 namespace {
 
-/// Every variable of a state from f(r) at every point (ghosts included): the polynomials below
-/// have each variable's parity, so the origin ghosts hold the parity images.
-State polynomial_state(const Grid& g, const std::function<double(double, int)>& p) {
-  State u = make_state(g);
-  for (const auto& e : registry)
-    for (std::size_t i = 0; i < g.n_total(); ++i)
-      field(u, g, e.var)[i] = p(g.r()[i], e.parity);
-  return u;
-}
-
-/// Degree-d polynomial of parity `parity` (even: 1 + r^2 + ..., odd: r + r^3 + ...).
-double poly(double r, int parity, int degree) {
-  double sum = 0.0;
-  for (int k = parity > 0 ? 0 : 1; k <= degree; k += 2)
-    sum += std::pow(r / 4.0, k) * (1.0 + 0.1 * k);
-  return sum;
-}
-
-} // namespace
-
-TEST_CASE("prolongation reproduces polynomials up to degree 5 of either parity, also at r = 0") {
-  for (int degree : {0, 1, 2, 3, 4, 5}) {
-    const HierarchySpec spec{.levels = 2, .N = 32, .rmax = 16.0};
-    const auto grids = make_levels(spec);
-    auto p = [&](double r, int parity) { return poly(r, parity, degree); };
-    const State coarse = polynomial_state(grids[0], p);
-    State fine = make_state(grids[1]);
-    prolongate(grids[0], coarse, grids[1], fine, Grid::n_ghost, grids[1].n_total());
-    double err = 0.0;
-    for (const auto& e : registry)
-      for (std::size_t i = Grid::n_ghost; i < grids[1].n_total(); ++i)
-        err =
-            std::max(err, std::abs(field(fine, grids[1], e.var)[i] - p(grids[1].r()[i], e.parity)));
-    INFO("degree " << degree);
-    CHECK(err < 1e-13);
-  }
-  // degree 6: the error falls as the 6th power of the coarse spacing
-  std::vector<double> h, err;
-  for (std::size_t N : {32, 64, 128}) {
-    const auto grids = make_levels({.levels = 2, .N = N, .rmax = 16.0});
-    auto p = [](double r, int) { return std::pow(r / 4.0, 6); };
-    const State coarse = polynomial_state(grids[0], p);
-    State fine = make_state(grids[1]);
-    prolongate(grids[0], coarse, grids[1], fine, Grid::n_ghost, grids[1].n_total());
-    double e = 0.0;
-    for (std::size_t i = Grid::n_ghost; i < grids[1].n_total(); ++i)
-      e = std::max(e, std::abs(field(fine, grids[1], Var::alpha)[i] - p(grids[1].r()[i], 1)));
-    h.push_back(grids[0].dx());
-    err.push_back(e);
-  }
-  CHECK(fit_order(h, err) == doctest::Approx(6.0).epsilon(0.02));
-}
-
-TEST_CASE("restriction reproduces polynomials up to degree 5 at the coarse centres") {
-  for (int degree : {0, 1, 2, 3, 4, 5}) {
-    const auto grids = make_levels({.levels = 2, .N = 40, .rmax = 16.0});
-    auto p = [&](double r, int parity) { return poly(r, parity, degree); };
-    const State fine = polynomial_state(grids[1], p);
-    State coarse = make_state(grids[0]);
-    restrict_to_coarse(grids[1], fine, grids[0], coarse);
-    const std::size_t cells = restricted_cells(40);
-    REQUIRE(cells == 14); // 2j + 3 <= 40 - 9 - 1
-    double err = 0.0;
-    for (const auto& e : registry)
-      for (std::size_t j = 0; j < cells + Grid::n_ghost; ++j) // origin ghosts by parity too
-        err = std::max(err,
-                       std::abs(field(coarse, grids[0], e.var)[j] - p(grids[0].r()[j], e.parity)));
-    INFO("degree " << degree);
-    CHECK(err < 1e-13);
-    // and nothing beyond the fine level's exact region is touched
-    CHECK(field(coarse, grids[0], Var::alpha)[Grid::n_ghost + cells] == 0.0);
-  }
-}
-
-TEST_CASE("levels: odd N and too few cells for the buffer are refused") {
-  CHECK_THROWS_AS(make_levels({.levels = 2, .N = 33, .rmax = 16.0}), std::invalid_argument);
-  CHECK_THROWS_AS(make_levels({.levels = 2, .N = 12, .rmax = 16.0}), std::invalid_argument);
-  CHECK_NOTHROW(make_levels({.levels = 1, .N = 33, .rmax = 16.0}));
-  const auto grids = make_levels({.levels = 3, .N = 16, .rmax = 16.0});
-  CHECK(grids[2].r()[grids[2].end_interior() - 1] == doctest::Approx(4.0 - 0.125));
-}
-
-namespace {
-
-/// Flat space with a lapse pulse (even in r) of amplitude 0.01 at r0 = 5, width 1.
-State pulse(const Grid& g) {
+/// Flat space with a lapse pulse, alpha = 1 + A (e^-((r-r0)/s)^2 + e^-((r+r0)/s)^2) (even).
+State gauge_pulse(const Grid& g, double r0 = 1.5, double s = 0.4, double A = 0.01) {
   State u = make_state(g);
   for (std::size_t i = 0; i < g.n_total(); ++i) {
     const double r = g.r()[i];
+    field(u, g, Var::alpha)[i] =
+        1.0
+        + A * (std::exp(-(r - r0) * (r - r0) / (s * s)) + std::exp(-(r + r0) * (r + r0) / (s * s)));
     for (Var v : {Var::chi, Var::a, Var::b})
       field(u, g, v)[i] = 1.0;
-    field(u, g, Var::alpha)[i] =
-        1.0 + 0.01 * (std::exp(-(r - 5.0) * (r - 5.0)) + std::exp(-(r + 5.0) * (r + 5.0)));
   }
   return u;
 }
 
+/// A hierarchy with GbssnRhs (default gauge) on every level and the gauge pulse on each.
+struct Run {
+  MeshLayout layout;
+  std::vector<std::unique_ptr<GbssnRhs>> rhs;
+  std::unique_ptr<MeshStepper> stepper;
+  std::vector<State> u;
+  double t = 0.0;
+
+  Run(double rmax, std::size_t n, std::size_t levels, StepperOptions options)
+      : layout(rmax, n, levels) {
+    std::vector<LevelRhs> functors;
+    for (std::size_t l = 0; l < levels; ++l) {
+      rhs.push_back(std::make_unique<GbssnRhs>(layout.grid(l), RhsParams{}));
+      functors.push_back(std::ref(*rhs.back()));
+      u.push_back(gauge_pulse(layout.grid(l)));
+    }
+    stepper = std::make_unique<MeshStepper>(layout, functors, options);
+    stepper->initialise(u, 0.0);
+  }
+  void step(double dt) {
+    stepper->step(u, t, dt);
+    t += dt;
+  }
+};
+
+/// Sum of squares of a - R(b) over the cells of level `a_grid` whose restriction reads only
+/// valid cells of `b` (below its buffer), all variables; adds the count to `n`.
+double sq_diff_restricted(const State& a, const Grid& ga, const State& b, const Grid& gb,
+                          std::size_t buffer, std::size_t& n) {
+  State rb = make_state(ga);
+  const long na = static_cast<long>(ga.n_interior()), nb = static_cast<long>(gb.n_interior());
+  const long end =
+      std::min(na - static_cast<long>(buffer), (nb - static_cast<long>(buffer) - 3) / 2);
+  restrict_to(b, gb, rb, ga, 0, end);
+  double s = 0.0;
+  for (const auto& entry : registry)
+    for (long i = 0; i < end; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i) + Grid::n_ghost;
+      const double d = field(a, ga, entry.var)[k] - field(rb, ga, entry.var)[k];
+      s += d * d;
+      ++n;
+    }
+  return s;
+}
+
+constexpr double rmax = 8.0, tmax = 3.5, dt_sample = 0.25;
+
+/// Runs at N = n_list[k] to tmax, sampling every dt_sample; returns the RMS over samples,
+/// levels, cells and variables of u_N - R(u_2N) for each consecutive pair (self-convergence).
+std::vector<double> self_differences(const std::vector<std::size_t>& n_list, std::size_t levels,
+                                     StepperOptions options) {
+  std::vector<std::vector<std::vector<State>>> samples(n_list.size());
+  std::size_t buffer = 0;
+  for (std::size_t k = 0; k < n_list.size(); ++k) {
+    Run run(rmax, n_list[k], levels, options);
+    buffer = run.stepper->buffer();
+    const double dt = run.stepper->dt();
+    const long per_sample = std::lround(dt_sample / dt);
+    REQUIRE(std::abs(per_sample * dt - dt_sample) < 1e-12);
+    samples[k].push_back(run.u);
+    while (run.t < tmax - 1e-9) {
+      for (long s = 0; s < per_sample; ++s)
+        run.step(dt);
+      samples[k].push_back(run.u);
+    }
+  }
+  std::vector<double> rms;
+  for (std::size_t k = 0; k + 1 < n_list.size(); ++k) {
+    const MeshLayout a(rmax, n_list[k], levels), b(rmax, n_list[k + 1], levels);
+    double s = 0.0;
+    std::size_t n = 0;
+    for (std::size_t m = 0; m < samples[k].size(); ++m)
+      for (std::size_t l = 0; l < levels; ++l)
+        s += sq_diff_restricted(samples[k][m][l], a.grid(l), samples[k + 1][m][l], b.grid(l),
+                                buffer, n);
+    rms.push_back(std::sqrt(s / static_cast<double>(n)));
+  }
+  return rms;
+}
+
+/// RMS over samples, cells and variables of the finest level minus a single uniform grid with
+/// the finest spacing (the same cell centres), over the finest level's valid cells.
+double single_grid_difference(std::size_t n, std::size_t levels, StepperOptions options) {
+  Run run(rmax, n, levels, options);
+  const std::size_t f = levels - 1, nf = n << f;
+  StepperOptions one = options;
+  Run single(rmax, nf, 1, one);
+  const double dt = run.stepper->dt(), dt_fine = run.stepper->level_dt(f, dt);
+  const long fine_per_step = std::lround(dt / dt_fine);
+  const long per_sample = std::lround(dt_sample / dt);
+  const long end = static_cast<long>(n - run.stepper->buffer());
+  double s = 0.0;
+  std::size_t count = 0;
+  while (run.t < tmax - 1e-9) {
+    for (long k = 0; k < per_sample; ++k) {
+      run.step(dt);
+      for (long j = 0; j < fine_per_step; ++j)
+        single.step(dt_fine);
+    }
+    const Grid& g = run.layout.grid(f);
+    const Grid& gs = single.layout.grid(0);
+    for (const auto& entry : registry)
+      for (long i = 0; i < end; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i) + Grid::n_ghost;
+        const double d = field(run.u[f], g, entry.var)[k] - field(single.u[0], gs, entry.var)[k];
+        s += d * d;
+        ++count;
+      }
+  }
+  return std::sqrt(s / static_cast<double>(count));
+}
+
+std::string name(TimeInterpolation t) {
+  switch (t) {
+  case TimeInterpolation::rk_stages:
+    return "rk_stages";
+  case TimeInterpolation::dense_output:
+    return "dense_output";
+  default:
+    return "quadratic";
+  }
+}
+
+/// Observed order of each consecutive pair of differences (refinement by 2).
+std::vector<double> pair_orders(const std::vector<double>& d) {
+  std::vector<double> o;
+  for (std::size_t k = 0; k + 1 < d.size(); ++k)
+    o.push_back(std::log2(d[k] / d[k + 1]));
+  return o;
+}
+
+std::string label(std::size_t levels, const StepperOptions& o) {
+  return std::to_string(levels) + " levels, " + (o.subcycling ? "subcycling, " : "no subcycling, ")
+         + name(o.time);
+}
+
 } // namespace
 
-TEST_CASE("a one-level hierarchy steps exactly as Boost.Odeint's RK4 on the single grid") {
-  const HierarchySpec spec{.levels = 1, .N = 200, .rmax = 20.0};
-  const Grid grid = make_levels(spec)[0];
-  GbssnRhs rhs(grid, RhsParams{});
-  BergerOliger bo(spec, 0.25, {pulse(grid)}, {std::ref(rhs)});
-  GbssnRhs rhs_single(grid, RhsParams{});
-  State u = pulse(grid), dudt;
+TEST_CASE("mesh layout: extents halve per level, bad N, levels and maps are refused by name") {
+  const MeshLayout m(8.0, 32, 3);
+  CHECK(m.levels() == 3);
+  CHECK(m.extent(2) == 2.0);
+  CHECK(m.spacing(1) == doctest::Approx(0.125));
+  // each coarse cell holds exactly two fine cells
+  CHECK(m.grid(1).r()[Grid::n_ghost]
+        == doctest::Approx(m.grid(0).r()[Grid::n_ghost] - m.spacing(0) / 4));
+  CHECK_THROWS_WITH_AS(
+      MeshLayout(8.0, 33, 2),
+      doctest::Contains("--N = 33 is invalid: box-in-box refinement needs an even"),
+      std::invalid_argument);
+  CHECK_THROWS_WITH_AS(MeshLayout(8.0, 12, 2), doctest::Contains("--N = 12 is invalid"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(MeshLayout(8.0, 32, 0), doctest::Contains("--levels = 0 is invalid"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(MeshLayout(RadialMap::sinh(100, 0.02, 400), 400, 2),
+                       doctest::Contains("--grid"), std::invalid_argument);
+  CHECK_NOTHROW(MeshLayout(RadialMap::sinh(100, 0.02, 400), 401, 1)); // one level: any grid
+}
+
+TEST_CASE("one level reproduces Boost.Odeint's runge_kutta4 with GbssnRhs bit for bit") {
+  const MeshLayout m(RadialMap::sinh(20.0, 0.05, 64), 64, 1);
+  const Grid& g = m.grid(0);
+  GbssnRhs rhs_a(g, RhsParams{}), rhs_b(g, RhsParams{});
+  MeshStepper stepper(m, {std::ref(rhs_a)}, StepperOptions{});
+  std::vector<State> u{gauge_pulse(g, 3.0, 1.0, 0.1)};
+  State v = u[0];
   boost::numeric::odeint::runge_kutta4<State> rk4;
-  const double dt = 0.25 * grid.min_spacing();
+  const double dt = stepper.dt();
+  CHECK(dt == 0.25 * g.min_spacing());
   double t = 0.0;
   for (int n = 0; n < 20; ++n) {
-    rhs_single(u, dudt, t);
-    rk4.do_step(std::ref(rhs_single), u, dudt, t, dt);
+    stepper.step(u, t, dt);
+    rk4.do_step(std::ref(rhs_b), v, t, dt);
     t += dt;
-    bo.step();
   }
-  CHECK(bo.state(0) == u); // bit for bit
-  CHECK(bo.time() == doctest::Approx(t));
-  CHECK(bo.evaluations(0) == 80);
+  CHECK(u[0] != gauge_pulse(g, 3.0, 1.0, 0.1)); // it moved
+  CHECK(u[0] == v);
+  CHECK(stepper.evaluations(0) == 80);
+  CHECK(rhs_a.evaluations() == 80);
 }
 
-namespace {
-
-/// RMS over output times (every 0.5 up to t_end) of alpha(hierarchy) - alpha(single grid at
-/// the finest spacing), sampled on the coarsest level's cells with r in [0.5, 20], each from
-/// the finest level that holds it exactly.
-double pulse_difference(std::size_t N, TimeInterpolation time, bool subcycling, double t_end) {
-  const HierarchySpec spec{
-      .levels = 3, .N = N, .rmax = 32.0, .subcycling = subcycling, .time_interpolation = time};
-  const auto grids = make_levels(spec);
-  std::vector<GbssnRhs> rhs;
-  std::vector<State> u;
-  for (const auto& g : grids) {
-    rhs.emplace_back(g, RhsParams{});
-    u.push_back(pulse(g));
-  }
-  std::vector<LevelRhs> level_rhs;
-  for (auto& r : rhs)
-    level_rhs.push_back(std::ref(r));
-  BergerOliger bo(spec, 0.25, u, level_rhs);
-
-  const Grid single(RadialMap::uniform(32.0), 4 * N);
-  GbssnRhs rhs_single(single, RhsParams{});
-  State v = pulse(single), dvdt;
-  boost::numeric::odeint::runge_kutta4<State> rk4;
-  const double dt_fine = bo.dt(2);
-  double t = 0.0, sum = 0.0;
-  int samples = 0;
-  const auto steps_per_coarse = static_cast<int>(std::lround(bo.dt(0) / dt_fine));
-  while (bo.time() < t_end - 1e-9) {
-    bo.step();
-    for (int s = 0; s < steps_per_coarse; ++s) {
-      rhs_single(v, dvdt, t);
-      rk4.do_step(std::ref(rhs_single), v, dvdt, t, dt_fine);
-      t += dt_fine;
+TEST_CASE("RHS evaluations per level: 4 per step, 2^l steps per coarse step with subcycling") {
+  for (bool sub : {true, false}) {
+    Run run(8.0, 32, 3, StepperOptions{TimeInterpolation::rk_stages, sub, 0.25});
+    run.step(run.stepper->dt());
+    for (std::size_t l = 0; l < 3; ++l) {
+      CHECK(run.stepper->evaluations(l) == (sub ? 4u << l : 4u));
+      CHECK(run.rhs[l]->evaluations() == run.stepper->evaluations(l));
     }
-    if (std::abs(bo.time() / 0.5 - std::round(bo.time() / 0.5)) > 1e-9)
-      continue;
-    const auto alpha_single = field(std::as_const(v), single, Var::alpha);
-    for (std::size_t j = grids[0].first_interior(); j < grids[0].end_interior(); ++j) {
-      const double r = grids[0].r()[j];
-      if (r < 0.5 || r > 20.0)
+  }
+}
+
+TEST_CASE("gauge pulse across refinement boundaries, RK4 stage values: 4th order, reflections "
+          "converge away") {
+  // measured (RMS over 15 times, all levels, variables): fitted orders 4.1 (2 levels) and 4.4
+  // (3 levels), pairs -> 4.01 up to N = 1024; with or without subcycling
+  for (std::size_t levels : {2u, 3u})
+    for (bool sub : {true, false}) {
+      const StepperOptions opt{TimeInterpolation::rk_stages, sub, 0.25};
+      const auto d = self_differences({32, 64, 128, 256}, levels, opt);
+      const double order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, d);
+      std::vector<double> refl;
+      for (std::size_t n : {32, 64, 128})
+        refl.push_back(single_grid_difference(n, levels, opt));
+      const double refl_order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, refl);
+      MESSAGE(label(levels, opt) << ": self-differences " << d[0] << " " << d[1] << " " << d[2]
+                                 << ", order " << order << "; finest level minus single grid "
+                                 << refl[0] << " " << refl[1] << " " << refl[2] << ", order "
+                                 << refl_order);
+      CHECK(order > 3.8);
+      CHECK(refl_order > 4.0);
+    }
+}
+
+TEST_CASE("gauge pulse, RK4 dense output at the stage times: 4th order with two levels") {
+  // measured: 4.1 with two levels; with three levels the inconsistency with the stages shows at
+  // high resolution (pair orders 4.4, 4.3, 3.7, 2.2 from N = 32 to 1024), so none is asserted
+  for (bool sub : {true, false}) {
+    const StepperOptions opt{TimeInterpolation::dense_output, sub, 0.25};
+    const auto d = self_differences({32, 64, 128, 256}, 2, opt);
+    const double order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, d);
+    MESSAGE(label(2, opt) << ": order " << order);
+    CHECK(order > 3.8);
+  }
+}
+
+TEST_CASE("gauge pulse, quadratic time interpolation with buffers: converges, time error "
+          "limits the order") {
+  // Subcycled, three levels: pair orders measured 5.4, 3.8 (N = 64/128/256/512) and 2.8 from
+  // 512 to 1024 (2.2 at cfl 0.5): the O(dt^3) time interpolation takes over from the O(h^4)
+  // space error. Without the backward-made third time level at the start (initialise) they
+  // were 3.3 and 0.3 (0.6 to 1024): a non-converging error from the first step's linear
+  // interpolation, focused at r = 0.
+  {
+    const StepperOptions opt{TimeInterpolation::quadratic, true, 0.25};
+    const auto d = self_differences({64, 128, 256, 512}, 3, opt);
+    const auto o = pair_orders(d);
+    MESSAGE(label(3, opt) << ": pair orders " << o[0] << " " << o[1]);
+    CHECK(fit_order({1.0 / 64, 1.0 / 128, 1.0 / 256}, d) > 3.0);
+    CHECK(o[1] > 2.0);
+  }
+  // two levels, and without subcycling (all levels at the finest dt): 4th order
+  for (std::size_t levels : {2u, 3u})
+    for (bool sub : {true, false}) {
+      if (levels == 3 && sub)
         continue;
-      std::size_t l = 0; // the finest level whose exact region holds r
-      for (std::size_t k = 1; k < grids.size(); ++k)
-        if (r < grids[k].r()[grids[k].end_interior() - buffer_cells])
-          l = k;
-      const double a = interpolate_at_radius(grids[l], field(bo.state(l), grids[l], Var::alpha), r);
-      const double d = a - interpolate_at_radius(single, alpha_single, r);
-      sum += d * d;
-      ++samples;
+      const StepperOptions opt{TimeInterpolation::quadratic, sub, 0.25};
+      const auto d = self_differences({32, 64, 128, 256}, levels, opt);
+      std::vector<double> refl;
+      for (std::size_t n : {32, 64, 128})
+        refl.push_back(single_grid_difference(n, levels, opt));
+      const double order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, d);
+      const double refl_order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, refl);
+      MESSAGE(label(levels, opt) << ": self-differences " << d[0] << " " << d[1] << " " << d[2]
+                                 << ", order " << order << "; finest level minus single grid "
+                                 << refl[0] << " " << refl[1] << " " << refl[2] << ", order "
+                                 << refl_order);
+      CHECK(order > 3.8);
+      CHECK(refl_order > 4.0);
     }
-  }
-  // the coarse levels hold the restriction of the finer ones where those are exact
-  for (std::size_t l = 0; l + 1 < grids.size(); ++l)
-    for (std::size_t j = 0; j < restricted_cells(N); ++j) {
-      const double r = grids[l].r()[Grid::n_ghost + j];
-      CHECK(
-          field(bo.state(l), grids[l], Var::alpha)[Grid::n_ghost + j]
-          == doctest::Approx(interpolate_at_radius(
-                                 grids[l + 1], field(bo.state(l + 1), grids[l + 1], Var::alpha), r))
-                 .epsilon(1e-13));
-    }
-  return std::sqrt(sum / samples);
 }
 
-} // namespace
-
-TEST_CASE("a gauge pulse crossing two refinement boundaries converges to the single fine grid") {
-  // the pulse (speed sqrt(2)) leaves level 2 (r < 8) at t ~ 2 and level 1 (r < 16) at t ~ 8
-  std::vector<double> h{1.0, 0.5, 0.25};
-  struct Case {
-    const char* name;
-    TimeInterpolation time;
-    bool subcycling;
-    double min_order;
-  };
-  for (const Case& c : {Case{"dense, subcycling", TimeInterpolation::dense, true, 3.5},
-                        Case{"quadratic, subcycling", TimeInterpolation::quadratic, true, 1.8},
-                        Case{"no subcycling", TimeInterpolation::dense, false, 3.5}}) {
-    std::vector<double> err;
-    for (std::size_t N : {32, 64, 128})
-      err.push_back(pulse_difference(N, c.time, c.subcycling, 12.0));
-    const double p = fit_order(h, err);
-    MESSAGE(std::string(c.name) << ": RMS difference " << err[0] << ", " << err[1] << ", " << err[2]
-                                << "; order " << p);
-    CHECK(p >= c.min_order);
-  }
+TEST_CASE("fine boundary data are refilled before use: poisoned ghosts and buffers change "
+          "nothing, and a step leaves them prolongated from the parent") {
+  for (TimeInterpolation ti : {TimeInterpolation::rk_stages, TimeInterpolation::dense_output,
+                               TimeInterpolation::quadratic})
+    for (bool sub : {true, false}) {
+      const StepperOptions opt{ti, sub, 0.25};
+      Run a(rmax, 32, 3, opt), b(rmax, 32, 3, opt);
+      const long n = 32, begin = n - static_cast<long>(a.stepper->buffer());
+      const double dt = a.stepper->dt();
+      for (int k = 0; k < 6; ++k) {
+        // after a step: ghosts and buffer equal the parent's prolongation
+        for (std::size_t l = 1; l < 3; ++l) {
+          State p = a.u[l];
+          prolong(a.u[l - 1], a.layout.grid(l - 1), p, a.layout.grid(l), begin, n + 3);
+          CHECK(p == a.u[l]);
+        }
+        for (std::size_t l = 1; l < 3; ++l)
+          for (const auto& entry : registry) {
+            auto f = field(b.u[l], b.layout.grid(l), entry.var);
+            for (long j = begin; j < n + 3; ++j)
+              f[static_cast<std::size_t>(j) + Grid::n_ghost] =
+                  std::numeric_limits<double>::quiet_NaN();
+          }
+        a.step(dt);
+        b.step(dt);
+      }
+      CHECK(a.u == b.u);
+    }
 }
 
 // The stationary 1+log trumpet (equations document, Sec. 13) on four nested boxes: every
 // change of the fields is truncation error, so the RMS over t = 1 ... 10 M of the change in
 // r in [1, 10] M (across the refinement boundaries at 4 and 8 M, each r from the finest level
-// holding it exactly) must fall at 4th order.
-TEST_CASE("the 1+log trumpet on boxes stays stationary at 4th order through refinement "
+// that covers it) must fall at 4th order, with each time interpolation.
+TEST_CASE("the 1+log trumpet on four boxes stays stationary at 4th order through refinement "
           "boundaries") {
   InitialDataParams id;
   id.kind = InitialDataKind::onelog_trumpet;
-  std::vector<double> h, change;
-  for (std::size_t N : {64, 96, 128}) { // finest spacing M/16, M/24, M/32
-    const HierarchySpec spec{.levels = 4, .N = N, .rmax = 32.0};
-    const auto grids = make_levels(spec);
-    std::vector<GbssnRhs> rhs;
-    std::vector<State> u;
-    for (const auto& g : grids) {
-      rhs.emplace_back(g, RhsParams{});
-      u.push_back(initial_data(g, id));
-    }
-    const std::vector<State> initial = u;
-    std::vector<LevelRhs> level_rhs;
-    for (auto& r : rhs)
-      level_rhs.push_back(std::ref(r));
-    BergerOliger bo(spec, 0.25, u, level_rhs);
-    double sum = 0.0;
-    int samples = 0;
-    while (bo.time() < 10.0 - 1e-9) {
-      bo.step();
-      if (std::abs(bo.time() - std::round(bo.time())) > 1e-9)
-        continue;
-      for (std::size_t l = 0; l < grids.size(); ++l) {
-        const Grid& g = grids[l];
-        const double inner = l + 1 < grids.size()
-                                 ? grids[l + 1].r()[grids[l + 1].end_interior() - buffer_cells]
-                                 : 0.0;
-        for (std::size_t i = g.first_interior(); i < g.end_interior() - buffer_cells; ++i) {
-          const double r = g.r()[i];
-          if (r < std::max(1.0, inner) || r > 10.0)
-            continue;
-          for (Var v : {Var::alpha, Var::chi, Var::K}) {
-            const double d = field(bo.state(l), g, v)[i] - field(initial[l], g, v)[i];
-            sum += d * d;
-            ++samples;
+  for (TimeInterpolation time : {TimeInterpolation::rk_stages, TimeInterpolation::dense_output,
+                                 TimeInterpolation::quadratic}) {
+    std::vector<double> h, change;
+    for (std::size_t N : {64, 96, 128}) { // finest spacing M/16, M/24, M/32
+      const MeshLayout m(32.0, N, 4);
+      std::vector<std::unique_ptr<GbssnRhs>> rhs;
+      std::vector<LevelRhs> level_rhs;
+      std::vector<State> u;
+      for (std::size_t l = 0; l < m.levels(); ++l) {
+        rhs.push_back(std::make_unique<GbssnRhs>(m.grid(l), RhsParams{}));
+        level_rhs.push_back(std::ref(*rhs.back()));
+        u.push_back(initial_data(m.grid(l), id));
+      }
+      MeshStepper stepper(m, level_rhs, StepperOptions{time, true, 0.25});
+      stepper.initialise(u, 0.0);
+      const std::vector<State> initial = u;
+      double t = 0.0, sum = 0.0;
+      int samples = 0;
+      const double dt = stepper.dt();
+      for (int n = 1; t < 10.0 - 1e-9; ++n) {
+        stepper.step(u, t, dt);
+        t = n * dt;
+        if (std::abs(t - std::round(t)) > 1e-9)
+          continue;
+        for (std::size_t l = 0; l < m.levels(); ++l) {
+          const Grid& g = m.grid(l);
+          const double inner = l + 1 < m.levels() ? m.extent(l + 1) : 0.0;
+          for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+            const double r = g.r()[i];
+            if (r < std::max(1.0, inner) || r > 10.0)
+              continue;
+            for (Var v : {Var::alpha, Var::chi, Var::K}) {
+              const double d = field(u[l], g, v)[i] - field(initial[l], g, v)[i];
+              sum += d * d;
+              ++samples;
+            }
           }
         }
       }
+      h.push_back(m.spacing(m.levels() - 1));
+      change.push_back(std::sqrt(sum / samples));
     }
-    h.push_back(grids.back().dx());
-    change.push_back(std::sqrt(sum / samples));
+    const double p = fit_order(h, change);
+    MESSAGE("trumpet on 4 boxes (" << static_cast<int>(time) << "): RMS change over t = 1 ... 10 M "
+                                   << change[0] << ", " << change[1] << ", " << change[2]
+                                   << "; order " << p);
+    CHECK(p >= 3.5);
   }
-  const double p = fit_order(h, change);
-  MESSAGE("trumpet on 4 boxes, RMS change over t = 1 ... 10 M: "
-          << change[0] << ", " << change[1] << ", " << change[2] << "; order " << p);
-  CHECK(p >= 3.5);
 }

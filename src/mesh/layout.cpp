@@ -1,0 +1,42 @@
+#include "mesh/layout.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gbssn1d::mesh {
+
+MeshLayout::MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t levels) {
+  const auto bad = [](const std::string& flag, const std::string& value, const std::string& why) {
+    return std::invalid_argument(flag + " = " + value + " is invalid: " + why);
+  };
+  if (levels < 1)
+    throw bad("--levels", std::to_string(levels), "a hierarchy needs at least one level");
+  if (!(std::isfinite(map.rmax()) && map.rmax() > 0.0))
+    throw bad("--rmax", std::to_string(map.rmax()), "must be positive and finite");
+  if (n_cells < 1)
+    throw bad("--N", std::to_string(n_cells), "a level needs at least one cell");
+  if (levels > 1) {
+    if (map.kind() != GridKind::uniform)
+      throw bad("--grid", "sinh",
+                "box-in-box refinement needs the uniform map on every level (--grid boxes)");
+    if (n_cells % 2 != 0)
+      throw bad("--N", std::to_string(n_cells),
+                "box-in-box refinement needs an even number of cells (each coarse cell holds "
+                "two fine cells)");
+    if (n_cells < min_cells)
+      throw bad("--N", std::to_string(n_cells),
+                "box-in-box refinement needs at least " + std::to_string(min_cells)
+                    + " cells per level (the fine level's buffer of " + std::to_string(buffer_cells)
+                    + " cells, the restriction and prolongation stencils)");
+    // the levels' extents rmax / 2^l must stay representable and distinct
+    if (levels > 60)
+      throw bad("--levels", std::to_string(levels), "at most 60 levels");
+  }
+  grids_.reserve(levels);
+  grids_.emplace_back(map, n_cells);
+  for (std::size_t l = 1; l < levels; ++l)
+    grids_.emplace_back(RadialMap::uniform(std::ldexp(map.rmax(), -static_cast<int>(l))), n_cells);
+}
+
+} // namespace gbssn1d::mesh

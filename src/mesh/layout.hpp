@@ -1,0 +1,49 @@
+// The level layout of box-in-box mesh refinement (mesh/hierarchy.hpp has the design note).
+//
+// Level l = 0 ... L-1 covers 0 <= r <= rmax / 2^l with the same number N of cells, on the
+// uniform map r = (rmax / 2^l) x of the existing Grid (cell-centred, Grid::n_ghost ghosts on
+// each side): each coarse cell i holds exactly the two fine cells 2i and 2i+1, whose centres
+// lie at -1/4 and +1/4 of a coarse spacing from the coarse centre. One level is the single
+// grid, on any map (uniform or sinh).
+#pragma once
+
+#include "grid/grid.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace gbssn1d::mesh {
+
+/// Interior fine cells next to the ghosts that are refilled from the coarser level at every
+/// fine step when the stages are not filled one by one (TimeInterpolation::quadratic): the
+/// region the four RK4 stages contaminate from the outer ghosts, (stages - 1) x stencil radius
+/// = 3 x 3 = 9 cells; with the 3 ghosts that is stages x radius = 12 points, the buffer width of
+/// Schnetter, Hawley & Hawke 2004 (CQG 21:1465, Sec. 2.3).
+inline constexpr std::size_t buffer_cells = 3 * Grid::n_ghost;
+
+/// Fewest cells per level with more than one level: the buffer, the restriction stencil's reach
+/// (a coarse cell is restricted from fine cells 2i-2 ... 2i+3) and one restricted cell.
+inline constexpr std::size_t min_cells = 14;
+
+class MeshLayout {
+public:
+  /// `levels` levels of `n_cells` cells each on `map` (levels > 1: a uniform map, N even, at
+  /// least min_cells). Throws std::invalid_argument naming the parameter and why.
+  MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t levels);
+  /// L uniform levels on [0, rmax].
+  MeshLayout(double rmax, std::size_t n_cells, std::size_t levels)
+      : MeshLayout(RadialMap::uniform(rmax), n_cells, levels) {}
+
+  std::size_t levels() const { return grids_.size(); }
+  std::size_t n_cells() const { return grids_.front().n_interior(); }
+  const Grid& grid(std::size_t level) const { return grids_.at(level); }
+  /// r up to which level l is evolved: rmax / 2^l.
+  double extent(std::size_t level) const { return grids_.at(level).map().rmax(); }
+  /// The spacing of level l (uniform levels; for one sinh level its smallest spacing).
+  double spacing(std::size_t level) const { return grids_.at(level).min_spacing(); }
+
+private:
+  std::vector<Grid> grids_;
+};
+
+} // namespace gbssn1d::mesh
