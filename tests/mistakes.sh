@@ -35,7 +35,7 @@ mistakes=(
   "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"
   "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
   "sweep reruns reuse members of other inputs|src/study/sweep.cpp|      if (!diff.empty())|      if (false)"
-  "converge samples reused for other radii|src/study/converge.cpp|saved_key != key)|saved_key != saved_key)"
+  "converge samples reused for other radii|src/study/converge.cpp|    samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;"
 )
 uncaught=0
 caught=0

@@ -153,7 +153,7 @@ TEST_CASE("--out: a directory that cannot be created is refused") {
   fs::remove(file);
 }
 
-TEST_CASE("--tmax 0 writes the initial data; the written config repeats a run exactly") {
+TEST_CASE("--tmax 0 writes the initial data, the written config repeats a run exactly") {
   const fs::path a = scratch("run_a"), b = scratch("run_b");
   const std::string flags =
       "--id maximal-trumpet --grid sinh --N 120 --rmax 40 --dr-inner 0.05 --cfl 0.3 "
@@ -537,7 +537,7 @@ TEST_CASE("resume checks the checkpoint and every file before it changes any: co
 }
 
 TEST_CASE("sweep: a rerun with other inputs is refused, naming the member and the flags that "
-          "changed, before anything runs or changes; the same inputs continue the sweep") {
+          "changed, before anything runs or changes, the same inputs continue the sweep") {
   const fs::path dir = scratch("sweep_rerun");
   const std::string sweep = "sweep --progress-every 0 --sweep N=32,40 --grid uniform --rmax 20 ";
   REQUIRE(run(sweep + "--tmax 1 --out " + dir.string()).status == 0);

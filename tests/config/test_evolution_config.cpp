@@ -11,7 +11,7 @@ using gbssn1d::testing::validated;
 
 // Each flag gets a value that is neither its default nor another flag's, so that a flag
 // dropped or wired to the wrong field fails.
-TEST_CASE("evolution_config: each flag reaches its field; areal windows scale with M") {
+TEST_CASE("evolution_config: each flag reaches its field, areal windows scale with M") {
   Params p;
   p.grid = "uniform";
   p.N = 123;

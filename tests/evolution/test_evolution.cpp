@@ -210,7 +210,7 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   fs::remove_all(dir);
 }
 
-TEST_CASE("the chi floor raises chi below it and leaves the rest alone; 0 switches it off") {
+TEST_CASE("the chi floor raises chi below it and leaves the rest alone, 0 switches it off") {
   Params p;
   p.grid = "uniform";
   p.N = 16;

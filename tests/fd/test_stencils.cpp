@@ -58,7 +58,7 @@ TEST_CASE("first-derivative stencils are exact for quartics") {
   CHECK(std::abs(fd::advect(0.8, s.centre()) / h - 0.8 * exact) < 1e-12);
 }
 
-TEST_CASE("second-derivative stencil is exact for quintics; KO annihilates them") {
+TEST_CASE("second-derivative stencil is exact for quintics, KO annihilates them") {
   const std::array<double, 6> c{0.3, -1.2, 0.7, 2.1, -0.45, 0.9};
   const double h = 0.1, x0 = -0.21;
   const auto s = sample(c, x0, h);

@@ -353,7 +353,7 @@ TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24
   }
 }
 
-TEST_CASE("a wormhole shrink with eta > 1/M is warned about; eta = 1/M, trumpets and stretches "
+TEST_CASE("a wormhole shrink with eta > 1/M is warned about, eta = 1/M, trumpets and stretches "
           "are not") {
   Params p;
   p.id = "wormhole";
