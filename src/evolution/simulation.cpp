@@ -69,9 +69,16 @@ RhsParams rhs_params_with_finder(const EvolutionConfig& config) {
 } // namespace
 
 Simulation::Simulation(const EvolutionConfig& config)
-    : config_(config), grid_(std::make_unique<Grid>(make_grid(config.grid))),
-      rhs_(*grid_, rhs_params_with_finder(config)), diagnostic_rhs_(rhs_),
-      u_(initial_data(*grid_, config.initial_data)), schedule_(make_schedule(config, *grid_)) {}
+    : config_(config), layout_(make_grid(config.grid).map(), config.grid.N, 1),
+      rhs_(layout_.grid(0), rhs_params_with_finder(config)),
+      diagnostic_rhs_(rhs_), levels_u_{initial_data(layout_.grid(0), config.initial_data)},
+      schedule_(make_schedule(config, layout_.grid(0))),
+      stepper_(layout_, {[this](const State& u, State& dudt, double t) { rhs_(u, dudt, t); }},
+               mesh::StepperOptions{.cfl = config.cfl}) {
+  stepper_.after_step = [this](std::size_t, State& u) {
+    apply_chi_floor(u, grid(), config_.chi_floor);
+  };
+}
 
 template <class Search>
 auto Simulation::with_time(Search search) const {
@@ -83,7 +90,7 @@ auto Simulation::with_time(Search search) const {
 }
 
 HorizonSearch Simulation::horizons() const {
-  return with_time([&] { return find_horizons(u_, *grid_, config_.horizon_search.finder); });
+  return with_time([&] { return find_horizons(u_, grid(), config_.horizon_search.finder); });
 }
 
 std::optional<double> Simulation::horizon_radius() {
@@ -94,7 +101,7 @@ std::optional<double> Simulation::horizon_radius() {
     return hs.prescribed_h_AH(t_);
   if (config_.horizon_search.every_steps == 0 && config_.horizon_search.in_window(t_)) {
     const auto found = with_time([&] {
-      return find_horizon_near(u_, *grid_, config_.horizon_search.finder,
+      return find_horizon_near(u_, grid(), config_.horizon_search.finder,
                                rhs_.horizon_radius().value_or(hs.h));
     });
     return found ? std::optional<double>(found->r) : std::nullopt;
@@ -104,7 +111,7 @@ std::optional<double> Simulation::horizon_radius() {
 
 std::vector<double> Simulation::horizon_shift() {
   std::vector<double> beta_H;
-  horizon_shift_profile(u_, *grid_, rhs_.params().horizon_shift, horizon_radius(), beta_H, t_);
+  horizon_shift_profile(u_, grid(), rhs_.params().horizon_shift, horizon_radius(), beta_H, t_);
   return beta_H;
 }
 
@@ -115,7 +122,7 @@ void Simulation::update_held_horizon() {
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
   const auto found = with_time([&] {
-    return find_horizon_near(u_, *grid_, config_.horizon_search.finder,
+    return find_horizon_near(u_, grid(), config_.horizon_search.finder,
                              rhs_.horizon_radius().value_or(hs.h));
   });
   // Without a horizon the held value is dropped: beta_H = 0 until one is found.
@@ -139,7 +146,7 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d) {
 }
 
 SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& found) {
-  const Grid& g = *grid_;
+  const Grid& g = grid();
   const double inf = std::numeric_limits<double>::infinity();
   SeriesRow row;
   row.t = t_;
@@ -174,19 +181,17 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
 
 std::string Simulation::run_facts() const {
   return fmt::format("dt = {:.17g}\nsteps = {}\ndr-min = {:.17g}\n", schedule_.dt,
-                     schedule_.n_steps, grid_->min_spacing());
+                     schedule_.n_steps, grid().min_spacing());
 }
 
 void Simulation::step(double dt) {
-  stepper_.do_step(std::ref(rhs_), u_, t_, dt);
+  stepper_.step(levels_u_, t_, dt); // RK4, then the chi floor (stepper_.after_step)
   t_ += dt;
-  apply_chi_floor(u_, *grid_, config_.chi_floor);
 }
 
 void Simulation::step(double dt, const State& dudt) {
-  stepper_.do_step(std::ref(rhs_), u_, dudt, t_, dt);
+  stepper_.step(levels_u_, t_, dt, dudt);
   t_ += dt;
-  apply_chi_floor(u_, *grid_, config_.chi_floor);
 }
 
 void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
@@ -197,7 +202,7 @@ void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
 }
 
 void Simulation::check_finite() const {
-  const Grid& g = *grid_;
+  const Grid& g = grid();
   for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
     for (const auto& entry : registry)
       if (!std::isfinite(field(u_, g, entry.var)[i]))
@@ -291,7 +296,7 @@ void Simulation::run(Output* out) {
   };
   auto write = [&](bool series, bool profiles) {
     if (out && (series || profiles)) {
-      const DerivedProfiles d = derived_profiles(u_, *grid_);
+      const DerivedProfiles d = derived_profiles(u_, grid());
       if (series) {
         const HorizonSearch found = horizons();
         report_horizon(found.horizon());
@@ -299,7 +304,7 @@ void Simulation::run(Output* out) {
         out->write_horizons(t_, found);
       }
       if (profiles)
-        out->write_profiles(t_, u_, *grid_, d, horizon_shift());
+        out->write_profiles(t_, u_, grid(), d, horizon_shift());
     }
     if (series && on_series)
       on_series(*this);

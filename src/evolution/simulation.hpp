@@ -7,8 +7,7 @@
 #include "evolution/evolution_config.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
-
-#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include "mesh/hierarchy.hpp"
 
 #include <functional>
 #include <memory>
@@ -62,12 +61,15 @@ class Simulation {
 public:
   /// Builds the grid, the right-hand side and the initial data.
   explicit Simulation(const EvolutionConfig& config);
+  // The time stepping calls this object's right-hand side: not to be copied or moved.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
 
   const EvolutionConfig& config() const { return config_; }
-  const Grid& grid() const { return *grid_; }
+  const Grid& grid() const { return layout_.grid(0); }
   const GbssnRhs& rhs() const { return rhs_; }
-  State& state() { return u_; }
-  const State& state() const { return u_; }
+  State& state() { return levels_u_[0]; }
+  const State& state() const { return levels_u_[0]; }
   double time() const { return t_; }
   const Schedule& schedule() const { return schedule_; }
 
@@ -138,16 +140,18 @@ private:
   void report_horizon(const std::optional<MarginalSurface>& h);
 
   EvolutionConfig config_;
-  std::unique_ptr<Grid> grid_;
+  /// The grid as the one-level case of the refinement hierarchy (mesh/hierarchy.hpp).
+  mesh::MeshLayout layout_;
   GbssnRhs rhs_;
   GbssnRhs diagnostic_rhs_; ///< separate, so RHS evaluations of the evolution stay countable
   State dudt_;
-  State u_;
+  std::vector<State> levels_u_;                 ///< the state of each level (one: the single grid)
+  State& u_ = levels_u_[0];                     ///< the state of level 0
   State u_prev_, dudt_prev_, dudt_now_, u_out_; ///< for output between steps (run)
   double t_ = 0.0;
   Schedule schedule_;
-  boost::numeric::odeint::runge_kutta4<State> stepper_; ///< owns its stage buffers
-  long step_ = 0;                                       ///< steps taken
+  mesh::MeshStepper stepper_; ///< RK4 (Odeint's arithmetic), with the chi floor after each step
+  long step_ = 0;             ///< steps taken
   long k_series_ = 1, k_profiles_ = 1; ///< next output times k dt_series, k dt_profiles
   bool resumed_ = false;               ///< restore() was called: run() continues, no initial output
   std::uint64_t evaluations_before_rhs_ = 0; ///< RHS count before the current step's k1

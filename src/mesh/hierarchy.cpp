@@ -134,13 +134,19 @@ void MeshStepper::fill_quadratic(std::vector<State>& u, std::size_t l, double t)
 }
 
 void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
-                      const std::function<void(int, State&)>& fill) {
+                      const std::function<void(int, State&)>& fill, const State* given_k1) {
   // Classical RK4 with the arithmetic of Boost.Odeint's runge_kutta4 (explicit_generic_rk:
   // stage sums 1 x u + (a_ij dt) k_j in the same order, stage times t + c_i dt), so that one
   // level reproduces it bit for bit; `fill` sets the outer ghosts of each stage's input.
   Level& L = levels_[l];
   LevelRhs& f = rhs_[l];
-  State &k1 = L.k[0], &k2 = L.k[1], &k3 = L.k[2], &k4 = L.k[3], &x = L.tmp;
+  State &k2 = L.k[1], &k3 = L.k[2], &k4 = L.k[3], &x = L.tmp;
+  // a given first stage is read in place, and copied only where a finer level's boundary
+  // needs the coarse stages
+  const bool copy_k1 = given_k1 && l + 1 < layout_->levels();
+  if (copy_k1)
+    L.k[0] = *given_k1;
+  const State& k1 = given_k1 && !copy_k1 ? *given_k1 : L.k[0];
   const std::size_t n = u.size();
   x.resize(n);
   const double a21 = 0.5 * dt, a32 = 0.5 * dt, a31 = 0.0 * dt, a41 = 0.0 * dt, a42 = 0.0 * dt,
@@ -149,7 +155,8 @@ void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
                b4 = (1.0 / 6.0) * dt;
   if (fill)
     fill(0, u);
-  f(u, k1, t);
+  if (!given_k1)
+    f(u, L.k[0], t);
   for (std::size_t i = 0; i < n; ++i)
     x[i] = 1.0 * u[i] + a21 * k1[i];
   if (fill)
@@ -167,10 +174,11 @@ void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
   f(x, k4, t + 1.0 * dt);
   for (std::size_t i = 0; i < n; ++i)
     u[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
-  evaluations_[l] += 4;
+  evaluations_[l] += given_k1 ? 3 : 4;
 }
 
-void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double dt) {
+void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double dt,
+                          const State* k1) {
   const bool quadratic = options_.time == TimeInterpolation::quadratic;
   const bool has_child = l + 1 < layout_->levels();
   Level& L = levels_[l];
@@ -201,7 +209,7 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
                        {w[0], w[1], w[2], w[3], w[4]}, j_begin);
     };
   }
-  rk4(l, u[l], t, dt, fill);
+  rk4(l, u[l], t, dt, fill, k1);
   if (after_step)
     after_step(l, u[l]);
   if (has_child) {
@@ -216,9 +224,17 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
 }
 
 void MeshStepper::step(std::vector<State>& u, double t, double dt) {
+  step(u, t, dt, nullptr);
+}
+
+void MeshStepper::step(std::vector<State>& u, double t, double dt, const State& k1) {
+  step(u, t, dt, &k1);
+}
+
+void MeshStepper::step(std::vector<State>& u, double t, double dt, const State* k1) {
   if (u.size() != layout_->levels())
     throw std::invalid_argument("the mesh stepper needs one state per level");
-  advance(u, 0, t, dt);
+  advance(u, 0, t, dt, k1);
   // Every level is at t + dt now: its outer ghosts (and buffer) by prolongation, so that each
   // state is complete for output. This changes nothing in the evolution: the next step's first
   // fill at t + dt selects the same parent state with weights exactly 1 and 0.
