@@ -116,6 +116,20 @@ std::vector<std::string> warnings(const Params& p) {
         "then drifts and such runs went non-finite after 100-200 M; --eta 1 held them to 1000 M "
         "(docs/horizon-shift-study.md, Sec. 4)",
         num(p.rah0), num(p.eta.value_or(2.0 / p.M))));
+  // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
+  // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
+  // number measured there after it holds boundary reflections.
+  const double speed = std::sqrt(2.0);
+  const double window = std::max(p.norm_rmax.value_or(0.0), p.norm_Rmax * p.M);
+  const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
+  if (p.tmax > t_window && p.rmax > window)
+    w.push_back(fmt::format(
+        "--tmax {} lets the outer boundary (--rmax {}) reach the norm windows (r <= {} M) from "
+        "t ~ {:.0f} M and the horizon from t ~ {:.0f} M (at the gauge speed sqrt(2)): norms, "
+        "M_AH and r_AH after that include its reflections; for a clean late-time figure rerun "
+        "with --rmax > {:.0f}",
+        num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
+        std::ceil(window + speed * p.tmax)));
   return w;
 }
 

@@ -441,3 +441,20 @@ TEST_CASE("midstep-update searches inside the step: the shrink moves the horizon
   REQUIRE(sim.rhs().horizon_radius().has_value()); // searched during the run
   CHECK(r10 < r0 - 0.05);                          // towards h = 0.6
 }
+
+// The boundary's light cone (gauge speed sqrt(2)) reaches the norm windows (r <= 12 M) after
+// (rmax - 12) / sqrt(2): a run past that is warned about, once, with the rmax that avoids it.
+TEST_CASE("a tmax that lets the outer boundary reach the norm windows is warned about") {
+  Params p;
+  p.rmax = 100.0;
+  p.tmax = 60.0; // (100 - 12) / sqrt(2) = 62.2
+  resolve_defaults(p);
+  CHECK(warnings(p).empty());
+  p.tmax = 64.0;
+  const auto w = warnings(p);
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].find("t ~ 62 M") != std::string::npos);
+  CHECK(w[0].find("--rmax > 103") != std::string::npos); // 12 + sqrt(2) 64 = 102.5
+  p.rmax = 120.0;
+  CHECK(warnings(p).empty());
+}
