@@ -31,7 +31,7 @@ mistakes=(
   "boxes: restriction missing after the fine steps|src/mesh/hierarchy.cpp|    restrict_level(u, l + 1);\n  }\n}|  }\n}"
   "boxes: a wrong restriction weight|src/mesh/transfer.hpp|restrict_weights = lagrange_weights<6>(-2.0, 0.5);|restrict_weights = lagrange_weights<6>(-2.0, 0.55);"
   "boxes: prolongation stencil off by one|src/mesh/transfer.hpp|    const long first = plus ? i - 2 : i - 3;|    const long first = plus ? i - 3 : i - 3;"
-  "checkpoint written in place, not renamed over|src/evolution/checkpoint.cpp|const std::filesystem::path tmp = file.string() + \".tmp\";|const std::filesystem::path tmp = file;"
+  "checkpoint written in place, not renamed over|src/io/output.cpp|  const std::filesystem::path tmp = path.string() + \".tmp\";|  const std::filesystem::path tmp = path;"
   "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"
   "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
   "sweep reruns reuse members of other inputs|src/study/sweep.cpp|      if (!diff.empty())|      if (false)"

@@ -130,6 +130,28 @@ const std::map<std::string, std::string>& default_rules() {
   return rules;
 }
 
+/// A numeric option bound to `target` (int, double or an optional double) and read by the one
+/// number reader (config/numbers.hpp), not by CLI11's, which reads leading zeros as octal; a bad
+/// value is a ParamError naming the option's first name. --help shows the target's value (an
+/// unset optional shows none).
+template <class T>
+CLI::Option* number_option(CLI::App& app, const std::string& names, T& target,
+                           const std::string& help) {
+  using Number = std::conditional_t<std::is_same_v<T, int>, int, double>;
+  const std::string flag = names.substr(0, names.find(','));
+  CLI::Option* opt = app.add_option_function<std::string>(
+      names,
+      [&target, flag](const std::string& text) { target = parse_number<Number>(flag, text); },
+      help);
+  if constexpr (std::is_same_v<T, std::optional<double>>) {
+    if (target)
+      opt->default_str(fmt::format("{}", *target));
+  } else {
+    opt->default_str(fmt::format("{}", target));
+  }
+  return opt->type_name(std::is_same_v<Number, int> ? "INT" : "FLOAT");
+}
+
 } // namespace
 
 void add_options(CLI::App& app, Params& p) {
@@ -144,22 +166,7 @@ void add_options(CLI::App& app, Params& p) {
           } else if constexpr (std::is_same_v<T, std::string>) {
             opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
           } else {
-            // numbers go through the one reader (config/numbers.hpp), not CLI11's, which
-            // reads leading zeros as octal
-            using Number = std::conditional_t<std::is_same_v<T, int>, int, double>;
-            opt = app.add_option_function<std::string>(
-                flag,
-                [&p, member, flag](const std::string& text) {
-                  p.*member = parse_number<Number>(flag, text);
-                },
-                spec.help);
-            if constexpr (std::is_same_v<T, std::optional<double>>) {
-              if (p.*member)
-                opt->default_str(fmt::format("{}", *(p.*member)));
-            } else {
-              opt->default_str(fmt::format("{}", p.*member));
-            }
-            opt->type_name(std::is_same_v<Number, int> ? "INT" : "FLOAT");
+            opt = number_option(app, flag, p.*member, spec.help);
           }
           opt->group(spec.group);
           if (const auto rule = default_rules().find(spec.name); rule != default_rules().end())
@@ -168,22 +175,6 @@ void add_options(CLI::App& app, Params& p) {
         spec.member);
   }
 }
-
-namespace {
-
-template <class T>
-CLI::Option* number_option(CLI::App& app, const std::string& names, T& target,
-                           const std::string& help) {
-  const std::string flag = names.substr(0, names.find(','));
-  return app
-      .add_option_function<std::string>(
-          names, [&target, flag](const std::string& text) { target = parse_number<T>(flag, text); },
-          help)
-      ->default_str(fmt::format("{}", target))
-      ->type_name(std::is_same_v<T, int> ? "INT" : "FLOAT");
-}
-
-} // namespace
 
 CLI::Option* add_number_option(CLI::App& app, const std::string& names, int& target,
                                const std::string& help) {

@@ -261,33 +261,30 @@ void validate(const Params& p) {
                      "needs searches every n steps (--ah-every step or a number)");
 
   // The grid itself: a map whose cells are not finite, increasing and resolvable in double
-  // precision is refused here, before anything is written.
+  // precision is refused here, before anything is written, naming the flag that shapes it (the
+  // sinh grid's innermost width, the uniform grid's N).
+  const std::string grid_flag = p.grid == "sinh" ? "--dr-inner" : "--N";
+  const std::string grid_value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
   const Grid grid = [&] {
-    const std::string flag = p.grid == "sinh" ? "--dr-inner" : "--N";
-    const std::string value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
     try {
       return make_grid(grid_spec(p));
     } catch (const std::exception& e) {
-      throw ParamError(flag, value, fmt::format("gives no usable grid: {}", e.what()));
+      throw ParamError(grid_flag, grid_value, fmt::format("gives no usable grid: {}", e.what()));
     }
   }();
-  {
-    const std::string flag = p.grid == "sinh" ? "--dr-inner" : "--N";
-    const std::string value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
-    for (std::size_t i = 0; i < grid.n_total(); ++i)
-      if (!std::isfinite(grid.r()[i]) || !std::isfinite(grid.dr()[i])
-          || !std::isfinite(grid.inv_dr_dx()[i]) || !std::isfinite(grid.d2_fx_coeff()[i])
-          || (i > 0 && !(grid.r()[i] > grid.r()[i - 1])))
-        throw ParamError(flag, value,
-                         fmt::format("gives a grid whose radii are not finite and increasing "
-                                     "(cell {})",
-                                     i));
-    if (!(grid.min_spacing() >= min_spacing_over_rmax * p.rmax))
-      throw ParamError(flag, value,
-                       fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
-                                   "double precision cannot difference",
-                                   grid.min_spacing(), min_spacing_over_rmax));
-  }
+  for (std::size_t i = 0; i < grid.n_total(); ++i)
+    if (!std::isfinite(grid.r()[i]) || !std::isfinite(grid.dr()[i])
+        || !std::isfinite(grid.inv_dr_dx()[i]) || !std::isfinite(grid.d2_fx_coeff()[i])
+        || (i > 0 && !(grid.r()[i] > grid.r()[i - 1])))
+      throw ParamError(grid_flag, grid_value,
+                       fmt::format("gives a grid whose radii are not finite and increasing "
+                                   "(cell {})",
+                                   i));
+  if (!(grid.min_spacing() >= min_spacing_over_rmax * p.rmax))
+    throw ParamError(grid_flag, grid_value,
+                     fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
+                                 "double precision cannot difference",
+                                 grid.min_spacing(), min_spacing_over_rmax));
   if (p.ah_tol > ah_tol_over_spacing_max * grid.min_spacing())
     throw ParamError("--ah-tol", num(p.ah_tol),
                      fmt::format("must be at most {} x the smallest cell width ({:.3g}), so that "

@@ -3,13 +3,10 @@
 #include <fmt/format.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <string_view>
-#include <unistd.h>
 
 namespace gbssn1d {
 
@@ -96,24 +93,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   put_bytes(c.u.data(), c.u.size() * sizeof(double));
   put(fnv1a(bytes));
 
-  // a temporary file, flushed to disk, then renamed over the old checkpoint (atomic: a reader
-  // sees the old checkpoint or the new one, never a mixture)
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f)
-    throw OutputError(
-        fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size()
-                  && std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
-  std::fclose(f);
-  if (!ok) {
-    std::filesystem::remove(tmp);
-    throw OutputError(fmt::format("cannot write the checkpoint {}", tmp.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec)
-    throw OutputError(fmt::format("cannot replace {}: {}", file.string(), ec.message()));
+  write_file_atomically(file, bytes); // the old checkpoint or the new one, never a mixture
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& file) {

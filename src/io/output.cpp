@@ -5,8 +5,10 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <system_error>
+#include <unistd.h>
 
 #include <fstream>
 #include <iterator>
@@ -36,13 +38,20 @@ std::vector<std::string> horizon_columns() {
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+  // a temporary file, flushed to disk, then renamed over the old one: a reader (or a run killed
+  // meanwhile) sees the old file or the new one, never a mixture
   const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out)
-      throw OutputError(fmt::format("cannot write {}", tmp.string()));
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f)
+    throw OutputError(
+        fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0
+                  && ::fsync(::fileno(f)) == 0;
+  std::fclose(f);
+  if (!ok) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw OutputError(fmt::format("cannot write {}", tmp.string()));
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);

@@ -115,7 +115,8 @@ private:
   bool first_block_ = true;
 };
 
-/// Writes `text` to `path` whole or not at all (a temporary file, then renamed over it);
+/// Writes `text` to `path` whole or not at all (a temporary file, flushed to disk, then renamed
+/// over it; on failure the temporary file is removed);
 /// throws OutputError naming the file if it cannot.
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 

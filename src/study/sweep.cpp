@@ -248,6 +248,7 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
       m.args.push_back("--" + flag + "=" + value);
     m.args.push_back("--out=" + (fs::path(out) / m.name).string());
     m.args.push_back("--force");
+    m.inputs = member_inputs(m);
   }
   // Two members in one folder would share (and overwrite) their results, and two members of
   // one configuration would run the same thing twice and repeat it in the summary.
@@ -263,13 +264,7 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
       throw ParamError("--sweep", values_text(m),
                        fmt::format("gives the member folder '{}' of '{}' again", printable(m.name),
                                    values_text(*it->second)));
-    std::string config;
-    try { // members that do not parse are marked invalid when the sweep runs
-      config = config_text(parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}));
-    } catch (const std::exception&) {
-      continue;
-    }
-    if (const auto [it, fresh] = by_config.emplace(config, &m); !fresh)
+    if (const auto [it, fresh] = by_config.emplace(m.inputs, &m); !fresh)
       throw ParamError(
           "--sweep", values_text(m),
           fmt::format("runs the same configuration as '{}'", values_text(*it->second)));
@@ -348,7 +343,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       const std::string before = earlier_inputs(dir, m);
       if (before.empty())
         continue;
-      const auto diff = config_differences(before, member_inputs(m));
+      const auto diff = config_differences(before, m.inputs);
       if (!diff.empty())
         changed.push_back(fmt::format("{} ({})", m.name, fmt::join(diff, ", ")));
     }
@@ -400,7 +395,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
         return; // finished in an earlier run of the same sweep
       if (stop_signal() != 0)
         return; // interrupted: start nothing new (a rerun resumes)
-      write_file_atomically(dir / "logs" / (m.name + ".inputs"), member_inputs(m));
+      write_file_atomically(dir / "logs" / (m.name + ".inputs"), m.inputs);
       // Invalid values are caught here, before a subprocess is started.
       std::string status = "ok", reason = "-";
       double wall = 0.0;

@@ -21,6 +21,9 @@ struct SweepMember {
   std::string name; ///< directory name, e.g. rahA=0.25_rah0=0.6
   std::vector<std::pair<std::string, std::string>> values;
   std::vector<std::string> args; ///< evolve arguments, --out included
+  /// Its effective configuration (defaults resolved; its arguments if they do not parse): what
+  /// a rerun of the sweep is compared against.
+  std::string inputs;
 };
 
 /// The members of the product, in order (the last axis varies fastest).
