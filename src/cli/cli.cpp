@@ -96,7 +96,7 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.write_end(fmt::format("completed at t = {}", sim.time()));
   say("gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n", sim.time(), wall,
-      sim.schedule().n_steps, sim.rhs().evaluations());
+      sim.schedule().n_steps, sim.evaluations());
   return 0;
 }
 
@@ -143,7 +143,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
     throw ParamError("DIR", dir_name, e.what());
   }
   const std::string config = config_text(p);
-  if (!same_run(config, c.config))
+  if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty())
     throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),

@@ -25,7 +25,7 @@ namespace {
 struct ParamSpec {
   const char* name;
   std::variant<int Params::*, double Params::*, std::optional<double> Params::*,
-               std::string Params::*, bool Params::*>
+               std::optional<int> Params::*, std::string Params::*, bool Params::*>
       member;
   const char* group;
   const char* help;
@@ -35,7 +35,17 @@ const std::vector<ParamSpec>& param_specs() {
   static const std::vector<ParamSpec> specs{
       {"N", &Params::N, "Grid", "number of cells"},
       {"rmax", &Params::rmax, "Grid", "outer radius"},
-      {"grid", &Params::grid, "Grid", "radial grid: uniform | sinh"},
+      {"grid", &Params::grid, "Grid",
+       "radial grid: uniform | sinh | boxes (box-in-box mesh refinement: --levels boxes, box l "
+       "covering r <= rmax/2^l with --N cells, Berger-Oliger subcycling)"},
+      {"levels", &Params::levels, "Grid",
+       "--grid boxes: number of boxes (refinement levels); default 1 + floor(log2(rmax/4M))"},
+      {"time-interp", &Params::time_interp, "Grid",
+       "--grid boxes: a fine box's boundary in time: rk-stages (RK4 stage values of the coarse "
+       "step, 4th order) | dense (RK4 dense output) | quadratic (three coarse time levels with "
+       "buffer zones, as Carpet and BAM)"},
+      {"no-subcycling", &Params::no_subcycling, "Grid",
+       "--grid boxes: every box steps with the finest box's dt (no Berger-Oliger subcycling)"},
       {"dr-inner", &Params::dr_inner, "Grid",
        "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
        "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)"},
@@ -115,7 +125,8 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
           return fmt::format("\"{}\"", p.*member);
         else if constexpr (std::is_same_v<T, bool>)
           return p.*member ? "true" : "false";
-        else if constexpr (std::is_same_v<T, std::optional<double>>)
+        else if constexpr (std::is_same_v<
+                               T, std::optional<double>> || std::is_same_v<T, std::optional<int>>)
           return p.*member ? std::optional(fmt::format("{}", *(p.*member))) : std::nullopt;
         else
           return fmt::format("{}", p.*member); // shortest representation that round-trips
@@ -125,8 +136,10 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
 
 /// The rule a flag's unset value stands for, shown by --help as its default.
 const std::map<std::string, std::string>& default_rules() {
-  static const std::map<std::string, std::string> rules{
-      {"eta", "2/M"}, {"norm-rmax", "min(10 M, rmax/2)"}, {"ah-tmax", "none"}};
+  static const std::map<std::string, std::string> rules{{"eta", "2/M"},
+                                                        {"norm-rmax", "min(10 M, rmax/2)"},
+                                                        {"ah-tmax", "none"},
+                                                        {"levels", "1 + floor(log2(rmax/4M))"}};
   return rules;
 }
 
@@ -137,13 +150,14 @@ const std::map<std::string, std::string>& default_rules() {
 template <class T>
 CLI::Option* number_option(CLI::App& app, const std::string& names, T& target,
                            const std::string& help) {
-  using Number = std::conditional_t<std::is_same_v<T, int>, int, double>;
+  using Number = std::conditional_t<std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>,
+                                    int, double>;
   const std::string flag = names.substr(0, names.find(','));
   CLI::Option* opt = app.add_option_function<std::string>(
       names,
       [&target, flag](const std::string& text) { target = parse_number<Number>(flag, text); },
       help);
-  if constexpr (std::is_same_v<T, std::optional<double>>) {
+  if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>>) {
     if (target)
       opt->default_str(fmt::format("{}", *target));
   } else {
@@ -273,10 +287,14 @@ std::vector<std::string> config_differences(const std::string& old_text,
     return kv;
   };
   const auto a = values(old_text), b = values(new_text);
+  // a key missing from a text written before its parameter existed stands for its default
+  static const auto defaults = values(config_text(Params{}));
   std::vector<std::string> diff;
   auto value_of = [](const std::map<std::string, std::string>& kv, const std::string& key) {
-    const auto it = kv.find(key);
-    return it == kv.end() ? std::string("(unset)") : it->second;
+    if (const auto it = kv.find(key); it != kv.end())
+      return it->second;
+    const auto d = defaults.find(key);
+    return d == defaults.end() ? std::string("(unset)") : d->second;
   };
   std::set<std::string> keys;
   for (const auto* kv : {&a, &b})

@@ -31,7 +31,8 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& 
 std::string config_text(const Params& p);
 
 /// The parameters whose values differ between two configuration texts (config.toml), as
-/// "key: old -> new" (a key missing on one side reads "(unset)"); '#' lines and the keys in
+/// "key: old -> new"; a key missing on one side stands for its default (a text written before
+/// that parameter existed), or reads "(unset)" if it has none; '#' lines and the keys in
 /// `ignored` are not compared.
 std::vector<std::string>
 config_differences(const std::string& old_text, const std::string& new_text,

@@ -2,6 +2,7 @@
 
 #include "config/numbers.hpp"
 #include "io/table.hpp"
+#include "mesh/hierarchy.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <fmt/format.h>
@@ -56,6 +57,10 @@ const Choices<ShiftProfile> profile_choices{{"auto", ShiftProfile::automatic},
 const Choices<ShiftNormal> normal_choices{{"conformal", ShiftNormal::conformal},
                                           {"unit", ShiftNormal::unit},
                                           {"smooth", ShiftNormal::smooth}};
+const Choices<mesh::TimeInterpolation> time_interp_choices{
+    {"rk-stages", mesh::TimeInterpolation::rk_stages},
+    {"dense", mesh::TimeInterpolation::dense_output},
+    {"quadratic", mesh::TimeInterpolation::quadratic}};
 const Choices<AdvectionStencil> stencil_choices{{"upwind-gd", AdvectionStencil::upwind_gd},
                                                 {"upwind-full", AdvectionStencil::upwind_full},
                                                 {"centred", AdvectionStencil::centred}};
@@ -97,7 +102,43 @@ std::string printable(const std::string& s) {
   return out;
 }
 
+int levels_rule(double rmax, double M) {
+  const double levels = 1.0 + std::floor(std::log2(rmax / (4.0 * M)));
+  return std::isfinite(levels) ? static_cast<int>(std::clamp(levels, 2.0, 30.0)) : 2;
+}
+
+double dt_max_of_damping(double eta) {
+  return eta > 0.0 ? 1.0 / eta : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+
+/// Most levels accepted: with 30 the finest box is 1e-9 of the outer one.
+constexpr int levels_max = 30;
+
+/// The refinement hierarchy of validated box parameters (one level for the single grids).
+mesh::MeshLayout mesh_layout(const Params& p) {
+  if (p.grid != "boxes")
+    return mesh::MeshLayout(make_grid(grid_spec(p)).map(), static_cast<std::size_t>(p.N), 1);
+  return mesh::MeshLayout(p.rmax, static_cast<std::size_t>(p.N),
+                          static_cast<std::size_t>(p.levels.value_or(1)));
+}
+
+mesh::StepperOptions stepper_options(const Params& p) {
+  mesh::StepperOptions o;
+  o.time = choice("--time-interp", p.time_interp, time_interp_choices);
+  o.subcycling = !p.no_subcycling;
+  o.cfl = p.cfl;
+  if (p.grid == "boxes")
+    o.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
+  return o;
+}
+
+} // namespace
+
 void resolve_defaults(Params& p) {
+  if (p.grid == "boxes" && !p.levels)
+    p.levels = levels_rule(p.rmax, p.M);
   if (!p.eta)
     p.eta = 2.0 / p.M; // M and rmax are validated afterwards: a bad M gives a non-finite eta
   if (!p.norm_rmax)
@@ -130,6 +171,19 @@ std::vector<std::string> warnings(const Params& p) {
         "with --rmax > {:.0f}",
         num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
         std::ceil(window + speed * p.tmax)));
+  // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
+  // the horizon shift see the finest spacing.
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.N > 0) {
+    const double finest_extent = std::ldexp(p.rmax, -(*p.levels - 1));
+    const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
+    const double horizon = std::max(standard_horizon_radius * p.M, p.rahA != 0.0 ? p.rah0 : 0.0);
+    if (horizon > trusted)
+      w.push_back(fmt::format(
+          "the horizon (r ~ {} M{}) lies outside the finest box's inner part (r <= {:.4g} M of "
+          "its {:.4g} M with --N {}): it will be found on a coarser box; use fewer --levels or "
+          "a larger --N",
+          num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
+  }
   return w;
 }
 
@@ -155,8 +209,28 @@ void validate(const Params& p) {
         "--rmax", num(p.rmax),
         fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
   }
-  if (p.grid != "uniform" && p.grid != "sinh")
-    throw ParamError("--grid", p.grid, "must be 'uniform' or 'sinh'");
+  if (p.grid != "uniform" && p.grid != "sinh" && p.grid != "boxes")
+    throw ParamError("--grid", p.grid, "must be 'uniform', 'sinh' or 'boxes'");
+  (void)choice("--time-interp", p.time_interp, time_interp_choices);
+  if (p.grid != "boxes") {
+    // the refinement flags mean nothing on a single grid: refused rather than ignored
+    if (p.levels)
+      throw ParamError("--levels", std::to_string(*p.levels), "needs --grid boxes");
+    if (p.time_interp != Params{}.time_interp)
+      throw ParamError("--time-interp", p.time_interp, "needs --grid boxes");
+    if (p.no_subcycling)
+      throw ParamError("--no-subcycling", "needs --grid boxes");
+  } else {
+    if (!p.levels)
+      throw std::logic_error("validate() before resolve_defaults()");
+    if (*p.levels < 1 || *p.levels > levels_max)
+      throw ParamError("--levels", std::to_string(*p.levels),
+                       fmt::format("must lie in 1 ... {}", levels_max));
+    if (*p.levels > 1 && p.N % 2 != 0)
+      throw ParamError("--N", std::to_string(p.N),
+                       "must be even with --grid boxes: each coarse cell holds two fine cells, "
+                       "so that a fine box's edge is a coarse cell's face");
+  }
   if (p.grid == "sinh") {
     require_positive("--dr-inner", p.dr_inner);
     const double needed = p.dr_inner * sinh_reference_N;
@@ -263,23 +337,30 @@ void validate(const Params& p) {
   // The grid itself: a map whose cells are not finite, increasing and resolvable in double
   // precision is refused here, before anything is written, naming the flag that shapes it (the
   // sinh grid's innermost width, the uniform grid's N).
-  const std::string grid_flag = p.grid == "sinh" ? "--dr-inner" : "--N";
-  const std::string grid_value = p.grid == "sinh" ? num(p.dr_inner) : std::to_string(p.N);
-  const Grid grid = [&] {
+  const std::string grid_flag = p.grid == "sinh"    ? "--dr-inner"
+                                : p.grid == "boxes" ? "--levels"
+                                                    : "--N";
+  const std::string grid_value = p.grid == "sinh"    ? num(p.dr_inner)
+                                 : p.grid == "boxes" ? std::to_string(p.levels.value_or(1))
+                                                     : std::to_string(p.N);
+  const mesh::MeshLayout layout = [&] {
     try {
-      return make_grid(grid_spec(p));
+      return mesh_layout(p);
     } catch (const std::exception& e) {
       throw ParamError(grid_flag, grid_value, fmt::format("gives no usable grid: {}", e.what()));
     }
   }();
-  for (std::size_t i = 0; i < grid.n_total(); ++i)
-    if (!std::isfinite(grid.r()[i]) || !std::isfinite(grid.dr()[i])
-        || !std::isfinite(grid.inv_dr_dx()[i]) || !std::isfinite(grid.d2_fx_coeff()[i])
-        || (i > 0 && !(grid.r()[i] > grid.r()[i - 1])))
-      throw ParamError(grid_flag, grid_value,
-                       fmt::format("gives a grid whose radii are not finite and increasing "
-                                   "(cell {})",
-                                   i));
+  const Grid& grid = layout.grid(layout.levels() - 1); // the finest
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    const Grid& g = layout.grid(l);
+    for (std::size_t i = 0; i < g.n_total(); ++i)
+      if (!std::isfinite(g.r()[i]) || !std::isfinite(g.dr()[i]) || !std::isfinite(g.inv_dr_dx()[i])
+          || !std::isfinite(g.d2_fx_coeff()[i]) || (i > 0 && !(g.r()[i] > g.r()[i - 1])))
+        throw ParamError(grid_flag, grid_value,
+                         fmt::format("gives a grid whose radii are not finite and increasing "
+                                     "(cell {})",
+                                     i));
+  }
   if (!(grid.min_spacing() >= min_spacing_over_rmax * p.rmax))
     throw ParamError(grid_flag, grid_value,
                      fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
@@ -291,7 +372,8 @@ void validate(const Params& p) {
                                  "the horizon is found well within one cell",
                                  ah_tol_over_spacing_max, grid.min_spacing()));
   // The Gamma-driver's damping term limits the step independently of the spacing.
-  const double dt = time_step(p.cfl, grid);
+  const double dt = mesh::hierarchy_dt(layout, stepper_options(p)); // the whole step
+  const double dt_finest = time_step(p.cfl, grid);
   if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
     throw ParamError("--checkpoint-every", num(p.checkpoint_every),
                      fmt::format("is shorter than the time step dt = {:.6g} (checkpoints are "
@@ -313,11 +395,14 @@ void validate(const Params& p) {
         "--dt-profiles", num(p.dt_profiles),
         fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
                     p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
-  if (eta * dt > eta_dt_max)
+  if (eta * dt_finest > eta_dt_max)
     throw ParamError("--cfl", num(p.cfl),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
-                                 eta, eta * dt, eta_dt_max));
+                                 eta, eta * dt_finest, eta_dt_max));
+  if (p.grid == "boxes" && p.rah_variant == "midstep-update")
+    throw ParamError("--rah-variant", p.rah_variant,
+                     "is a single-grid study variant (its searches count one grid's RHS calls)");
 }
 
 void validate_output_dir(const Params& p) {
@@ -352,7 +437,7 @@ void create_output_dir(const std::string& flag, const std::filesystem::path& dir
 
 GridSpec grid_spec(const Params& p) {
   GridSpec spec;
-  spec.kind = p.grid == "uniform" ? GridKind::uniform : GridKind::sinh;
+  spec.kind = p.grid == "sinh" ? GridKind::sinh : GridKind::uniform; // boxes: uniform levels
   spec.N = static_cast<std::size_t>(p.N);
   spec.rmax = p.rmax;
   spec.dr_inner = p.dr_inner;
@@ -362,6 +447,13 @@ GridSpec grid_spec(const Params& p) {
 EvolutionConfig evolution_config(const Params& p) {
   EvolutionConfig c;
   c.grid = grid_spec(p);
+  if (p.grid == "boxes") {
+    const mesh::StepperOptions o = stepper_options(p);
+    c.refinement.levels = static_cast<std::size_t>(p.levels.value());
+    c.refinement.time = o.time;
+    c.refinement.subcycling = o.subcycling;
+    c.refinement.dt_max = o.dt_max;
+  }
   c.initial_data = initial_data_params(p);
   c.rhs = rhs_params(p);
   c.cfl = p.cfl;

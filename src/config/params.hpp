@@ -27,7 +27,11 @@ struct Params {
   // grid
   int N = static_cast<int>(evolution_defaults().grid.N);
   double rmax = evolution_defaults().grid.rmax;
-  std::string grid = "sinh"; ///< uniform | sinh
+  std::string grid = "sinh"; ///< uniform | sinh | boxes
+  /// --grid boxes: refinement levels; unset: levels_rule (resolve_defaults)
+  std::optional<int> levels;
+  std::string time_interp = "rk-stages"; ///< boxes: rk-stages | dense | quadratic
+  bool no_subcycling = false;            ///< boxes: every level steps with the finest dt
   /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
   double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data
@@ -101,8 +105,12 @@ private:
 /// Non-printable bytes of a text as \xNN, for messages that quote user input.
 std::string printable(const std::string& s);
 
-/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax); after it, eta and
-/// norm_rmax hold values.
+/// The default number of boxes: the most levels whose finest box still reaches r = 4 M,
+/// 1 + floor(log2(rmax / 4M)), at least 2 (rmax 128: 6 levels; rmax 1024: 9).
+int levels_rule(double rmax, double M);
+
+/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax, levels of boxes);
+/// after it, eta and norm_rmax hold values, and levels does for --grid boxes.
 void resolve_defaults(Params& p);
 
 /// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.
@@ -131,6 +139,11 @@ RhsParams rhs_params(const Params& p);
 /// ParamError (--rah-hAH-file) if the file cannot be read, its times are not equally spaced,
 /// it has no horizon at some time, or it ends before `t_end`.
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end);
+
+/// The largest step a level takes: the stability limit of the Gamma-driver's damping term,
+/// eta dt <= 1 (RK4's limit for -eta B is 2.78; Schnetter 2010, CQG 27:167001), which coarse
+/// boxes would otherwise exceed (their CFL step grows with their spacing, eta's limit does not).
+double dt_max_of_damping(double eta);
 
 /// How often h_AH is searched for: at every RK substage (0), or every n >= 1 full steps.
 long ah_every_steps(const Params& p);

@@ -12,10 +12,12 @@ namespace gbssn1d {
 
 namespace {
 
-// Format 2: the magic line (with the format's number), the fields below in order (native byte
+// Format 3: the magic line (with the format's number), the fields below in order (native byte
 // order, as the file never leaves the machine type that wrote it), then the FNV-1a 64-bit hash
-// of every byte before it. Format 1 had no hash and is refused by name.
-constexpr std::string_view magic = "gbssn1d checkpoint 2\n";
+// of every byte before it. Format 2 is format 3 without the box levels after level 0's state
+// (it is read as a single grid's); format 1 had no hash and is refused by name.
+constexpr std::string_view magic = "gbssn1d checkpoint 3\n";
+constexpr std::string_view magic_2 = "gbssn1d checkpoint 2\n";
 constexpr std::string_view magic_prefix = "gbssn1d checkpoint ";
 /// The largest checkpoint read (16 GiB: a grid of 2e8 points); anything larger is not one.
 constexpr std::uintmax_t max_file_bytes = std::uintmax_t{1} << 34;
@@ -55,19 +57,6 @@ private:
 
 } // namespace
 
-bool same_run(const std::string& config_a, const std::string& config_b) {
-  auto kept = [](const std::string& config) {
-    std::istringstream in(config);
-    std::string text;
-    for (std::string line; std::getline(in, line);)
-      if (line.rfind("tmax = ", 0) != 0 && line.rfind("out = ", 0) != 0
-          && line.rfind("force = ", 0) != 0)
-        text += line + "\n";
-    return text;
-  };
-  return kept(config_a) == kept(config_b);
-}
-
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   std::string bytes(magic);
   auto put_bytes = [&](const void* p, std::size_t n) {
@@ -89,8 +78,30 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   for (std::uint64_t v : {c.marks.series, c.marks.profiles, c.marks.horizons, c.marks.series_header,
                           c.marks.profiles_header, c.marks.horizons_header})
     put(v);
-  put(std::uint64_t{c.u.size()});
-  put_bytes(c.u.data(), c.u.size() * sizeof(double));
+  auto put_state = [&](const State& u) {
+    put(std::uint64_t{u.size()});
+    put_bytes(u.data(), u.size() * sizeof(double));
+  };
+  auto put_optional = [&](const std::optional<double>& v) {
+    put(std::uint8_t{v.has_value()});
+    put(v.value_or(0.0));
+  };
+  put_state(c.u);
+  put(std::uint64_t{c.finer.size()});
+  for (const State& u : c.finer)
+    put_state(u);
+  put(std::uint64_t{c.level_h_AH.size()});
+  for (const auto& h : c.level_h_AH)
+    put_optional(h);
+  put_optional(c.shared_h_AH);
+  put(std::uint64_t{c.history.size()});
+  for (const auto& levels : c.history) {
+    put(std::uint64_t{levels.size()});
+    for (const auto& [t, u] : levels) {
+      put(t);
+      put_state(u);
+    }
+  }
   put(fnv1a(bytes));
 
   write_file_atomically(file, bytes); // the old checkpoint or the new one, never a mixture
@@ -113,10 +124,11 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
       throw CheckpointError(fmt::format("cannot read {}", file.string()));
   }
   const std::string_view all(bytes);
-  if (all.substr(0, magic.size()) != magic) {
+  const bool format_2 = all.substr(0, magic_2.size()) == magic_2;
+  if (all.substr(0, magic.size()) != magic && !format_2) {
     if (all.substr(0, magic_prefix.size()) == magic_prefix)
       throw CheckpointError(fmt::format("{} was written in another checkpoint format ({}); this "
-                                        "version reads format 2",
+                                        "version reads formats 2 and 3",
                                         file.string(),
                                         all.substr(0, all.find('\n')).substr(magic_prefix.size())));
     throw CheckpointError(fmt::format("{} is not a gbssn1d checkpoint", file.string()));
@@ -131,7 +143,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
         "{} is corrupt: its checksum does not match (truncated, or changed since written)",
         file.string()));
 
-  Reader r(body.substr(magic.size()), file);
+  Reader r(body.substr(magic.size()), file); // both magic lines have the same length
   Checkpoint c;
   const auto n_config = r.get<std::uint64_t>();
   if (n_config > r.left())
@@ -160,11 +172,44 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
        {&c.marks.series, &c.marks.profiles, &c.marks.horizons, &c.marks.series_header,
         &c.marks.profiles_header, &c.marks.horizons_header})
     *v = r.get<std::uint64_t>();
-  const auto n = r.get<std::uint64_t>();
-  if (n != r.left() / sizeof(double) || r.left() % sizeof(double) != 0)
-    throw CheckpointError(fmt::format("{} is corrupt (its value count)", file.string()));
-  c.u.resize(n);
-  r.get_bytes(c.u.data(), n * sizeof(double));
+  auto get_state = [&](State& u) {
+    const auto n = r.get<std::uint64_t>();
+    if (n > r.left() / sizeof(double))
+      throw CheckpointError(fmt::format("{} is corrupt (its value count)", file.string()));
+    u.resize(n);
+    r.get_bytes(u.data(), n * sizeof(double));
+  };
+  auto get_count = [&](std::size_t least_bytes_each) {
+    const auto n = r.get<std::uint64_t>();
+    if (n > r.left() / least_bytes_each)
+      throw CheckpointError(fmt::format("{} is corrupt (a count)", file.string()));
+    return static_cast<std::size_t>(n);
+  };
+  auto get_optional = [&](const char* what) {
+    const bool has = flag(what);
+    const double v = r.get<double>();
+    return has ? std::optional<double>(v) : std::nullopt;
+  };
+  get_state(c.u);
+  if (!format_2) {
+    c.finer.resize(get_count(sizeof(std::uint64_t)));
+    for (State& u : c.finer)
+      get_state(u);
+    c.level_h_AH.resize(get_count(9));
+    for (auto& h : c.level_h_AH)
+      h = get_optional("level h_AH flag");
+    c.shared_h_AH = get_optional("shared h_AH flag");
+    c.history.resize(get_count(sizeof(std::uint64_t)));
+    for (auto& levels : c.history) {
+      levels.resize(get_count(2 * sizeof(std::uint64_t)));
+      for (auto& level : levels) {
+        level.t = r.get<double>();
+        get_state(level.u);
+      }
+    }
+  }
+  if (r.left() != 0)
+    throw CheckpointError(fmt::format("{} is corrupt (bytes after its last field)", file.string()));
   return c;
 }
 

@@ -5,12 +5,14 @@
 
 #include "gbssn/state.hpp"
 #include "io/output.hpp"
+#include "mesh/hierarchy.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -23,7 +25,13 @@ struct Checkpoint {
   bool had_horizon = false, reported = false;
   std::uint64_t evaluations = 0; ///< RHS evaluations so far
   OutputMarks marks;
-  State u;
+  State u; ///< level 0's state (the single grid's)
+  // Box-in-box levels (empty for a single grid), format 3:
+  std::vector<State> finer;                      ///< the states of levels 1 ... L-1
+  std::vector<std::optional<double>> level_h_AH; ///< h_AH held by each level's RHS, 0 ... L-1
+  std::optional<double> shared_h_AH;             ///< the horizon radius all levels share
+  /// each level's stored time levels (quadratic time interpolation), 0 ... L-1
+  std::vector<std::vector<mesh::MeshStepper::TimeLevel>> history;
 };
 
 /// A checkpoint file that cannot be read, or belongs to another run.
@@ -31,10 +39,6 @@ class CheckpointError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
-
-/// Whether two configuration texts (config.toml) describe the same run up to what a resumed run
-/// may change: tmax, out and force.
-bool same_run(const std::string& config_a, const std::string& config_b);
 
 /// Writes `c` to `file` atomically: a temporary file, flushed to disk, then renamed over it.
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);

@@ -8,6 +8,7 @@
 #include "grid/grid.hpp"
 #include "horizon/apparent_horizon.hpp"
 #include "initial_data/initial_data.hpp"
+#include "mesh/time_interpolation.hpp"
 
 #include <limits>
 
@@ -29,8 +30,21 @@ struct HorizonSearchSettings {
   bool in_window(double t) const { return t >= t_min && t <= t_max; }
 };
 
+/// Box-in-box refinement (mesh/hierarchy.hpp); with one level the grid is a single grid.
+struct RefinementSettings {
+  /// The horizon is searched for on the finest level on which it lies at least this many
+  /// cells inside the outer edge: the finder's window of 8 cells around its seed, the 6-point
+  /// interpolation's reach and one cell to spare.
+  static constexpr double horizon_margin_cells = 12.0;
+  std::size_t levels = 1; ///< level l covers r <= rmax / 2^l with N cells (uniform)
+  mesh::TimeInterpolation time = mesh::TimeInterpolation::rk_stages;
+  bool subcycling = true; ///< false: every level steps with the finest dt
+  double dt_max = std::numeric_limits<double>::infinity(); ///< no level steps further
+};
+
 struct EvolutionConfig {
   GridSpec grid;
+  RefinementSettings refinement;
   InitialDataParams initial_data;
   RhsParams rhs; ///< equations, gauge, dissipation, horizon shift (its `locate` is set by the run)
   double cfl = 0.25;       ///< dt = cfl x smallest spacing
@@ -43,7 +57,7 @@ struct EvolutionConfig {
   HorizonSearchSettings horizon_search;
 };
 
-/// The RK4 time step on `grid`: cfl x the smallest spacing.
+/// The RK4 time step on a single `grid`: cfl x the smallest spacing.
 inline double time_step(double cfl, const Grid& grid) {
   return cfl * grid.min_spacing();
 }

@@ -2,6 +2,7 @@
 
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
+#include "grid/interpolation.hpp"
 
 #include <fmt/format.h>
 
@@ -31,9 +32,9 @@ Interrupted::Interrupted(int signal_, double t_)
     : std::runtime_error(fmt::format("interrupted by {} at t = {:.6g}", signal_name(signal_), t_)),
       signal(signal_), t(t_) {}
 
-Schedule make_schedule(const EvolutionConfig& config, const Grid& grid) {
+Schedule make_schedule(const EvolutionConfig& config, double dt) {
   Schedule s;
-  s.dt = time_step(config.cfl, grid);
+  s.dt = dt;
   s.n_steps = static_cast<long>(std::ceil(config.tmax / s.dt - 1e-9));
   return s;
 }
@@ -48,36 +49,123 @@ void hermite_interpolate(const State& u0, const State& f0, const State& u1, cons
     out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
 }
 
+mesh::MeshLayout make_layout(const EvolutionConfig& config) {
+  if (config.refinement.levels > 1)
+    return mesh::MeshLayout(config.grid.rmax, config.grid.N, config.refinement.levels);
+  return mesh::MeshLayout(make_grid(config.grid).map(), config.grid.N, 1);
+}
+
+mesh::StepperOptions stepper_options(const EvolutionConfig& config) {
+  return mesh::StepperOptions{.time = config.refinement.time,
+                              .subcycling = config.refinement.subcycling,
+                              .cfl = config.cfl,
+                              .dt_max = config.refinement.dt_max};
+}
+
 namespace {
 
-/// The configuration's RHS with the horizon finder as its locator (substage searches).
-RhsParams rhs_params_with_finder(const EvolutionConfig& config) {
-  RhsParams r = config.rhs;
+/// One RHS per level; substage searches run on horizon_level's states and are shared through
+/// `shared` (the other levels read it), so that every level uses the one h_AH.
+std::vector<GbssnRhs> level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
+                                std::function<std::size_t()> horizon_level,
+                                std::optional<double>& shared) {
+  std::vector<GbssnRhs> rhs;
   const HorizonFinderParams finder = config.horizon_search.finder;
-  r.horizon_shift.locate = [finder](const State& u, const Grid& grid, double seed,
-                                    double t) -> std::optional<double> {
-    try {
-      const auto found = find_horizon_near(u, grid, finder, seed);
-      return found ? std::optional<double>(found->r) : std::nullopt;
-    } catch (const HorizonFinderError& e) {
-      throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
-    }
-  };
-  return r;
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    RhsParams r = config.rhs;
+    r.horizon_shift.locate = [finder, l, horizon_level,
+                              &shared](const State& u, const Grid& grid, double seed,
+                                       double t) -> std::optional<double> {
+      if (l != horizon_level())
+        return shared;
+      try {
+        const auto found = find_horizon_near(u, grid, finder, seed);
+        shared = found ? std::optional<double>(found->r) : std::nullopt;
+        return shared;
+      } catch (const HorizonFinderError& e) {
+        throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
+      }
+    };
+    rhs.emplace_back(layout.grid(l), r);
+  }
+  return rhs;
+}
+
+/// Diagnostic copies: they never search (their h_AH is set from Simulation::horizon_radius()).
+std::vector<GbssnRhs> diagnostic_copies(const EvolutionConfig& config,
+                                        const mesh::MeshLayout& layout) {
+  std::vector<GbssnRhs> rhs;
+  RhsParams r = config.rhs;
+  r.horizon_shift.search_every_substage = false;
+  r.horizon_shift.locate = nullptr;
+  if (r.horizon_shift.variant == HorizonShiftParams::Variant::midstep_update)
+    r.horizon_shift.variant = HorizonShiftParams::Variant::consistent; // differs in searches only
+  for (std::size_t l = 0; l < layout.levels(); ++l)
+    rhs.emplace_back(layout.grid(l), r);
+  return rhs;
+}
+
+std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id) {
+  std::vector<State> u;
+  for (std::size_t l = 0; l < layout.levels(); ++l)
+    u.push_back(initial_data(layout.grid(l), id));
+  return u;
+}
+
+std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs) {
+  std::vector<mesh::LevelRhs> f;
+  for (auto& r : rhs)
+    f.emplace_back([&r](const State& u, State& dudt, double t) { r(u, dudt, t); });
+  return f;
 }
 
 } // namespace
 
 Simulation::Simulation(const EvolutionConfig& config)
-    : config_(config), layout_(make_grid(config.grid).map(), config.grid.N, 1),
-      rhs_(layout_.grid(0), rhs_params_with_finder(config)),
-      diagnostic_rhs_(rhs_), levels_u_{initial_data(layout_.grid(0), config.initial_data)},
-      schedule_(make_schedule(config, layout_.grid(0))),
-      stepper_(layout_, {[this](const State& u, State& dudt, double t) { rhs_(u, dudt, t); }},
-               mesh::StepperOptions{.cfl = config.cfl}) {
-  stepper_.after_step = [this](std::size_t, State& u) {
-    apply_chi_floor(u, grid(), config_.chi_floor);
+    : config_(config), layout_(make_layout(config)), composite_(layout_),
+      rhs_(level_rhs(
+          config_, layout_, [this] { return horizon_level(); }, shared_h_AH_)),
+      diagnostic_rhs_(diagnostic_copies(config_, layout_)), dudt_(layout_.levels()),
+      levels_u_(initial_levels(layout_, config.initial_data)), u_prev_(layout_.levels()),
+      dudt_prev_(layout_.levels()), dudt_now_(layout_.levels()), u_out_(layout_.levels()),
+      schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, stepper_options(config)))),
+      stepper_(layout_, level_functors(rhs_), stepper_options(config)) {
+  stepper_.after_step = [this](std::size_t l, State& u) {
+    apply_chi_floor(u, layout_.grid(l), config_.chi_floor);
   };
+  for (std::size_t k = 0; k < composite_.size(); ++k)
+    composite_levels_.push_back(composite_.level(k));
+  if (layout_.levels() > 1)
+    stepper_.on_level_step = [this](std::size_t l, double t0, double dt, const State& u0,
+                                    const std::array<const State*, 4>& k) {
+      fill_pending(l, t0, dt, u0, k);
+    };
+  // every level's boundary data from its parent, and the coarse levels restricted from the fine
+  // ones (a single grid: its origin ghosts only)
+  stepper_.initialise(levels_u_, 0.0);
+  for (const auto& r : rhs_) // e.g. the backward step of quadratic time interpolation
+    initial_evaluations_.push_back(r.evaluations());
+}
+
+std::uint64_t Simulation::evaluations() const {
+  std::uint64_t n = 0;
+  for (const auto& r : rhs_)
+    n += r.evaluations();
+  return n;
+}
+
+std::uint64_t Simulation::point_evaluations() const {
+  std::uint64_t n = 0;
+  for (std::size_t l = 0; l < layout_.levels(); ++l)
+    n += rhs_[l].evaluations() * layout_.grid(l).n_interior();
+  return n;
+}
+
+std::size_t Simulation::horizon_level() const {
+  if (layout_.levels() == 1)
+    return 0;
+  const double r = shared_h_AH_.value_or(standard_horizon_radius * config_.initial_data.M);
+  return layout_.finest_level_covering(r, RefinementSettings::horizon_margin_cells);
 }
 
 template <class Search>
@@ -90,43 +178,115 @@ auto Simulation::with_time(Search search) const {
 }
 
 HorizonSearch Simulation::horizons() const {
-  return with_time([&] { return find_horizons(u_, grid(), config_.horizon_search.finder); });
+  const HorizonFinderParams& finder = config_.horizon_search.finder;
+  if (layout_.levels() == 1)
+    return with_time([&] { return find_horizons(levels_u_[0], grid(), finder); });
+  // each level searches the part of the composite it supplies: r beyond its child's extent
+  HorizonSearch all;
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    HorizonFinderParams p = finder;
+    if (l + 1 < layout_.levels())
+      p.r_min = std::max(p.r_min, layout_.extent(l + 1));
+    HorizonSearch found =
+        with_time([&] { return find_horizons(levels_u_[l], layout_.grid(l), p); });
+    for (auto& s : found.surfaces) {
+      s.level = l;
+      all.surfaces.push_back(s);
+    }
+  }
+  std::sort(all.surfaces.begin(), all.surfaces.end(),
+            [](const MarginalSurface& a, const MarginalSurface& b) { return a.r > b.r; });
+  return all;
 }
 
 std::optional<double> Simulation::horizon_radius() {
-  const auto& hs = rhs_.params().horizon_shift;
+  const auto& hs = config_.rhs.horizon_shift;
   if (!hs.active())
     return std::nullopt;
   if (hs.prescribed())
     return hs.prescribed_h_AH(t_);
+  const std::size_t l = horizon_level();
   if (config_.horizon_search.every_steps == 0 && config_.horizon_search.in_window(t_)) {
     const auto found = with_time([&] {
-      return find_horizon_near(u_, grid(), config_.horizon_search.finder,
-                               rhs_.horizon_radius().value_or(hs.h));
+      return find_horizon_near(levels_u_[l], layout_.grid(l), config_.horizon_search.finder,
+                               rhs_[l].horizon_radius().value_or(hs.h));
     });
     return found ? std::optional<double>(found->r) : std::nullopt;
   }
-  return rhs_.horizon_radius();
+  return rhs_[l].horizon_radius();
 }
 
 std::vector<double> Simulation::horizon_shift() {
-  std::vector<double> beta_H;
-  horizon_shift_profile(u_, grid(), rhs_.params().horizon_shift, horizon_radius(), beta_H, t_);
-  return beta_H;
+  const std::optional<double> h_AH = horizon_radius();
+  std::vector<std::vector<double>> beta_H(layout_.levels());
+  std::vector<std::span<const double>> arrays;
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    horizon_shift_profile(levels_u_[l], layout_.grid(l), config_.rhs.horizon_shift, h_AH, beta_H[l],
+                          t_);
+    arrays.emplace_back(beta_H[l]);
+  }
+  return composite_.gather(arrays);
 }
 
 void Simulation::update_held_horizon() {
-  const auto& hs = rhs_.params().horizon_shift;
+  const auto& hs = config_.rhs.horizon_shift;
   if (!hs.active() || hs.prescribed() || config_.horizon_search.every_steps == 0
       || !config_.horizon_search.in_window(t_)
       || hs.variant == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
     return;
+  const std::size_t l = horizon_level();
   const auto found = with_time([&] {
-    return find_horizon_near(u_, grid(), config_.horizon_search.finder,
-                             rhs_.horizon_radius().value_or(hs.h));
+    return find_horizon_near(levels_u_[l], layout_.grid(l), config_.horizon_search.finder,
+                             rhs_[l].horizon_radius().value_or(hs.h));
   });
-  // Without a horizon the held value is dropped: beta_H = 0 until one is found.
-  rhs_.set_horizon_radius(found ? std::optional<double>(found->r) : std::nullopt);
+  // Without a horizon the held value is dropped: beta_H = 0 until one is found. Every level
+  // holds the same value.
+  shared_h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+  for (auto& rhs : rhs_)
+    rhs.set_horizon_radius(shared_h_AH_);
+}
+
+std::vector<DerivedProfiles> Simulation::level_profiles() const {
+  std::vector<DerivedProfiles> d;
+  for (std::size_t l = 0; l < layout_.levels(); ++l)
+    d.push_back(derived_profiles(levels_u_[l], layout_.grid(l)));
+  return d;
+}
+
+DerivedProfiles Simulation::composite_profiles(const std::vector<DerivedProfiles>& levels) const {
+  if (layout_.levels() == 1)
+    return levels.front();
+  auto gather = [&](std::vector<double> DerivedProfiles::*member) {
+    std::vector<std::span<const double>> arrays;
+    for (const auto& d : levels)
+      arrays.emplace_back(d.*member);
+    return composite_.gather_interior(arrays);
+  };
+  DerivedProfiles c;
+  c.H = gather(&DerivedProfiles::H);
+  c.M_r = gather(&DerivedProfiles::M_r);
+  c.G_r = gather(&DerivedProfiles::G_r);
+  c.R_areal = gather(&DerivedProfiles::R_areal);
+  c.Theta_plus = gather(&DerivedProfiles::Theta_plus);
+  return c;
+}
+
+double Simulation::at_radius(Var v, double r) const {
+  const std::size_t l = layout_.finest_level_covering(r, 4.0);
+  return interpolate_at_radius(layout_.grid(l), field(levels_u_[l], layout_.grid(l), v), r);
+}
+
+double Simulation::H_at_radius(const std::vector<DerivedProfiles>& levels, double r) const {
+  const std::size_t l = layout_.finest_level_covering(r, 4.0);
+  const Grid& g = layout_.grid(l);
+  // the interior values with their nearest neighbours continued into the ghosts
+  std::vector<double> f(g.n_total());
+  const auto& H = levels.at(l).H;
+  for (std::size_t i = 0; i < g.n_total(); ++i) {
+    const std::size_t k = std::clamp(i, g.first_interior(), g.end_interior() - 1);
+    f[i] = H[k - g.first_interior()];
+  }
+  return interpolate_at_radius(g, f, r);
 }
 
 void Simulation::report_horizon(const std::optional<MarginalSurface>& h) {
@@ -146,11 +306,13 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d) {
 }
 
 SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& found) {
-  const Grid& g = grid();
+  const Grid& g = composite_.grid();
+  const std::size_t finest = layout_.levels() - 1;
   const double inf = std::numeric_limits<double>::infinity();
   SeriesRow row;
   row.t = t_;
-  row.alpha_center = central_value(field(u_, g, Var::alpha), g);
+  row.alpha_center = central_value(field(levels_u_[finest], layout_.grid(finest), Var::alpha),
+                                   layout_.grid(finest));
   row.H_L2 = l2_norm(d.H, g, 0.0, inf);
   const NormWindows& w = config_.norms;
   row.H_L2_ext = l2_norm(d.H, g, w.rmin, w.rmax);
@@ -161,13 +323,15 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
   row.H_L2_R = l2_norm_areal(d.H, d.R_areal, w.Rmin, w.Rmax);
   row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, w.Rmin, w.Rmax);
   row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, w.Rint);
-  diagnostic_rhs_.set_horizon_radius(rhs_.horizon_radius());
-  // The midstep-update variant times its searches by the RHS's evaluation count: reset so that
-  // the diagnostic evaluation never searches on a schedule of its own (which would make
-  // d_t alpha depend on how many outputs came before, and a resumed run differ).
-  diagnostic_rhs_.set_evaluations(0);
-  diagnostic_rhs_(u_, dudt_, t_);
-  const auto dt_alpha = field(std::as_const(dudt_), g, Var::alpha);
+  // d_t alpha on every level with the h_AH the evolution would use now
+  const std::optional<double> h_AH = horizon_radius();
+  std::vector<std::span<const double>> dt_alpha_levels;
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    diagnostic_rhs_[l].set_horizon_radius(h_AH);
+    diagnostic_rhs_[l](levels_u_[l], dudt_[l], t_);
+    dt_alpha_levels.push_back(field(std::as_const(dudt_[l]), layout_.grid(l), Var::alpha));
+  }
+  const std::vector<double> dt_alpha = composite_.gather(dt_alpha_levels);
   const auto horizon = found.horizon();
   row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
   row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
@@ -180,8 +344,15 @@ SeriesRow Simulation::series_row(const DerivedProfiles& d, const HorizonSearch& 
 }
 
 std::string Simulation::run_facts() const {
-  return fmt::format("dt = {:.17g}\nsteps = {}\ndr-min = {:.17g}\n", schedule_.dt,
-                     schedule_.n_steps, grid().min_spacing());
+  std::string facts =
+      fmt::format("dt = {:.17g}\nsteps = {}\ndr-min = {:.17g}\n", schedule_.dt, schedule_.n_steps,
+                  layout_.grid(layout_.levels() - 1).min_spacing());
+  if (layout_.levels() > 1)
+    for (std::size_t l = 0; l < layout_.levels(); ++l)
+      facts +=
+          fmt::format("level {} = r <= {:.17g}, dr = {:.17g}, dt = {:.17g}\n", l, layout_.extent(l),
+                      layout_.spacing(l), stepper_.level_dt(l, schedule_.dt));
+  return facts;
 }
 
 void Simulation::step(double dt) {
@@ -194,6 +365,49 @@ void Simulation::step(double dt, const State& dudt) {
   t_ += dt;
 }
 
+void Simulation::prepare_pending(double t0, double t1) {
+  pending_.clear();
+  const double tol = 1e-9 * schedule_.dt;
+  auto add = [&](double cadence, long k) {
+    for (;; ++k) {
+      const double t = static_cast<double>(k) * cadence;
+      if (t >= t1 - tol || t >= config_.tmax - tol)
+        return;
+      if (t <= t0 + tol)
+        continue;
+      const bool known = std::any_of(pending_.begin(), pending_.end(), [&](const PendingOutput& p) {
+        return std::abs(p.t - t) <= tol;
+      });
+      if (!known)
+        pending_.push_back({t, {}, std::vector<bool>(layout_.levels(), false)});
+    }
+  };
+  add(config_.dt_series, k_series_);
+  add(config_.dt_profiles, k_profiles_);
+  std::sort(pending_.begin(), pending_.end(),
+            [](const PendingOutput& a, const PendingOutput& b) { return a.t < b.t; });
+  for (auto& p : pending_)
+    p.u.resize(layout_.levels());
+}
+
+void Simulation::fill_pending(std::size_t level, double t0, double dt, const State& u0,
+                              const std::array<const State*, 4>& k) {
+  const double tol = 1e-9 * schedule_.dt;
+  for (auto& p : pending_) {
+    if (p.filled[level] || p.t <= t0 + tol * 0.5 || p.t > t0 + dt + tol)
+      continue;
+    const double theta = std::min((p.t - t0) / dt, 1.0);
+    const mesh::StageWeights w = mesh::dense_output_weights(theta, dt);
+    State& out = p.u[level];
+    out.resize(u0.size());
+    for (std::size_t i = 0; i < u0.size(); ++i)
+      out[i] = w[0] * u0[i] + w[1] * (*k[0])[i] + w[2] * (*k[1])[i] + w[3] * (*k[2])[i]
+               + w[4] * (*k[3])[i];
+    apply_chi_floor(out, layout_.grid(level), config_.chi_floor);
+    p.filled[level] = true;
+  }
+}
+
 void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
   if (chi_floor <= 0.0)
     return;
@@ -202,25 +416,58 @@ void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
 }
 
 void Simulation::check_finite() const {
-  const Grid& g = grid();
-  for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
-    for (const auto& entry : registry)
-      if (!std::isfinite(field(u_, g, entry.var)[i]))
-        throw NonFiniteError(t_, g.r()[i], std::string(entry.name));
-  const auto chi = field(u_, g, Var::chi), alpha = field(u_, g, Var::alpha);
-  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
-    if (!(chi[i] > 0.0))
-      throw NonFiniteError(t_, g.r()[i], "chi", chi[i], "must be > 0; see --chi-floor");
-    if (alpha[i] < alpha_min || alpha[i] > alpha_max)
-      throw NonFiniteError(t_, g.r()[i], "alpha", alpha[i],
-                           fmt::format("must lie in [{}, {}]", alpha_min, alpha_max));
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    const Grid& g = layout_.grid(l);
+    const State& u = levels_u_[l];
+    const std::string where = layout_.levels() > 1 ? fmt::format(" (box {})", l) : "";
+    for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
+      for (const auto& entry : registry)
+        if (!std::isfinite(field(u, g, entry.var)[i]))
+          throw NonFiniteError(t_, g.r()[i], std::string(entry.name) + where);
+    const auto chi = field(u, g, Var::chi), alpha = field(u, g, Var::alpha);
+    for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+      if (!(chi[i] > 0.0))
+        throw NonFiniteError(t_, g.r()[i], "chi" + where, chi[i], "must be > 0; see --chi-floor");
+      if (alpha[i] < alpha_min || alpha[i] > alpha_max)
+        throw NonFiniteError(t_, g.r()[i], "alpha" + where, alpha[i],
+                             fmt::format("must lie in [{}, {}]", alpha_min, alpha_max));
+    }
   }
 }
 
 void Simulation::restore(const Checkpoint& c) {
-  if (c.u.size() != u_.size())
+  const std::size_t n_levels = layout_.levels();
+  if (c.finer.size() + 1 != n_levels)
     throw CheckpointError(
-        fmt::format("the checkpoint has {} values, this grid {}", c.u.size(), u_.size()));
+        fmt::format("the checkpoint has {} levels, this grid {}", c.finer.size() + 1, n_levels));
+  for (std::size_t l = 0; l < n_levels; ++l) {
+    const State& u = l == 0 ? c.u : c.finer[l - 1];
+    if (u.size() != levels_u_[l].size())
+      throw CheckpointError(fmt::format("the checkpoint has {} values{}, this grid {}", u.size(),
+                                        n_levels > 1 ? fmt::format(" on level {}", l) : "",
+                                        levels_u_[l].size()));
+  }
+  if (n_levels > 1) {
+    if (c.level_h_AH.size() != n_levels || c.history.size() != n_levels)
+      throw CheckpointError("the checkpoint's levels are incomplete");
+    for (std::size_t l = 0; l < n_levels; ++l) {
+      // quadratic interpolation keeps two earlier time levels of every level but the finest
+      const std::size_t expected =
+          config_.refinement.time == mesh::TimeInterpolation::quadratic && l + 1 < n_levels ? 2 : 0;
+      if (c.history[l].size() != expected)
+        throw CheckpointError(fmt::format("the checkpoint holds {} time levels of level {}, this "
+                                          "run keeps {}",
+                                          c.history[l].size(), l, expected));
+      for (const auto& h : c.history[l])
+        if (h.u.size() != levels_u_[l].size() || !(h.t < c.t))
+          throw CheckpointError(fmt::format(
+              "the checkpoint's time level t = {} of level {} is not this run's", h.t, l));
+      if (c.level_h_AH[l] && !(std::isfinite(*c.level_h_AH[l]) && *c.level_h_AH[l] > 0.0))
+        throw CheckpointError(fmt::format("the checkpoint's horizon radius {} of level {} is "
+                                          "not a radius",
+                                          *c.level_h_AH[l], l));
+    }
+  }
   if (c.dt != schedule_.dt)
     throw CheckpointError(
         fmt::format("the checkpoint's step {} is not this run's {}", c.dt, schedule_.dt));
@@ -247,19 +494,37 @@ void Simulation::restore(const Checkpoint& c) {
     throw CheckpointError(fmt::format(
         "the checkpoint's output counters ({}, {}) are not those of t = {} ({}, {})", c.k_series,
         c.k_profiles, c.t, next_output(config_.dt_series), next_output(config_.dt_profiles)));
-  if (c.evaluations != 4 * static_cast<std::uint64_t>(c.step))
-    throw CheckpointError(
-        fmt::format("the checkpoint's RHS count {} is not 4 x step {}", c.evaluations, c.step));
-  if (c.h_AH && !(std::isfinite(*c.h_AH) && *c.h_AH > 0.0))
-    throw CheckpointError(
-        fmt::format("the checkpoint's horizon radius {} is not a radius", *c.h_AH));
-  u_ = c.u;
+  if (c.evaluations != initial_evaluations_[0] + 4 * static_cast<std::uint64_t>(c.step))
+    throw CheckpointError(fmt::format("the checkpoint's RHS count {} is not {} + 4 x step {}",
+                                      c.evaluations, initial_evaluations_[0], c.step));
+  for (const auto& h : {c.h_AH, c.shared_h_AH})
+    if (h && !(std::isfinite(*h) && *h > 0.0))
+      throw CheckpointError(fmt::format("the checkpoint's horizon radius {} is not a radius", *h));
+  levels_u_[0] = c.u;
+  for (std::size_t l = 1; l < n_levels; ++l)
+    levels_u_[l] = c.finer[l - 1];
   t_ = c.t;
   step_ = c.step;
   k_series_ = c.k_series;
   k_profiles_ = c.k_profiles;
-  rhs_.set_horizon_radius(c.h_AH);
-  rhs_.set_evaluations(c.evaluations);
+  rhs_[0].set_horizon_radius(c.h_AH);
+  rhs_[0].set_evaluations(c.evaluations);
+  if (n_levels > 1) {
+    shared_h_AH_ = c.shared_h_AH;
+    for (std::size_t l = 1; l < n_levels; ++l) {
+      rhs_[l].set_horizon_radius(c.level_h_AH[l]);
+      // level l takes steps(l) steps of 4 evaluations per step of the hierarchy
+      const std::uint64_t n =
+          initial_evaluations_[l]
+          + 4 * static_cast<std::uint64_t>(c.step) * static_cast<std::uint64_t>(stepper_.steps(l));
+      rhs_[l].set_evaluations(n);
+      stepper_.set_evaluations(l, n);
+    }
+    for (std::size_t l = 0; l < n_levels; ++l)
+      stepper_.set_history(l, c.history[l]);
+  } else {
+    shared_h_AH_ = c.h_AH;
+  }
   had_horizon_ = c.had_horizon;
   reported_ = c.reported;
   resumed_ = true;
@@ -278,7 +543,15 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
   c.reported = reported_;
   c.evaluations = evaluations_before_rhs_;
   c.marks = out.marks();
-  c.u = u_;
+  c.u = levels_u_[0];
+  if (layout_.levels() > 1) {
+    c.finer.assign(levels_u_.begin() + 1, levels_u_.end());
+    c.shared_h_AH = shared_h_AH_before_rhs_; // before the next step's first RHS, as h_AH
+    for (std::size_t l = 0; l < layout_.levels(); ++l) {
+      c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
+      c.history.push_back(stepper_.history(l));
+    }
+  }
   return c;
 }
 
@@ -296,15 +569,19 @@ void Simulation::run(Output* out) {
   };
   auto write = [&](bool series, bool profiles) {
     if (out && (series || profiles)) {
-      const DerivedProfiles d = derived_profiles(u_, grid());
+      const std::vector<DerivedProfiles> levels_d = level_profiles();
+      const DerivedProfiles d = composite_profiles(levels_d);
       if (series) {
         const HorizonSearch found = horizons();
         report_horizon(found.horizon());
         out->write_series(series_row(d, found));
         out->write_horizons(t_, found);
       }
-      if (profiles)
-        out->write_profiles(t_, u_, grid(), d, horizon_shift());
+      if (profiles) {
+        composite_.gather_state(levels_u_, u_composite_);
+        out->write_profiles(t_, u_composite_, composite_.grid(), d, horizon_shift(),
+                            composite_levels_);
+      }
     }
     if (series && on_series)
       on_series(*this);
@@ -322,14 +599,31 @@ void Simulation::run(Output* out) {
       const bool profiles = std::abs(next_profiles() - t_out) <= tol;
       if (std::abs(t_out - t_) <= tol || !have_dense) {
         write(series, profiles);
-      } else {
-        hermite_interpolate(u_prev_, dudt_prev_, u_, dudt_now_, t_ - t_prev,
-                            (t_out - t_prev) / (t_ - t_prev), u_out_);
-        std::swap(u_, u_out_);
+      } else if (layout_.levels() > 1) {
+        // every level's dense output at t_out, the fine boundaries from their parents
+        const auto p = std::find_if(pending_.begin(), pending_.end(), [&](const PendingOutput& q) {
+          return std::abs(q.t - t_out) <= tol;
+        });
+        if (p == pending_.end()
+            || std::find(p->filled.begin(), p->filled.end(), false) != p->filled.end())
+          throw std::logic_error(fmt::format("no dense output of every level at t = {}", t_out));
+        std::swap(levels_u_, p->u);
+        stepper_.fill_ghosts(levels_u_);
         const double t_step = std::exchange(t_, t_out);
         write(series, profiles);
         t_ = t_step;
-        std::swap(u_, u_out_);
+        std::swap(levels_u_, p->u);
+      } else {
+        for (std::size_t l = 0; l < levels_u_.size(); ++l) {
+          hermite_interpolate(u_prev_[l], dudt_prev_[l], levels_u_[l], dudt_now_[l], t_ - t_prev,
+                              (t_out - t_prev) / (t_ - t_prev), u_out_[l]);
+          std::swap(levels_u_[l], u_out_[l]);
+        }
+        const double t_step = std::exchange(t_, t_out);
+        write(series, profiles);
+        t_ = t_step;
+        for (std::size_t l = 0; l < levels_u_.size(); ++l)
+          std::swap(levels_u_[l], u_out_[l]);
       }
       const bool at_end = t_out >= t_end - tol;
       if (series)
@@ -368,29 +662,34 @@ void Simulation::run(Output* out) {
   const auto start = std::chrono::steady_clock::now();
   auto last_report = start;
   const bool progress = show_progress && ::isatty(STDERR_FILENO);
-  dudt_now_.resize(u_.size());
-  rhs_(u_, dudt_now_, t_); // RK4's first stage of the first step
+  shared_h_AH_before_rhs_ = shared_h_AH_;
+  dudt_now_[0].resize(levels_u_[0].size());
+  rhs_[0](levels_u_[0], dudt_now_[0], t_); // RK4's first stage of the first step
   for (long n = step_ + 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
     const double t_prev = t_;
     // Keep the step's start for output between the steps (cheap copies, only when needed).
     const double t_next = last ? t_end : static_cast<double>(n) * s.dt;
     const bool dense = std::min(next_series(), next_profiles()) < t_next - 1e-9 * s.dt;
-    if (dense) {
-      u_prev_ = u_;
-      dudt_prev_ = dudt_now_;
+    if (dense && layout_.levels() > 1) {
+      prepare_pending(t_, t_next);
+    } else if (dense) {
+      u_prev_[0] = levels_u_[0];
+      dudt_prev_[0] = dudt_now_[0];
     }
-    step(t_next - t_, dudt_now_);
+    step(t_next - t_, dudt_now_[0]);
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
     check_finite();
     if (const long every = config_.horizon_search.every_steps; every > 0 && n % every == 0)
       update_held_horizon();
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)
-    const std::optional<double> h_AH_before_rhs = rhs_.horizon_radius();
-    evaluations_before_rhs_ = rhs_.evaluations();
+    const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
+    shared_h_AH_before_rhs_ = shared_h_AH_;
+    evaluations_before_rhs_ = rhs_[0].evaluations();
     if (!last || dense)
-      rhs_(u_, dudt_now_, t_); // the next step's first stage, and d_t u for the interpolant
+      rhs_[0](levels_u_[0], dudt_now_[0], t_); // the next step's first stage, and d_t u for
+                                               // the interpolant
     write_due(t_prev, dense);
     if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
       save(h_AH_before_rhs);

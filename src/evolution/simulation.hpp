@@ -1,5 +1,7 @@
-// One evolution: grid, initial data, right-hand side and the RK4 method of lines
-// (Boost.Odeint), with output at fixed cadences in time.
+// One evolution: grid (a single grid, or box-in-box levels), initial data, right-hand side and
+// the RK4 method of lines, with output at fixed cadences in time. The levels are stepped by
+// mesh::MeshStepper (a single grid is its one-level case); output and norms see their
+// composite (mesh/composite.hpp), the horizon finder the finest level that holds the horizon.
 #pragma once
 
 #include "diagnostics/constraints.hpp"
@@ -7,6 +9,7 @@
 #include "evolution/evolution_config.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
+#include "mesh/composite.hpp"
 #include "mesh/hierarchy.hpp"
 
 #include <functional>
@@ -45,7 +48,12 @@ struct Schedule {
   double dt;
   long n_steps;
 };
-Schedule make_schedule(const EvolutionConfig& config, const Grid& grid);
+Schedule make_schedule(const EvolutionConfig& config, double dt);
+
+/// The levels of `config`'s grid: one level on its map, or --levels boxes.
+mesh::MeshLayout make_layout(const EvolutionConfig& config);
+/// The stepper's options of `config`.
+mesh::StepperOptions stepper_options(const EvolutionConfig& config);
 
 /// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
 /// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
@@ -66,14 +74,33 @@ public:
   Simulation& operator=(const Simulation&) = delete;
 
   const EvolutionConfig& config() const { return config_; }
+  /// Level 0's grid, state and right-hand side (the single grid's).
   const Grid& grid() const { return layout_.grid(0); }
-  const GbssnRhs& rhs() const { return rhs_; }
+  const GbssnRhs& rhs() const { return rhs_[0]; }
   State& state() { return levels_u_[0]; }
   const State& state() const { return levels_u_[0]; }
+  /// Every level (one for a single grid) and their composite.
+  const mesh::MeshLayout& layout() const { return layout_; }
+  const std::vector<State>& level_states() const { return levels_u_; }
+  std::vector<State>& level_states() { return levels_u_; }
+  const mesh::Composite& composite() const { return composite_; }
+  /// RHS evaluations of every level so far, and their point count (cells x evaluations).
+  std::uint64_t evaluations() const;
+  std::uint64_t point_evaluations() const;
   double time() const { return t_; }
   const Schedule& schedule() const { return schedule_; }
 
-  /// Diagnostics of the current state (evaluates the right-hand side once for d_t alpha).
+  /// H, M_r, G_r, R, Theta_+ on every level's interior, and their composite.
+  std::vector<DerivedProfiles> level_profiles() const;
+  DerivedProfiles composite_profiles(const std::vector<DerivedProfiles>& levels) const;
+  DerivedProfiles composite_profiles() const { return composite_profiles(level_profiles()); }
+  /// A variable at radius r (6-point Lagrange on the finest level that covers r).
+  double at_radius(Var v, double r) const;
+  /// H at radius r from level profiles.
+  double H_at_radius(const std::vector<DerivedProfiles>& levels, double r) const;
+
+  /// Diagnostics of the current state (evaluates the right-hand side once for d_t alpha);
+  /// `d` is the composite of the derived profiles.
   SeriesRow series_row(const DerivedProfiles& d);
   /// The same, with the horizons of the current state already found.
   SeriesRow series_row(const DerivedProfiles& d, const HorizonSearch& found);
@@ -109,9 +136,9 @@ public:
   /// number of steps to tmax and the smallest cell width dr-min.
   std::string run_facts() const;
 
-  /// One RK4 step of size dt, then the chi floor (apply_chi_floor).
+  /// One step of size dt of every level (RK4, then the chi floor, apply_chi_floor).
   void step(double dt);
-  /// The same with d_t u at the current state already evaluated (RK4's first stage).
+  /// The same with level 0's d_t u at the current state already evaluated (RK4's first stage).
   void step(double dt, const State& dudt);
 
   /// The horizon radius h_AH that the horizon shift uses for the current state: found on it
@@ -119,8 +146,11 @@ public:
   std::optional<double> horizon_radius();
   /// beta_H on every point for the current state.
   std::vector<double> horizon_shift();
-  /// Every marginal surface of the current state.
+  /// Every marginal surface of the current state (each from the finest level covering it).
   HorizonSearch horizons() const;
+  /// The level the horizon shift's h_AH is searched on: the finest on which the horizon (or,
+  /// before one is found, the standard radius 0.8304 M) lies well inside (0 for a single grid).
+  std::size_t horizon_level() const;
 
   /// The first non-finite value of the state, or a chi <= 0, alpha < alpha_min or
   /// alpha > alpha_max: throws NonFiniteError.
@@ -136,26 +166,47 @@ private:
   auto with_time(Search search) const;
   /// Held mode: search for the horizon and hold its radius for the RHS.
   void update_held_horizon();
+  /// Output between the steps of several levels: each level's state at the output times inside
+  /// the coming step, from the RK4 dense output of that level's own (sub)step (mesh::
+  /// MeshStepper::on_level_step), so that a fine level is interpolated over its own dt.
+  struct PendingOutput {
+    double t;
+    std::vector<State> u;     ///< one per level
+    std::vector<bool> filled; ///< per level
+  };
+  std::vector<PendingOutput> pending_;
+  /// Collects the output times in (t0, t1) for the coming step.
+  void prepare_pending(double t0, double t1);
+  void fill_pending(std::size_t level, double t0, double dt, const State& u0,
+                    const std::array<const State*, 4>& k);
   /// Say on stderr when the horizon appears or disappears.
   void report_horizon(const std::optional<MarginalSurface>& h);
 
   EvolutionConfig config_;
-  /// The grid as the one-level case of the refinement hierarchy (mesh/hierarchy.hpp).
-  mesh::MeshLayout layout_;
-  GbssnRhs rhs_;
-  GbssnRhs diagnostic_rhs_; ///< separate, so RHS evaluations of the evolution stay countable
-  State dudt_;
-  std::vector<State> levels_u_;                 ///< the state of each level (one: the single grid)
-  State& u_ = levels_u_[0];                     ///< the state of level 0
-  State u_prev_, dudt_prev_, dudt_now_, u_out_; ///< for output between steps (run)
+  mesh::MeshLayout layout_;   ///< the levels (one: the single grid)
+  mesh::Composite composite_; ///< their composite, for output and norms
+  std::vector<GbssnRhs> rhs_; ///< one per level
+  /// per level, separate, so RHS evaluations of the evolution stay countable; it never
+  /// searches for the horizon of its own (diagnostics set its h_AH)
+  std::vector<GbssnRhs> diagnostic_rhs_;
+  /// The horizon radius every level's horizon shift uses: found on horizon_level()'s state
+  /// (substage searches there, or the held searches); the other levels read it.
+  std::optional<double> shared_h_AH_;
+  std::vector<State> dudt_;                                  ///< per level: diagnostic scratch
+  std::vector<State> levels_u_;                              ///< the state of each level
+  std::vector<State> u_prev_, dudt_prev_, dudt_now_, u_out_; ///< per level, output between steps
+  State u_composite_;                                        ///< the composite state, for profiles
+  std::vector<std::size_t> composite_levels_;                ///< the level of each composite cell
+  std::optional<double> shared_h_AH_before_rhs_; ///< for checkpoints (as h_AH_before_rhs)
   double t_ = 0.0;
   Schedule schedule_;
   mesh::MeshStepper stepper_; ///< RK4 (Odeint's arithmetic), with the chi floor after each step
   long step_ = 0;             ///< steps taken
   long k_series_ = 1, k_profiles_ = 1; ///< next output times k dt_series, k dt_profiles
   bool resumed_ = false;               ///< restore() was called: run() continues, no initial output
-  std::uint64_t evaluations_before_rhs_ = 0; ///< RHS count before the current step's k1
-  bool had_horizon_ = false;                 ///< for messages when the horizon appears/disappears
+  std::uint64_t evaluations_before_rhs_ = 0;       ///< RHS count before the current step's k1
+  std::vector<std::uint64_t> initial_evaluations_; ///< per level, before the first step
+  bool had_horizon_ = false; ///< for messages when the horizon appears/disappears
   bool reported_ = false;
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace gbssn1d {
@@ -81,6 +82,37 @@ Grid::Grid(RadialMap map, std::size_t n_interior)
     d2_fx_coeff_[i] = -map_.d2r_dx2(xi) / (rx * rx * rx);
     dr_[i] = rx * dx_;
   }
+}
+
+Grid::Grid(const std::vector<double>& r_cells, const std::vector<double>& dr_cells)
+    : map_(RadialMap::uniform(r_cells.empty() ? 1.0 : r_cells.back() + 0.5 * dr_cells.back())),
+      n_(r_cells.size()), dx_(std::numeric_limits<double>::quiet_NaN()) {
+  if (r_cells.size() < n_ghost || r_cells.size() != dr_cells.size())
+    throw std::invalid_argument("a grid of cells needs at least 3 centres and one width each");
+  for (std::size_t k = 0; k < n_; ++k)
+    if (!(dr_cells[k] > 0.0) || (k > 0 && !(r_cells[k] > r_cells[k - 1])))
+      throw std::invalid_argument("a grid of cells needs increasing centres and positive widths");
+  const std::size_t n = n_total();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  x_.assign(n, nan);
+  inv_rx_.assign(n, nan);
+  d2_fx_coeff_.assign(n, nan);
+  r_.resize(n);
+  dr_.resize(n);
+  inv_r_.resize(n);
+  for (std::size_t k = 0; k < n_; ++k) {
+    r_[n_ghost + k] = r_cells[k];
+    dr_[n_ghost + k] = dr_cells[k];
+  }
+  for (std::size_t i = 0; i < n_ghost; ++i) {
+    r_[i] = -r_[mirror(i)];
+    dr_[i] = dr_[mirror(i)];
+    const std::size_t o = n_ghost + n_ + i; // outer ghosts continue the last width
+    dr_[o] = dr_cells.back();
+    r_[o] = r_[o - 1] + dr_cells.back();
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    inv_r_[i] = 1.0 / r_[i];
 }
 
 double Grid::min_spacing() const {

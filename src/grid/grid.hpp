@@ -47,6 +47,12 @@ public:
   static constexpr std::size_t n_ghost = 3; ///< enough for 4th-order upwind and 6th-difference KO
 
   Grid(RadialMap map, std::size_t n_interior);
+  /// Cells given by their centres and widths (increasing, positive), without a map: the
+  /// composite of several grids, for output and norms. The origin ghosts mirror the first cells
+  /// (r -> -r), the outer ghosts continue the last width; x, 1/r_x and the second-derivative
+  /// coefficient are NaN, so that finite differences on such a grid come out non-finite. Its
+  /// map() is the uniform map to the last cell's outer face.
+  Grid(const std::vector<double>& r_cells, const std::vector<double>& dr_cells);
 
   std::size_t n_interior() const { return n_; }
   std::size_t n_total() const { return n_ + 2 * n_ghost; }

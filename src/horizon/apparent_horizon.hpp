@@ -18,10 +18,11 @@
 namespace gbssn1d {
 
 struct MarginalSurface {
-  double r;       ///< coordinate radius
-  double R_areal; ///< areal radius
-  double mass;    ///< R_areal / 2
-  bool outer;     ///< Theta_+ < 0 inside, > 0 outside (an outer trapping boundary)
+  double r;              ///< coordinate radius
+  double R_areal;        ///< areal radius
+  double mass;           ///< R_areal / 2
+  bool outer;            ///< Theta_+ < 0 inside, > 0 outside (an outer trapping boundary)
+  std::size_t level = 0; ///< the refinement level (box) it was found on; 0 on a single grid
 };
 
 struct HorizonSearch {

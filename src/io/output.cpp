@@ -28,13 +28,15 @@ std::vector<std::string> profile_columns() {
   std::vector<std::string> cols{"r"};
   for (const auto& entry : registry)
     cols.emplace_back(entry.name);
-  for (const char* name : {"H", "M_r", "G_r", "R_areal", "Theta_plus", "beta_GD", "beta_H"})
+  for (const char* name :
+       {"H", "M_r", "G_r", "R_areal", "Theta_plus", "beta_GD", "beta_H", "level"})
     cols.emplace_back(name);
   return cols;
 }
 
 std::vector<std::string> horizon_columns() {
-  return {"t", "r_ah", "R_ah", "M_ah", "n_roots", "r_root2", "R_root2", "r_root3", "R_root3"};
+  return {"t",       "r_ah",    "R_ah",    "M_ah",    "n_roots",
+          "r_root2", "R_root2", "r_root3", "R_root3", "level"};
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
@@ -156,7 +158,8 @@ const char* const series_legend =
 const char* const horizon_legend =
     "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
     "with Theta_+ < 0 inside; NaN if none); n_roots counts every zero of Theta_+; r_root2/3, "
-    "R_root2/3 are the next zeros inwards (NaN if none)\n";
+    "R_root2/3 are the next zeros inwards (NaN if none); level: the box the horizon was found "
+    "on (0 on a single grid, -1 without a horizon)\n";
 
 } // namespace
 
@@ -223,10 +226,12 @@ void Output::write_horizons(double t, const HorizonSearch& search) {
       others.push_back(&s);
   auto r_of = [&](std::size_t k) { return k < others.size() ? others[k]->r : nan; };
   auto R_of = [&](std::size_t k) { return k < others.size() ? others[k]->R_areal : nan; };
-  horizons_.print("{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e}\n", t,
+  // the box the horizon was found on (-1 without one)
+  const long level = horizon ? static_cast<long>(horizon->level) : -1;
+  horizons_.print("{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e} {}\n", t,
                   horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan,
                   horizon ? horizon->mass : nan, search.surfaces.size(), r_of(0), R_of(0), r_of(1),
-                  R_of(1));
+                  R_of(1), level);
   horizons_.flush();
 }
 
@@ -236,7 +241,8 @@ void Output::write_end(const std::string& how) {
 }
 
 void Output::write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
-                            const std::vector<double>& beta_H) {
+                            const std::vector<double>& beta_H,
+                            const std::vector<std::size_t>& level) {
   // gnuplot's `index` separates blocks by two blank lines.
   if (!first_block_)
     profiles_.print("\n\n");
@@ -254,7 +260,7 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     }
     for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]})
       fmt::format_to(std::back_inserter(line), " {:.16e}", v);
-    line.push_back('\n');
+    fmt::format_to(std::back_inserter(line), " {}\n", level.empty() ? 0 : level[k]);
     profiles_.write(line.data(), line.size());
   }
   profiles_.flush();

@@ -99,9 +99,11 @@ public:
 
   void write_series(const SeriesRow& row);
   /// `beta_H` is the horizon-adjusting shift on every point (the column `beta` is the full
-  /// shift beta_GD + beta_H, `beta_GD` the evolved part).
+  /// shift beta_GD + beta_H, `beta_GD` the evolved part); `level` the refinement level of each
+  /// interior point (the column `level`; empty: 0, a single grid).
   void write_profiles(double t, const State& u, const Grid& grid, const DerivedProfiles& d,
-                      const std::vector<double>& beta_H);
+                      const std::vector<double>& beta_H,
+                      const std::vector<std::size_t>& level = {});
   void write_horizons(double t, const HorizonSearch& search);
   /// The last line of timeseries.dat: "# end: <how the run ended>" (completed, interrupted,
   /// stopped), so that a reader can tell a complete file from one cut short.

@@ -10,6 +10,32 @@
 
 namespace gbssn1d::mesh {
 
+std::vector<long> level_steps(const MeshLayout& layout, const StepperOptions& options) {
+  // Level l's step is dt_finest x 2^k_l, the largest such step within cfl dr_l and dt_max; its
+  // parent's is the same or twice it (refinement factor 1 or 2 in time).
+  const std::size_t n_levels = layout.levels();
+  const double dt_finest = options.cfl * layout.spacing(n_levels - 1);
+  std::vector<long> steps(n_levels, 1);
+  if (options.subcycling) {
+    std::vector<int> k(n_levels, 0);
+    for (std::size_t l = n_levels - 1; l-- > 0;) {
+      k[l] = k[l + 1];
+      const double twice = std::ldexp(dt_finest, k[l] + 1);
+      if (twice <= options.cfl * layout.spacing(l) * (1.0 + 1e-12) && twice <= options.dt_max)
+        ++k[l];
+    }
+    for (std::size_t l = 0; l < n_levels; ++l)
+      steps[l] = 1L << (k[0] - k[l]);
+  }
+  return steps;
+}
+
+double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options) {
+  const std::size_t finest = layout.levels() - 1;
+  return static_cast<double>(level_steps(layout, options)[finest]) * options.cfl
+         * layout.spacing(finest);
+}
+
 MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
                          StepperOptions options)
     : layout_(&layout), rhs_(std::move(rhs)), options_(options), levels_(layout.levels()),
@@ -21,6 +47,9 @@ MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
   if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
     throw std::invalid_argument("--cfl = " + std::to_string(options_.cfl)
                                 + " is invalid: outside (0, 1]");
+  if (!(options_.dt_max > 0.0))
+    throw std::invalid_argument("the mesh stepper's largest step must be positive");
+  steps_ = level_steps(layout, options_);
   for (std::size_t l = 0; l < layout.levels(); ++l) {
     Level& L = levels_[l];
     const Grid& g = layout.grid(l);
@@ -35,12 +64,11 @@ MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
 }
 
 double MeshStepper::dt() const {
-  const std::size_t l = options_.subcycling ? 0 : layout_->levels() - 1;
-  return options_.cfl * layout_->spacing(l);
+  return hierarchy_dt(*layout_, options_);
 }
 
 double MeshStepper::level_dt(std::size_t level, double dt) const {
-  return options_.subcycling ? std::ldexp(dt, -static_cast<int>(level)) : dt;
+  return dt / static_cast<double>(steps_.at(level));
 }
 
 long MeshStepper::restricted_cells() const {
@@ -172,6 +200,8 @@ void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
   if (fill)
     fill(3, x);
   f(x, k4, t + 1.0 * dt);
+  if (on_level_step && dt > 0.0)
+    on_level_step(l, t, dt, u, {&k1, &k2, &k3, &k4});
   for (std::size_t i = 0; i < n; ++i)
     u[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
   evaluations_[l] += given_k1 ? 3 : 4;
@@ -213,7 +243,7 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
   if (after_step)
     after_step(l, u[l]);
   if (has_child) {
-    if (options_.subcycling) {
+    if (steps_[l + 1] != steps_[l]) { // two child steps
       advance(u, l + 1, t, 0.5 * dt);
       advance(u, l + 1, t + 0.5 * dt, 0.5 * dt);
     } else {

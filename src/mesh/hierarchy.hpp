@@ -60,6 +60,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace gbssn1d::mesh {
@@ -70,8 +71,19 @@ using LevelRhs = std::function<void(const State&, State&, double)>;
 struct StepperOptions {
   TimeInterpolation time = TimeInterpolation::rk_stages;
   bool subcycling = true; ///< false: every level steps with the finest dt
-  double cfl = 0.25;      ///< dt_l = cfl dr_l
+  double cfl = 0.25;      ///< dt_l = cfl dr_l (at most dt_max)
+  /// Largest step any level takes (e.g. the stability limit of a stiff damping term, which
+  /// does not shrink with the spacing): a level whose CFL step would exceed it steps with the
+  /// largest dt_finest x 2^k below it, as often as its child (time refinement factor 1, as
+  /// Carpet's time_refinement_factors do for the outer levels).
+  double dt_max = std::numeric_limits<double>::infinity();
 };
+
+/// Steps level l takes per step of the hierarchy (level 0's step) under `options`: 1 on level
+/// 0, then the same or twice its parent's (see StepperOptions::dt_max).
+std::vector<long> level_steps(const MeshLayout& layout, const StepperOptions& options);
+/// The hierarchy's step (level 0's) under `options`.
+double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options);
 
 class MeshStepper {
 public:
@@ -82,10 +94,13 @@ public:
   const MeshLayout& layout() const { return *layout_; }
   const StepperOptions& options() const { return options_; }
 
-  /// The step of the whole hierarchy: cfl dr_0 with subcycling (each level l takes 2^l steps of
-  /// dt / 2^l), cfl dr_{L-1} without (every level takes one step of it).
+  /// The step of the whole hierarchy, level 0's step: with subcycling min(cfl dr_0, dt_max),
+  /// rounded down to dt_finest x 2^k (each level l then takes steps(l) steps of dt / steps(l));
+  /// without subcycling cfl dr_{L-1} (every level takes one step of it).
   double dt() const;
-  /// The step level l takes when the hierarchy steps by `dt`.
+  /// Steps level l takes per step of the hierarchy (1 on level 0; a power of two).
+  long steps(std::size_t level) const { return steps_.at(level); }
+  /// The step level l takes when the hierarchy steps by `dt`: dt / steps(l).
   double level_dt(std::size_t level, double dt) const;
 
   /// Makes the levels consistent at time t before the first step: restriction from the finest
@@ -106,6 +121,13 @@ public:
 
   /// Called after every step of a level (e.g. a chi floor).
   std::function<void(std::size_t level, State& u)> after_step;
+  /// Called within every forward RK4 step of a level, before its update and after_step: the
+  /// level, the step's start t0 and size dt, the state u0 at t0 and the four stage derivatives.
+  /// With dense_output_weights they give the level's solution at any t in [t0, t0 + dt] to the
+  /// order of its own step (output between the steps of the hierarchy).
+  std::function<void(std::size_t level, double t0, double dt, const State& u0,
+                     const std::array<const State*, 4>& k)>
+      on_level_step;
 
   /// RHS evaluations of level l so far.
   std::uint64_t evaluations(std::size_t level) const { return evaluations_.at(level); }
@@ -158,6 +180,7 @@ private:
   StepperOptions options_;
   mutable std::vector<Level> levels_;
   std::vector<std::uint64_t> evaluations_;
+  std::vector<long> steps_; ///< steps of level l per hierarchy step
 };
 
 } // namespace gbssn1d::mesh

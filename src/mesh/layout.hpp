@@ -42,6 +42,15 @@ public:
   /// The spacing of level l (uniform levels; for one sinh level its smallest spacing).
   double spacing(std::size_t level) const { return grids_.at(level).min_spacing(); }
 
+  /// The finest level on which r lies at least `margin_cells` of its cells inside its outer
+  /// edge (level 0 if none).
+  std::size_t finest_level_covering(double r, double margin_cells) const {
+    for (std::size_t l = levels(); l-- > 1;)
+      if (r <= extent(l) - margin_cells * spacing(l))
+        return l;
+    return 0;
+  }
+
 private:
   std::vector<Grid> grids_;
 };

@@ -95,13 +95,6 @@ std::optional<MemberRecord> read_samples(const fs::path& file, const std::string
   return rec;
 }
 
-std::vector<double> full_size(const Grid& g, const std::vector<double>& interior) {
-  std::vector<double> f(g.n_total(), 0.0);
-  std::copy(interior.begin(), interior.end(),
-            f.begin() + static_cast<std::ptrdiff_t>(g.first_interior()));
-  return f;
-}
-
 double rms_difference(const std::vector<double>& a, const std::vector<double>& b,
                       std::size_t offset, std::size_t count) {
   double sum = 0.0;
@@ -141,8 +134,10 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   const std::vector<Params> members = converge_members(base, options);
   const std::size_t m = members.size();
 
-  // common radii: the coarsest grid's interior points inside the exterior region
-  const Grid coarse = make_grid(grid_spec(members.front()));
+  // common radii: the coarsest member's interior points (of the composite of its boxes) inside
+  // the exterior region
+  const mesh::MeshLayout coarse_layout = make_layout(evolution_config(members.front()));
+  const Grid coarse = mesh::Composite(coarse_layout).grid();
   std::vector<double> radii;
   for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
     if (coarse.r()[i] >= members.front().norm_rmin && coarse.r()[i] <= *members.front().norm_rmax)
@@ -175,17 +170,16 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         create_output_dir("--out", p.out);
         Simulation sim(evolution_config(p));
         sim.on_series = [&](Simulation& s) {
-          const DerivedProfiles d = derived_profiles(s.state(), s.grid());
-          rec.rows.push_back(s.series_row(d));
+          const std::vector<DerivedProfiles> levels_d = s.level_profiles();
+          rec.rows.push_back(s.series_row(s.composite_profiles(levels_d)));
           std::vector<double> samples;
           for (Var v : fields)
             for (double r : radii)
-              samples.push_back(interpolate_at_radius(s.grid(), field(s.state(), s.grid(), v), r));
+              samples.push_back(s.at_radius(v, r));
           rec.field_samples.push_back(std::move(samples));
-          const std::vector<double> H = full_size(s.grid(), d.H);
           std::vector<double> H_samples;
           for (double r : radii)
-            H_samples.push_back(interpolate_at_radius(s.grid(), H, r));
+            H_samples.push_back(s.H_at_radius(levels_d, r));
           rec.H_samples.push_back(std::move(H_samples));
         };
         const std::string config = config_text(p); // the member's own configuration
@@ -200,7 +194,8 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         if (fs::is_regular_file(fs::path(p.out) / "checkpoint.bin")) {
           try {
             Checkpoint c = read_checkpoint(fs::path(p.out) / "checkpoint.bin");
-            if (same_run(c.config, config) && c.t <= p.tmax)
+            if (config_differences(c.config, config, {"tmax", "out", "force"}).empty()
+                && c.t <= p.tmax)
               if (auto saved = read_samples(samples_file, samples_key, c.step)) {
                 Output::check_resumable(p.out, c.marks);
                 sim.restore(c);

@@ -225,7 +225,7 @@ TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, ex
   CHECK(text.substr(text.rfind("# end:")).find("# end: stopped: interrupted by SIGTERM at t = ")
         == 0);
   CHECK(fs::exists(out / "checkpoint.bin")); // written on the signal: `resume` continues
-  // every profile row is whole: 17 columns
+  // every profile row is whole: 18 columns (the last: the level, 0 on a single grid)
   std::ifstream profiles(out / "profiles.dat");
   int rows = 0;
   for (std::string line; std::getline(profiles, line);) {
@@ -235,7 +235,7 @@ TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, ex
     int n = 0;
     for (std::string w; words >> w;)
       ++n;
-    CHECK(n == 17);
+    CHECK(n == 18);
     ++rows;
   }
   CHECK(rows >= 3200);
@@ -488,7 +488,7 @@ TEST_CASE("resume checks the checkpoint and every file before it changes any: co
   CHECK(folder(dir) == killed);
 
   // offsets of the fields after the magic line and the configuration text
-  const std::string magic = "gbssn1d checkpoint 2\n";
+  const std::string magic = "gbssn1d checkpoint 3\n";
   REQUIRE(good.rfind(magic, 0) == 0);
   std::uint64_t n_config = 0;
   std::memcpy(&n_config, good.data() + magic.size(), 8);
