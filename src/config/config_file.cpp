@@ -108,7 +108,8 @@ const std::vector<ParamSpec>& param_specs() {
        "root-finder tolerance of the horizon radius; at most 1e-3 x the smallest cell width"},
       {"rah-variant", &Params::rah_variant, "Horizon",
        "consistent (the method); for the study only: no-shift-derivatives, "
-       "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update"},
+       "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update, "
+       "box-substage (boxes: each box its own latest h_AH)"},
       {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
       {"force", &Params::force, "Output", "write into an existing non-empty --out"},
   };

@@ -323,13 +323,16 @@ void validate(const Params& p) {
                        "must be >= --ah-tmin (leave it out for no limit)");
   }
   require_positive("--ah-tol", p.ah_tol);
-  constexpr std::array<std::string_view, 6> variants{
+  constexpr std::array<std::string_view, 7> variants{
       "consistent",        "no-shift-derivatives", "no-shift-second-derivatives",
-      "delta-rhs-from-gd", "driver-full-shift",    "midstep-update"};
+      "delta-rhs-from-gd", "driver-full-shift",    "midstep-update",
+      "box-substage"};
   if (std::find(variants.begin(), variants.end(), p.rah_variant) == variants.end())
     throw ParamError("--rah-variant", p.rah_variant,
                      "must be consistent, no-shift-derivatives, no-shift-second-derivatives, "
-                     "delta-rhs-from-gd, driver-full-shift or midstep-update");
+                     "delta-rhs-from-gd, driver-full-shift, midstep-update or box-substage");
+  if (p.rah_variant == "box-substage" && (p.grid != "boxes" || p.ah_every != "substage"))
+    throw ParamError("--rah-variant", p.rah_variant, "needs --grid boxes and --ah-every substage");
   if (p.rah_variant == "midstep-update" && p.ah_every == "substage")
     throw ParamError("--rah-variant", p.rah_variant,
                      "needs searches every n steps (--ah-every step or a number)");
@@ -512,6 +515,7 @@ RhsParams rhs_params(const Params& p) {
       : p.rah_variant == "no-shift-derivatives"      ? Variant::no_shift_derivatives
       : p.rah_variant == "driver-full-shift"         ? Variant::driver_full_shift
       : p.rah_variant == "midstep-update"            ? Variant::midstep_update
+      : p.rah_variant == "box-substage"              ? Variant::box_substage
                                                      : Variant::consistent;
   if (r.horizon_shift.variant == Variant::midstep_update) {
     r.horizon_shift.search_every_substage = false;

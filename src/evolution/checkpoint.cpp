@@ -94,6 +94,9 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   for (const auto& h : c.level_h_AH)
     put_optional(h);
   put_optional(c.shared_h_AH);
+  put(std::uint64_t{c.h_AH_history.size()});
+  for (const auto& th : c.h_AH_history)
+    put(th);
   put(std::uint64_t{c.history.size()});
   for (const auto& levels : c.history) {
     put(std::uint64_t{levels.size()});
@@ -199,6 +202,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
     for (auto& h : c.level_h_AH)
       h = get_optional("level h_AH flag");
     c.shared_h_AH = get_optional("shared h_AH flag");
+    c.h_AH_history.resize(get_count(2 * sizeof(double)));
+    for (auto& th : c.h_AH_history)
+      th = r.get<std::array<double, 2>>();
     c.history.resize(get_count(sizeof(std::uint64_t)));
     for (auto& levels : c.history) {
       levels.resize(get_count(2 * sizeof(std::uint64_t)));

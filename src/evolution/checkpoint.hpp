@@ -7,6 +7,7 @@
 #include "io/output.hpp"
 #include "mesh/hierarchy.hpp"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -30,6 +31,8 @@ struct Checkpoint {
   std::vector<State> finer;                      ///< the states of levels 1 ... L-1
   std::vector<std::optional<double>> level_h_AH; ///< h_AH held by each level's RHS, 0 ... L-1
   std::optional<double> shared_h_AH;             ///< the horizon radius all levels share
+  /// boxes: the radii found at the last hierarchy steps, (t, h_AH), oldest first
+  std::vector<std::array<double, 2>> h_AH_history;
   /// each level's stored time levels (quadratic time interpolation), 0 ... L-1
   std::vector<std::vector<mesh::MeshStepper::TimeLevel>> history;
 };

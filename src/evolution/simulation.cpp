@@ -64,27 +64,16 @@ mesh::StepperOptions stepper_options(const EvolutionConfig& config) {
 
 namespace {
 
-/// One RHS per level; substage searches run on horizon_level's states and are shared through
-/// `shared` (the other levels read it), so that every level uses the one h_AH.
+/// One RHS per level; its substage searches go to `locate(level, u, grid, seed, t)`.
+using Locate =
+    std::function<std::optional<double>(std::size_t, const State&, const Grid&, double, double)>;
 std::vector<GbssnRhs> level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
-                                std::function<std::size_t()> horizon_level,
-                                std::optional<double>& shared) {
+                                const Locate& locate) {
   std::vector<GbssnRhs> rhs;
-  const HorizonFinderParams finder = config.horizon_search.finder;
   for (std::size_t l = 0; l < layout.levels(); ++l) {
     RhsParams r = config.rhs;
-    r.horizon_shift.locate = [finder, l, horizon_level,
-                              &shared](const State& u, const Grid& grid, double seed,
-                                       double t) -> std::optional<double> {
-      if (l != horizon_level())
-        return shared;
-      try {
-        const auto found = find_horizon_near(u, grid, finder, seed);
-        shared = found ? std::optional<double>(found->r) : std::nullopt;
-        return shared;
-      } catch (const HorizonFinderError& e) {
-        throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
-      }
+    r.horizon_shift.locate = [l, locate](const State& u, const Grid& grid, double seed, double t) {
+      return locate(l, u, grid, seed, t);
     };
     rhs.emplace_back(layout.grid(l), r);
   }
@@ -98,8 +87,9 @@ std::vector<GbssnRhs> diagnostic_copies(const EvolutionConfig& config,
   RhsParams r = config.rhs;
   r.horizon_shift.search_every_substage = false;
   r.horizon_shift.locate = nullptr;
-  if (r.horizon_shift.variant == HorizonShiftParams::Variant::midstep_update)
-    r.horizon_shift.variant = HorizonShiftParams::Variant::consistent; // differs in searches only
+  using V = HorizonShiftParams::Variant;
+  if (r.horizon_shift.variant == V::midstep_update || r.horizon_shift.variant == V::box_substage)
+    r.horizon_shift.variant = V::consistent; // they differ in searches only
   for (std::size_t l = 0; l < layout.levels(); ++l)
     rhs.emplace_back(layout.grid(l), r);
   return rhs;
@@ -123,8 +113,10 @@ std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs) {
 
 Simulation::Simulation(const EvolutionConfig& config)
     : config_(config), layout_(make_layout(config)), composite_(layout_),
-      rhs_(level_rhs(
-          config_, layout_, [this] { return horizon_level(); }, shared_h_AH_)),
+      rhs_(level_rhs(config_, layout_,
+                     [this](std::size_t l, const State& u, const Grid& g, double seed, double t) {
+                       return locate(l, u, g, seed, t);
+                     })),
       diagnostic_rhs_(diagnostic_copies(config_, layout_)), dudt_(layout_.levels()),
       levels_u_(initial_levels(layout_, config.initial_data)), u_prev_(layout_.levels()),
       dudt_prev_(layout_.levels()), dudt_now_(layout_.levels()), u_out_(layout_.levels()),
@@ -161,13 +153,6 @@ std::uint64_t Simulation::point_evaluations() const {
   return n;
 }
 
-std::size_t Simulation::horizon_level() const {
-  if (layout_.levels() == 1)
-    return 0;
-  const double r = shared_h_AH_.value_or(standard_horizon_radius * config_.initial_data.M);
-  return layout_.finest_level_covering(r, RefinementSettings::horizon_margin_cells);
-}
-
 template <class Search>
 auto Simulation::with_time(Search search) const {
   try {
@@ -175,6 +160,76 @@ auto Simulation::with_time(Search search) const {
   } catch (const HorizonFinderError& e) {
     throw HorizonFinderError(fmt::format("{} (t = {:.6g})", e.what(), t_));
   }
+}
+
+bool Simulation::extrapolated_horizon() const {
+  const auto& hs = config_.rhs.horizon_shift;
+  return layout_.levels() > 1 && hs.active() && !hs.prescribed()
+         && config_.horizon_search.every_steps == 0
+         && hs.variant != HorizonShiftParams::Variant::box_substage;
+}
+
+std::optional<double> Simulation::locate(std::size_t level, const State& u, const Grid& grid,
+                                         double seed, double t) {
+  if (extrapolated_horizon())
+    return horizon_radius_at(t);
+  // a single grid, or the study variant box_substage: the box holding the horizon searches on
+  // its own stage state, the other boxes read its latest value
+  if (layout_.levels() > 1 && level != horizon_level())
+    return shared_h_AH_;
+  try {
+    const auto found = find_horizon_near(u, grid, config_.horizon_search.finder, seed);
+    shared_h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+    return shared_h_AH_;
+  } catch (const HorizonFinderError& e) {
+    throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
+  }
+}
+
+std::optional<double> Simulation::horizon_radius_at(double t) const {
+  const auto& h = h_AH_history_;
+  if (h.empty())
+    return std::nullopt;
+  if (!config_.horizon_search.in_window(t)) // no searches: the last radius is held
+    return h.back()[1];
+  // the Lagrange polynomial through the last (up to four) radii, at t
+  double sum = 0.0;
+  for (std::size_t j = 0; j < h.size(); ++j) {
+    double w = 1.0;
+    for (std::size_t m = 0; m < h.size(); ++m)
+      if (m != j)
+        w *= (t - h[m][0]) / (h[j][0] - h[m][0]);
+    sum += w * h[j][1];
+  }
+  return sum;
+}
+
+void Simulation::search_at_step() {
+  if (!extrapolated_horizon() || !config_.horizon_search.in_window(t_))
+    return;
+  const auto& hs = config_.rhs.horizon_shift;
+  const std::size_t l = horizon_level();
+  const auto found = with_time([&] {
+    return find_horizon_near(levels_u_[l], layout_.grid(l), config_.horizon_search.finder,
+                             horizon_radius_at(t_).value_or(hs.h));
+  });
+  if (!found) { // beta_H = 0 until a horizon is found again
+    h_AH_history_.clear();
+  } else {
+    if (!h_AH_history_.empty() && h_AH_history_.back()[0] == t_)
+      h_AH_history_.pop_back(); // found again at the same time (a resumed run's first step)
+    h_AH_history_.push_back(std::array<double, 2>{t_, found->r});
+    if (h_AH_history_.size() > 4)
+      h_AH_history_.erase(h_AH_history_.begin());
+  }
+  shared_h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+}
+
+std::size_t Simulation::horizon_level() const {
+  if (layout_.levels() == 1)
+    return 0;
+  const double r = shared_h_AH_.value_or(standard_horizon_radius * config_.initial_data.M);
+  return layout_.finest_level_covering(r, RefinementSettings::horizon_margin_cells);
 }
 
 HorizonSearch Simulation::horizons() const {
@@ -205,6 +260,8 @@ std::optional<double> Simulation::horizon_radius() {
     return std::nullopt;
   if (hs.prescribed())
     return hs.prescribed_h_AH(t_);
+  if (extrapolated_horizon())
+    return horizon_radius_at(t_);
   const std::size_t l = horizon_level();
   if (config_.horizon_search.every_steps == 0 && config_.horizon_search.in_window(t_)) {
     const auto found = with_time([&] {
@@ -511,6 +568,7 @@ void Simulation::restore(const Checkpoint& c) {
   rhs_[0].set_evaluations(c.evaluations);
   if (n_levels > 1) {
     shared_h_AH_ = c.shared_h_AH;
+    h_AH_history_ = c.h_AH_history;
     for (std::size_t l = 1; l < n_levels; ++l) {
       rhs_[l].set_horizon_radius(c.level_h_AH[l]);
       // level l takes steps(l) steps of 4 evaluations per step of the hierarchy
@@ -547,6 +605,7 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
   if (layout_.levels() > 1) {
     c.finer.assign(levels_u_.begin() + 1, levels_u_.end());
     c.shared_h_AH = shared_h_AH_before_rhs_; // before the next step's first RHS, as h_AH
+    c.h_AH_history = h_AH_history_;
     for (std::size_t l = 0; l < layout_.levels(); ++l) {
       c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
       c.history.push_back(stepper_.history(l));
@@ -638,6 +697,17 @@ void Simulation::run(Output* out) {
   if (!resumed_) {
     check_finite();
     update_held_horizon();
+    search_at_step();
+    if (layout_.levels() > 1
+        && config_.rhs.horizon_shift.variant == HorizonShiftParams::Variant::box_substage) {
+      // every box starts from the radius found on the box holding the horizon
+      const std::size_t l = horizon_level();
+      const auto found = with_time([&] {
+        return find_horizon_near(levels_u_[l], layout_.grid(l), config_.horizon_search.finder,
+                                 config_.rhs.horizon_shift.h);
+      });
+      shared_h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
+    }
     write(true, true);
   }
   if (step_ >= s.n_steps)
@@ -683,6 +753,7 @@ void Simulation::run(Output* out) {
     check_finite();
     if (const long every = config_.horizon_search.every_steps; every > 0 && n % every == 0)
       update_held_horizon();
+    search_at_step();
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)
     const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
     shared_h_AH_before_rhs_ = shared_h_AH_;

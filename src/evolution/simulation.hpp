@@ -166,6 +166,19 @@ private:
   auto with_time(Search search) const;
   /// Held mode: search for the horizon and hold its radius for the RHS.
   void update_held_horizon();
+  /// Boxes, searches every substage (the default): the one h_AH(t) that every box's RHS uses,
+  /// from the radii found on the box holding the horizon at the last (up to) four steps of the
+  /// hierarchy, extrapolated to each stage's time by their Lagrange polynomial (cubic: error
+  /// O(dt^4), the order of the scheme). Berger-Oliger steps a coarse box before the fine box
+  /// holding the horizon reaches that time, so no box can search at the others' stages.
+  bool extrapolated_horizon() const;
+  std::optional<double> horizon_radius_at(double t) const;
+  /// After every step of the hierarchy (and at the start): a search on the box holding the
+  /// horizon, for horizon_radius_at.
+  void search_at_step();
+  /// The RHS's substage search of `level` (see extrapolated_horizon, and box_substage).
+  std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
+                               double t);
   /// Output between the steps of several levels: each level's state at the output times inside
   /// the coming step, from the RK4 dense output of that level's own (sub)step (mesh::
   /// MeshStepper::on_level_step), so that a fine level is interpolated over its own dt.
@@ -192,8 +205,9 @@ private:
   /// The horizon radius every level's horizon shift uses: found on horizon_level()'s state
   /// (substage searches there, or the held searches); the other levels read it.
   std::optional<double> shared_h_AH_;
-  std::vector<State> dudt_;                                  ///< per level: diagnostic scratch
-  std::vector<State> levels_u_;                              ///< the state of each level
+  std::vector<std::array<double, 2>> h_AH_history_; ///< boxes: (t, h_AH) of the last searches
+  std::vector<State> dudt_;                         ///< per level: diagnostic scratch
+  std::vector<State> levels_u_;                     ///< the state of each level
   std::vector<State> u_prev_, dudt_prev_, dudt_now_, u_out_; ///< per level, output between steps
   State u_composite_;                                        ///< the composite state, for profiles
   std::vector<std::size_t> composite_levels_;                ///< the level of each composite cell

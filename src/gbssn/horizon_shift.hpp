@@ -94,6 +94,9 @@ struct HorizonShiftParams {
     delta_rhs_from_gd,           ///< d_t Delta^r computed with beta_GD (for B) reused for Delta^r
     driver_full_shift,           ///< B driven by d_t Delta^r of the full shift
     midstep_update,              ///< h_AH searched at the 2nd RK substage of every n-th step
+    /// boxes: the box holding the horizon searches at its own substages, every other box uses
+    /// its latest value (an h_AH that jumps across refinement boundaries and lags in time)
+    box_substage,
   };
   Variant variant = Variant::consistent;
   long midstep_every = 1; ///< n of midstep_update

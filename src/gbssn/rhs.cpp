@@ -127,7 +127,8 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     using V = HorizonShiftParams::Variant;
     switch (hs.variant) { // dispatched once per call, not per point
     case V::consistent:
-    case V::midstep_update: // differs only in when h_AH is searched
+    case V::midstep_update: // these two differ only in when and where h_AH is searched
+    case V::box_substage:
       interior<true, V::consistent>(u, dudt);
       break;
     case V::no_shift_derivatives:

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Box-in-box mesh refinement (docs/horizon-shift-study.md, Sec. 6). Every family is one
+# `gbssn1d converge` run, made afresh each time (box runs take seconds; nothing is reused from an
+# earlier invocation); norms are H_L2_R, the areal-radius window norm-Rmin M <= R <= 12 M (the
+# same place in every gauge), and a table gives the RMS over time per resolution and the
+# pairwise orders of those (plots/horizon_study.py table).
+#
+#   bash runs/boxes.sh trumpet   # unshifted 1+log trumpet, 9 boxes, rmax 1024, M/12 ... M/24, to 1000 M
+#   bash runs/boxes.sh thesis    # the published grid: 7 boxes, rmax 128, M/12, M/16, M/24, to 100 M
+#   bash runs/boxes.sh interp    # h = 0.6, 0.89, 1.2, 2: boxes (stage values, quadratic) vs sinh and uniform
+#   bash runs/boxes.sh cost      # wall time against H error: uniform, sinh, boxes, standard and stretched
+#   bash runs/boxes.sh speed     # the stretched 3-resolution study to 1000 M as one converge -j 2
+#
+# Output under out/boxes/: one folder per family, tables on stdout (also in out/boxes/*.txt),
+# figures *.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+out=out/boxes
+mkdir -p "$out"
+jobs=$(nproc)
+
+family() { # family NAME "N list" [evolve flags]: one converge run into out/boxes/NAME, made afresh
+  local name=$1 Ns=$2
+  shift 2
+  rm -rf "${out:?}/$name"
+  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
+    echo "  ($name: a member stopped, see $out/$name.log)"
+}
+table() { $py plots/horizon_study.py table "$@"; }
+
+stage=${1:-thesis}
+case $stage in
+trumpet)
+  # 9 boxes to rmax 1024: finest box r <= 4 M with spacing 4/N M (N = 48: M/12)
+  boxes=(--grid boxes --levels 9 --rmax 1024 --id 1log-trumpet --tmax 1000 --dt-series 1
+    --dt-profiles 1000 --norm-Rmin 3)
+  family trumpet-1000M 48,64,96 "${boxes[@]}"
+  family trumpet-1000M-fine 64,96,128 "${boxes[@]}"
+  family trumpet-1000M-ko0 48,64,96 "${boxes[@]}" --ko-sigma 0
+  family trumpet-1000M-rmax2048 48,64,96 "${boxes[@]}" --levels 10 --rmax 2048
+  for w in "10 1000" "10 500" "500 1000"; do
+    set -- $w
+    echo "== 1+log trumpet on 9 boxes, t in [$1, $2] M"
+    table "$out/trumpet-1000M" "$out"/trumpet-1000M*/ --t0 "$1" --t1 "$2"
+  done | tee "$out/trumpet.txt"
+  $py plots/horizon_study.py figure --cols 2 -o "$out/trumpet.png" "$out"/trumpet-1000M*/
+  ;;
+thesis)
+  # 7 boxes to 128 M with 48, 64 and 96 points across each box (N = 24, 32, 48 cells on r >= 0):
+  # finest spacing M/12, M/16, M/24
+  boxes=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 10)
+  published=(--rah-profile rational --rah-width 1 --rah-normal unit)
+  for id in 1log-trumpet maximal-trumpet; do
+    family "thesis-$id-standard" 24,32,48 "${boxes[@]}" --id $id
+    family "thesis-$id-stretch" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89
+    family "thesis-$id-stretch-published" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89 \
+      "${published[@]}"
+    family "thesis-$id-shrink" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.6
+    family "thesis-$id-shrink-published" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.6 \
+      "${published[@]}"
+    # h_AH found by the box holding the horizon at its own substages, the other boxes using its
+    # latest value (hypothesis 2 of the study), and h_AH held over each step of the hierarchy
+    family "thesis-$id-stretch-box-substage" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89 \
+      --rah-variant box-substage
+    family "thesis-$id-shrink-box-substage" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.6 \
+      --rah-variant box-substage
+    family "thesis-$id-stretch-held" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89 \
+      --ah-every step
+  done
+  for id in 1log-trumpet maximal-trumpet; do
+    echo "== $id on the published grid (7 boxes, rmax 128), t in [10, 100] M"
+    table "$out/thesis-$id-standard" "$out/thesis-$id"-*/ --t0 10 --t1 100
+  done | tee "$out/thesis.txt"
+  $py plots/horizon_study.py figure --cols 5 -o "$out/thesis.png" "$out"/thesis-*-trumpet-*/
+  ;;
+interp)
+  # the same finest spacing M/12, M/16, M/24 on: 7 boxes (stage values, dense output, quadratic
+  # in time as BAM and Carpet), the sinh grid (innermost cell) and uniform grids, rmax 128
+  boxes=(--grid boxes --levels 7 --rmax 128)
+  common=(--id 1log-trumpet --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100)
+  for h in std 0.6 0.89 1.2 2; do
+    shift_flags=()
+    [ $h = std ] || shift_flags=(--rahA 0.5 --rah0 $h)
+    family "interp-h$h-boxes-stages" 24,32,48 "${common[@]}" "${boxes[@]}" "${shift_flags[@]}"
+    family "interp-h$h-boxes-quadratic" 24,32,48 "${common[@]}" "${boxes[@]}" "${shift_flags[@]}" \
+      --time-interp quadratic
+    family "interp-h$h-boxes-held" 24,32,48 "${common[@]}" "${boxes[@]}" "${shift_flags[@]}" \
+      --time-interp quadratic --ah-every step
+    family "interp-h$h-sinh" 384,512,768 "${common[@]}" --grid sinh --dr-inner 0.08 "${shift_flags[@]}"
+    family "interp-h$h-uniform" 1536,2048,3072 "${common[@]}" --grid uniform "${shift_flags[@]}"
+  done
+  for h in 0.6 0.89 1.2 2; do
+    echo "== h = $h M (A = 0.5): ratio to the standard gauge on the same grid kind"
+    for kind in boxes-stages boxes-quadratic boxes-held sinh uniform; do
+      table "$out/interp-hstd-$kind" "$out/interp-h$h-$kind" --t0 10 --t1 100
+    done
+  done | tee "$out/interp.txt"
+  $py plots/horizon_study.py figure --cols 5 -o "$out/interp.png" "$out"/interp-h0.89-*/ \
+    "$out"/interp-h2-*/
+  ;;
+cost)
+  # wall time (one core, each member alone) against the RMS of H_L2_R over [10, 1000] M
+  $py plots/boxes_cost.py --out "$out/cost" --tmax 1000 | tee "$out/cost.txt"
+  ;;
+speed)
+  # the stretched study on 9 boxes to rmax 1024, finest M/8, M/12, M/16, to 1000 M
+  rm -rf "$out/speed"
+  /usr/bin/time -f "wall %e s" build/gbssn1d converge --N 32,48,64 -j 2 --out "$out/speed" \
+    --grid boxes --levels 9 --rmax 1024 --id 1log-trumpet --rahA 0.5 --rah0 0.89 --tmax 1000 \
+    --dt-series 1 --dt-profiles 1000 2>&1 | tail -1
+  ;;
+*)
+  echo "usage: $0 trumpet|thesis|interp|cost|speed" >&2
+  exit 2
+  ;;
+esac
