@@ -34,12 +34,14 @@ stage=${1:-thesis}
 case $stage in
 trumpet)
   # 9 boxes to rmax 1024: finest box r <= 4 M with spacing 4/N M (N = 48: M/12)
-  boxes=(--grid boxes --levels 9 --rmax 1024 --id 1log-trumpet --tmax 1000 --dt-series 1
-    --dt-profiles 1000 --norm-Rmin 3)
+  common=(--grid boxes --id 1log-trumpet --tmax 1000 --dt-series 1 --dt-profiles 1000 --norm-Rmin 3)
+  boxes=("${common[@]}" --levels 9 --rmax 1024)
   family trumpet-1000M 48,64,96 "${boxes[@]}"
   family trumpet-1000M-fine 64,96,128 "${boxes[@]}"
   family trumpet-1000M-ko0 48,64,96 "${boxes[@]}" --ko-sigma 0
-  family trumpet-1000M-rmax2048 48,64,96 "${boxes[@]}" --levels 10 --rmax 2048
+  # the same boxes inside a tenth box to 2048 M: the outer boundary's influence cannot reach
+  # R = 12 M before about 1440 M
+  family trumpet-1000M-rmax2048 48,64,96 "${common[@]}" --levels 10 --rmax 2048
   for w in "10 1000" "10 500" "500 1000"; do
     set -- $w
     echo "== 1+log trumpet on 9 boxes, t in [$1, $2] M"
@@ -78,7 +80,7 @@ thesis)
 interp)
   # the same finest spacing M/12, M/16, M/24 on: 7 boxes (stage values, dense output, quadratic
   # in time as BAM and Carpet), the sinh grid (innermost cell) and uniform grids, rmax 128
-  boxes=(--grid boxes --levels 7 --rmax 128)
+  boxes=(--grid boxes --levels 7)
   common=(--id 1log-trumpet --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100)
   for h in std 0.6 0.89 1.2 2; do
     shift_flags=()

@@ -188,3 +188,33 @@ TEST_CASE("the horizon of boxes is found on the finest box, as on a single fine 
   p.N = 16; // finest box r <= 2 M with 16 cells: the horizon (0.83 M) is 4 cells from its edge
   CHECK(simulation(p).horizon_level() == 5);
 }
+
+TEST_CASE("a horizon or rah0 outside the finest box's inner part is warned about, once") {
+  auto box_warnings = [](Params p) {
+    resolve_defaults(p);
+    validate(p);
+    int n = 0;
+    for (const auto& w : warnings(p))
+      n += w.find("finest box") != std::string::npos;
+    return n;
+  };
+  Params p = boxes(7, 128.0, 32); // finest box r <= 2 M: inner part r <= 2 (1 - 12/32) = 1.25 M
+  p.tmax = 1.0;
+  CHECK(box_warnings(p) == 0);
+  p.rahA = 0.5;
+  p.rah0 = 1.2;
+  CHECK(box_warnings(p) == 0);
+  p.rah0 = 1.5; // beyond the inner part
+  CHECK(box_warnings(p) == 1);
+  p.rahA = 0.0; // no horizon shift: rah0 plays no part
+  CHECK(box_warnings(p) == 0);
+  p.levels = 8; // finest box r <= 1 M: the standard horizon 0.83 M is beyond 0.625 M
+  CHECK(box_warnings(p) == 1);
+  // the default number of boxes keeps the finest box out to 4 M
+  Params q = boxes(7, 1024.0, 32);
+  q.levels.reset();
+  resolve_defaults(q);
+  CHECK(q.levels == 9);
+  CHECK(levels_rule(128.0, 1.0) == 6);
+  CHECK(levels_rule(100.0, 1.0) == 5);
+}
