@@ -76,6 +76,10 @@ thesis)
     table "$out/thesis-$id-standard" "$out/thesis-$id"-*/ --t0 10 --t1 100
   done | tee "$out/thesis.txt"
   $py plots/horizon_study.py figure --cols 5 -o "$out/thesis.png" "$out"/thesis-*-trumpet-*/
+  # the unshifted test of the published grid: the change of the conformal metric a since t = 0,
+  # scaled for 4th order, at 10 M and 50 M, and the outer boundary's error front
+  $py plots/error_profiles.py "$out"/thesis-1log-trumpet-standard/N{24,32,48} -y a --times 10,50 \
+    -o "$out/thesis-metric-error.png" | tee -a "$out/thesis.txt"
   ;;
 interp)
   # the same finest spacing M/12, M/16, M/24 on: 7 boxes (stage values, dense output, quadratic
@@ -93,14 +97,40 @@ interp)
     family "interp-h$h-sinh" 384,512,768 "${common[@]}" --grid sinh --dr-inner 0.08 "${shift_flags[@]}"
     family "interp-h$h-uniform" 1536,2048,3072 "${common[@]}" --grid uniform "${shift_flags[@]}"
   done
+  # h = 2 lies on the edge of the published grid's finest box (r <= 2 M): the same finest
+  # spacings with 6 boxes (finest r <= 4 M, N = 48, 64, 96)
+  six=(--grid boxes --levels 6)
+  family interp-hstd-boxes6-stages 48,64,96 "${common[@]}" "${six[@]}"
+  family interp-hstd-boxes6-quadratic 48,64,96 "${common[@]}" "${six[@]}" --time-interp quadratic
+  family interp-h2-boxes6-stages 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2
+  family interp-h2-boxes6-dense 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2 \
+    --time-interp dense
+  family interp-h2-boxes6-quadratic 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2 \
+    --time-interp quadratic
+  family interp-h2-boxes6-quadratic-nosub 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 \
+    --rah0 2 --time-interp quadratic --no-subcycling
+  family interp-hstd-boxes6-quadratic-nosub 48,64,96 "${common[@]}" "${six[@]}" \
+    --time-interp quadratic --no-subcycling
   for h in 0.6 0.89 1.2 2; do
     echo "== h = $h M (A = 0.5): ratio to the standard gauge on the same grid kind"
     for kind in boxes-stages boxes-quadratic boxes-held sinh uniform; do
       table "$out/interp-hstd-$kind" "$out/interp-h$h-$kind" --t0 10 --t1 100
     done
   done | tee "$out/interp.txt"
-  $py plots/horizon_study.py figure --cols 5 -o "$out/interp.png" "$out"/interp-h0.89-*/ \
-    "$out"/interp-h2-*/
+  {
+    echo "== h = 2 M on 6 boxes (finest r <= 4 M), M/12 ... M/24"
+    for kind in stages dense quadratic quadratic-nosub; do
+      std=$kind
+      [ $kind = dense ] && std=stages
+      table "$out/interp-hstd-boxes6-$std" "$out/interp-h2-boxes6-$kind" --t0 10 --t1 100
+    done
+    echo "== the standard gauge on each grid kind"
+    for kind in boxes-stages boxes-quadratic sinh uniform boxes6-stages boxes6-quadratic; do
+      table "$out/interp-hstd-$kind" "$out/interp-hstd-$kind" --t0 10 --t1 100
+    done
+  } | tee -a "$out/interp.txt"
+  $py plots/horizon_study.py figure --cols 4 -o "$out/interp.png" "$out"/interp-h1.2-boxes-*/ \
+    "$out"/interp-h1.2-sinh "$out"/interp-h2-boxes6-*/
   ;;
 cost)
   # wall time (one core, each member alone) against the RMS of H_L2_R over [10, 1000] M

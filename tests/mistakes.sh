@@ -35,6 +35,7 @@ mistakes=(
   "boxes: every box its own latest h_AH (no one h_AH(t))|src/evolution/simulation.cpp|         && hs.variant != HorizonShiftParams::Variant::box_substage;|         && false;"
   "boxes: h_AH history not restored from a checkpoint|src/evolution/simulation.cpp|    h_AH_history_ = c.h_AH_history;|    ;"
   "boxes: checkpoint without the quadratic time levels|src/evolution/simulation.cpp|      c.history.push_back(stepper_.history(l));|      c.history.emplace_back();"
+  "boxes: quadratic earlier time levels made without the horizon shift|src/evolution/simulation.cpp|    if (reinitialises())\n      stepper_.initialise(levels_u_, t_);|    if (false)\n      stepper_.initialise(levels_u_, t_);"
   "boxes: composite origin ghosts from the coarsest box|src/mesh/composite.cpp|    out[i] = per_level[finest][i];|    out[i] = per_level[0][i];"
   "checkpoint written in place, not renamed over|src/io/output.cpp|  const std::filesystem::path tmp = path.string() + \".tmp\";|  const std::filesystem::path tmp = path;"
   "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"

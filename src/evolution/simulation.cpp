@@ -135,8 +135,14 @@ Simulation::Simulation(const EvolutionConfig& config)
   // every level's boundary data from its parent, and the coarse levels restricted from the fine
   // ones (a single grid: its origin ghosts only)
   stepper_.initialise(levels_u_, 0.0);
-  for (const auto& r : rhs_) // e.g. the backward step of quadratic time interpolation
-    initial_evaluations_.push_back(r.evaluations());
+  // e.g. the backward step of quadratic time interpolation, made twice if run() makes it again
+  for (const auto& r : rhs_)
+    initial_evaluations_.push_back(r.evaluations() * (reinitialises() ? 2 : 1));
+}
+
+bool Simulation::reinitialises() const {
+  return layout_.levels() > 1 && config_.rhs.horizon_shift.active()
+         && config_.refinement.time == mesh::TimeInterpolation::quadratic;
 }
 
 std::uint64_t Simulation::evaluations() const {
@@ -708,6 +714,12 @@ void Simulation::run(Output* out) {
       });
       shared_h_AH_ = found ? std::optional<double>(found->r) : std::nullopt;
     }
+    // The stepper was initialised before the horizon was found: quadratic time interpolation's
+    // earlier time levels (one RK4 step backwards) are made again with the horizon shift that
+    // the evolution will use (without it they lack beta_H, an O(dt) inconsistency at every fine
+    // boundary in the first step that the Gamma-driver keeps)
+    if (reinitialises())
+      stepper_.initialise(levels_u_, t_);
     write(true, true);
   }
   if (step_ >= s.n_steps)

@@ -176,6 +176,9 @@ private:
   /// After every step of the hierarchy (and at the start): a search on the box holding the
   /// horizon, for horizon_radius_at.
   void search_at_step();
+  /// Whether run() initialises the stepper again once h_AH is known (quadratic time
+  /// interpolation with the horizon shift: its earlier time levels need beta_H).
+  bool reinitialises() const;
   /// The RHS's substage search of `level` (see extrapolated_horizon, and box_substage).
   std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
                                double t);
