@@ -38,7 +38,9 @@ trumpet)
   boxes=("${common[@]}" --levels 9 --rmax 1024)
   family trumpet-1000M 48,64,96 "${boxes[@]}"
   family trumpet-1000M-fine 64,96,128 "${boxes[@]}"
-  family trumpet-1000M-ko0 48,64,96 "${boxes[@]}" --ko-sigma 0
+  for ko in 0 0.05 0.2; do
+    family "trumpet-1000M-ko$ko" 48,64,96 "${boxes[@]}" --ko-sigma $ko
+  done
   # the same boxes inside a tenth box to 2048 M: the outer boundary's influence cannot reach
   # R = 12 M before about 1440 M
   family trumpet-1000M-rmax2048 48,64,96 "${common[@]}" --levels 10 --rmax 2048
