@@ -91,7 +91,7 @@ inline constexpr std::size_t sinh_reference_N = 400;
 struct GridSpec {
   GridKind kind = GridKind::sinh;
   std::size_t N = 400; ///< interior cells
-  double rmax = 100.0;
+  double rmax = 1000.0;
   double dr_inner = 0.02; ///< sinh: innermost cell width at N = sinh_reference_N
 };
 
