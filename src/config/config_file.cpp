@@ -84,7 +84,8 @@ const std::vector<ParamSpec>& param_specs() {
       {"rah-ramp", &Params::rah_ramp, "Horizon",
        "T: the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
       {"rah-profile", &Params::rah_profile, "Horizon",
-       "f(r), q = r/w: auto (rational with w = 3 M to stretch, rah0 >= 0.8304 M; gauss with "
+       "f(r), q = r/w: auto (rational with w = 3 max(rah0, M) to stretch, rah0 >= 0.8304 M; gauss "
+       "with "
        "w = 1 M to shrink; "
        "--rah-width is then not used) | rational q/(1+q^2) (published) | rational3 "
        "q^3/(1+q^4) | gauss (q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)"},

@@ -8,6 +8,7 @@
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -126,9 +127,12 @@ inline constexpr double standard_horizon_radius = 0.8304;
 inline void resolve_automatic_profile(HorizonShiftParams& params, double M) {
   if (params.profile != ShiftProfile::automatic)
     return;
+  // docs/horizon-shift-study.md Sec. 3 and Sec. 8: a stretch to h takes w = 3 max(h, M), so that
+  // the profile's peak (at r = w) stays outside the horizon it moves (w = 3 M at h = 2 M left H
+  // 2.5 times the standard gauge's at M/8; w = 6 M: 1.2 times)
   const bool stretch = params.h >= standard_horizon_radius * M;
   params.profile = stretch ? ShiftProfile::rational : ShiftProfile::gauss;
-  params.width = (stretch ? 3.0 : 1.0) * M;
+  params.width = stretch ? 3.0 * std::max(params.h, M) : 1.0 * M;
 }
 
 /// f(r_i / w) on every point of the grid (odd in r).

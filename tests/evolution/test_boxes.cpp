@@ -233,6 +233,9 @@ TEST_CASE("a horizon stretched to 2 M on six boxes: RK4 stage values converge at
       Params p = boxes(6, 128.0, n);
       p.rahA = 0.5;
       p.rah0 = 2.0;
+      // the profile of the study doc's Sec. 6.3 (the default before w = 3 max(h, M))
+      p.rah_profile = "rational";
+      p.rah_width = 3.0;
       p.tmax = 40.0;
       p.dt_series = 0.5;
       p.time_interp = time_interp;

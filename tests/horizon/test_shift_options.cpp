@@ -120,7 +120,8 @@ TEST_CASE("--rah-ramp: the strength grows as A (1 - exp(-(t/T)^2))") {
   CHECK(ramped[i] / full[i] == doctest::Approx(1.0 - std::exp(-0.25)).epsilon(1e-14));
 }
 
-TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 1 M to shrink") {
+TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss with w = 1 M to "
+          "shrink") {
   HorizonShiftParams stretch;
   stretch.A = 0.5;
   stretch.h = 1.7; // M = 2: the standard horizon is at 1.6608
@@ -130,7 +131,12 @@ TEST_CASE("--rah-profile auto: rational with w = 3 M to stretch, gauss with w = 
   resolve_automatic_profile(stretch, 2.0);
   resolve_automatic_profile(shrink, 2.0);
   CHECK(stretch.profile == ShiftProfile::rational);
-  CHECK(stretch.width == 6.0);
+  CHECK(stretch.width == 6.0); // h = 1.7 < M = 2: w = 3 M
+  HorizonShiftParams wide = stretch;
+  wide.profile = ShiftProfile::automatic;
+  wide.h = 4.0; // h = 2 M: w = 3 h
+  resolve_automatic_profile(wide, 2.0);
+  CHECK(wide.width == 12.0);
   CHECK(shrink.profile == ShiftProfile::gauss);
   CHECK(shrink.width == 2.0);
   // an explicit profile keeps its width

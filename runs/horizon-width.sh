@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The profile width of large stretches (docs/horizon-shift-study.md, Sec. 8): 1+log trumpet,
+# A = 0.5, uniform grids, rmax 200 M, M/8, M/12, M/16, to 100 M; the standard gauge, and each h
+# with the rational profile at several widths (the default w = 3 max(h, M) among them). Every
+# family is one converge run, made afresh in out/horizon-width/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+out=out/horizon-width
+mkdir -p "$out"
+common=(--grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100 --id 1log-trumpet)
+family() {
+  local name=$1
+  shift
+  rm -rf "${out:?}/$name"
+  build/gbssn1d converge --N 1600,2400,3200 -j "$(nproc)" --out "$out/$name" "${common[@]}" "$@" \
+    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
+}
+family standard
+for hw in 0.89:3 0.89:2.67 1.2:3 1.2:3.6 1.5:3 1.5:4.5 2:3 2:4 2:6; do
+  family "h${hw%%:*}-w${hw#*:}" --rahA 0.5 --rah0 "${hw%%:*}" --rah-profile rational --rah-width "${hw#*:}"
+done
+family h2-default --rahA 0.5 --rah0 2
+$py plots/horizon_study.py table "$out/standard" "$out"/h*/ --t0 10 --t1 100 | tee "$out/table.txt"
