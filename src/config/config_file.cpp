@@ -53,7 +53,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"M", &Params::M, "Initial data", "black-hole mass"},
       {"lapse0", &Params::lapse0, "Initial data",
        "initial lapse of the wormhole: one | precollapsed"},
-      {"eta", &Params::eta, "Gauge", "Gamma-driver damping eta (1/M); default 2/M"},
+      {"eta", &Params::eta, "Gauge",
+       "Gamma-driver damping eta (1/M); default 2/M, 1/M for a shrink of wormhole data "
+       "(--rahA != 0, --rah0 < 0.8304 M)"},
       {"advective-shift", &Params::advective_shift, "Gauge",
        "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
       {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
@@ -138,7 +140,7 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
 
 /// The rule a flag's unset value stands for, shown by --help as its default.
 const std::map<std::string, std::string>& default_rules() {
-  static const std::map<std::string, std::string> rules{{"eta", "2/M"},
+  static const std::map<std::string, std::string> rules{{"eta", "2/M (1/M: wormhole shrinks)"},
                                                         {"norm-rmax", "min(10 M, rmax/2)"},
                                                         {"ah-tmax", "none"},
                                                         {"levels", "1 + floor(log2(rmax/4M))"}};

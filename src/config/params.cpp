@@ -102,6 +102,10 @@ std::string printable(const std::string& s) {
   return out;
 }
 
+bool shrinks_wormhole(const Params& p) {
+  return p.id == "wormhole" && p.rahA > 0.0 && p.rah0 < standard_horizon_radius * p.M;
+}
+
 int levels_rule(double rmax, double M) {
   const double levels = 1.0 + std::floor(std::log2(rmax / (4.0 * M)));
   return std::isfinite(levels) ? static_cast<int>(std::clamp(levels, 2.0, 30.0)) : 2;
@@ -139,8 +143,9 @@ mesh::StepperOptions stepper_options(const Params& p) {
 void resolve_defaults(Params& p) {
   if (p.grid == "boxes" && !p.levels)
     p.levels = levels_rule(p.rmax, p.M);
+  // M and rmax are validated afterwards: a bad M gives a non-finite eta
   if (!p.eta)
-    p.eta = 2.0 / p.M; // M and rmax are validated afterwards: a bad M gives a non-finite eta
+    p.eta = (shrinks_wormhole(p) ? 1.0 : 2.0) / p.M;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
 }
@@ -150,13 +155,12 @@ std::vector<std::string> warnings(const Params& p) {
   // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
   // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
   // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
-  if (p.id == "wormhole" && p.rahA > 0.0 && p.rah0 < standard_horizon_radius * p.M
-      && p.eta.value_or(2.0 / p.M) > 1.0 / p.M)
+  if (shrinks_wormhole(p) && p.eta.value_or(1.0 / p.M) > 1.0 / p.M)
     w.push_back(fmt::format(
         "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
-        "then drifts and such runs went non-finite after 100-200 M; --eta 1 held them to 1000 M "
-        "(docs/horizon-shift-study.md, Sec. 4)",
-        num(p.rah0), num(p.eta.value_or(2.0 / p.M))));
+        "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
+        "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
+        num(p.rah0), num(p.eta.value_or(1.0 / p.M))));
   // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
   // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
   // number measured there after it holds boundary reflections.

@@ -39,7 +39,8 @@ struct Params {
   double M = evolution_defaults().initial_data.M;
   std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
   // gauge
-  std::optional<double> eta; ///< Gamma-driver damping; unset: 2/M (resolve_defaults)
+  /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
+  std::optional<double> eta;
   bool advective_shift = false;
   bool non_advective_lapse = false;
   // numerics
@@ -104,6 +105,12 @@ private:
 
 /// Non-printable bytes of a text as \xNN, for messages that quote user input.
 std::string printable(const std::string& s);
+
+/// A horizon shift that shrinks the horizon of wormhole data (rahA != 0, rah0 below the
+/// standard 0.8304 M): with eta = 2/M the Gamma-driver does not settle on wormhole data and such
+/// runs go non-finite after 100-200 M; eta = 1/M holds them (docs/horizon-shift-study.md,
+/// Sec. 4.2 and Sec. 9), so it is their default.
+bool shrinks_wormhole(const Params& p);
 
 /// The default number of boxes: the most levels whose finest box still reaches r = 4 M,
 /// 1 + floor(log2(rmax / 4M)), at least 2 (rmax 128: 6 levels; rmax 1024: 9).

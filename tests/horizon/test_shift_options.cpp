@@ -359,23 +359,27 @@ TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24
   }
 }
 
-TEST_CASE("a wormhole shrink with eta > 1/M is warned about, eta = 1/M, trumpets and stretches "
-          "are not") {
+TEST_CASE("a wormhole shrink defaults to eta = 1/M, and is warned about with eta > 1/M, "
+          "trumpets and stretches keep 2/M") {
   Params p;
   p.id = "wormhole";
   p.rahA = 0.5;
   p.rah0 = 0.6;
+  p.M = 2.0;
+  p.rah0 = 1.2; // below the standard 0.8304 M = 1.66
   Params q = p;
   resolve_defaults(q);
-  REQUIRE(warnings(q).size() == 1);
-  CHECK(warnings(q)[0].find("--eta 1") != std::string::npos);
-  q.eta = 1.0;
+  CHECK(q.eta == 0.5); // 1/M
   CHECK(warnings(q).empty());
-  for (auto change : {+[](Params& x) { x.id = "1log-trumpet"; }, +[](Params& x) { x.rah0 = 0.9; },
+  q.eta = 1.0; // 2/M, given
+  REQUIRE(warnings(q).size() == 1);
+  CHECK(warnings(q)[0].find("eta = 1/M, their default") != std::string::npos);
+  for (auto change : {+[](Params& x) { x.id = "1log-trumpet"; }, +[](Params& x) { x.rah0 = 1.7; },
                       +[](Params& x) { x.rahA = 0.0; }}) {
     Params r = p;
     change(r);
     resolve_defaults(r);
+    CHECK(r.eta == 1.0); // 2/M
     CHECK(warnings(r).empty());
   }
 }
