@@ -22,4 +22,9 @@ for hw in 0.89:3 0.89:2.67 1.2:3 1.2:3.6 1.5:3 1.5:4.5 2:3 2:4 2:6; do
   family "h${hw%%:*}-w${hw#*:}" --rahA 0.5 --rah0 "${hw%%:*}" --rah-profile rational --rah-width "${hw#*:}"
 done
 family h2-default --rahA 0.5 --rah0 2
-$py plots/horizon_study.py table "$out/standard" "$out"/h*/ --t0 10 --t1 100 | tee "$out/table.txt"
+family maximal-standard --id maximal-trumpet
+family maximal-h2-default --id maximal-trumpet --rahA 0.5 --rah0 2
+{
+  $py plots/horizon_study.py table "$out/standard" "$out"/h*/ --t0 10 --t1 100
+  $py plots/horizon_study.py table "$out/maximal-standard" "$out/maximal-h2-default" --t0 10 --t1 100
+} | tee "$out/table.txt"
