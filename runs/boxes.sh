@@ -89,8 +89,10 @@ interp)
   boxes=(--grid boxes --levels 7)
   common=(--id 1log-trumpet --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100)
   for h in std 0.6 0.89 1.2 2; do
+    # stretches with w = 3 M, the auto width when this comparison was made (docs Sec. 6.3, 8)
     shift_flags=()
     [ $h = std ] || shift_flags=(--rahA 0.5 --rah0 $h)
+    case $h in 0.89 | 1.2 | 2) shift_flags+=(--rah-profile rational --rah-width 3) ;; esac
     family "interp-h$h-boxes-stages" 24,32,48 "${common[@]}" "${boxes[@]}" "${shift_flags[@]}"
     family "interp-h$h-boxes-quadratic" 24,32,48 "${common[@]}" "${boxes[@]}" "${shift_flags[@]}" \
       --time-interp quadratic
@@ -102,15 +104,16 @@ interp)
   # h = 2 lies on the edge of the published grid's finest box (r <= 2 M): the same finest
   # spacings with 6 boxes (finest r <= 4 M, N = 48, 64, 96)
   six=(--grid boxes --levels 6)
+  w3=(--rah-profile rational --rah-width 3)
   family interp-hstd-boxes6-stages 48,64,96 "${common[@]}" "${six[@]}"
   family interp-hstd-boxes6-quadratic 48,64,96 "${common[@]}" "${six[@]}" --time-interp quadratic
-  family interp-h2-boxes6-stages 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2
+  family interp-h2-boxes6-stages 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2 "${w3[@]}"
   family interp-h2-boxes6-dense 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2 \
-    --time-interp dense
+    "${w3[@]}" --time-interp dense
   family interp-h2-boxes6-quadratic 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 --rah0 2 \
-    --time-interp quadratic
+    "${w3[@]}" --time-interp quadratic
   family interp-h2-boxes6-quadratic-nosub 48,64,96 "${common[@]}" "${six[@]}" --rahA 0.5 \
-    --rah0 2 --time-interp quadratic --no-subcycling
+    --rah0 2 "${w3[@]}" --time-interp quadratic --no-subcycling
   family interp-hstd-boxes6-quadratic-nosub 48,64,96 "${common[@]}" "${six[@]}" \
     --time-interp quadratic --no-subcycling
   for h in 0.6 0.89 1.2 2; do
