@@ -4,8 +4,11 @@
 # three resolutions, and draws the figures into demo/. About a minute on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+echo "== set-up: Debian packages that are missing (apt-get), then a Release build in build/"
+echo "   (the first build takes about two minutes on 2 cores; later ones seconds)"
 bash .ci/install-deps
 bash .ci/build >/dev/null
+echo "== built: $(build/gbssn1d --version 2>/dev/null || echo build/gbssn1d)"
 g=build/gbssn1d
 py=/usr/bin/python3
 rm -rf demo && mkdir -p demo

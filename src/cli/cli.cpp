@@ -4,6 +4,7 @@
 #include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/console.hpp"
+#include "core/registry.hpp"
 #include "core/stop_signal.hpp"
 #include "evolution/simulation.hpp"
 #include "study/converge.hpp"
@@ -372,7 +373,12 @@ int run_cli(int argc, char** argv) {
   add_number_option(*converge_cmd, "-j,--jobs", converge_options.jobs, "members run at once");
   converge_cmd->add_option("--out", converge_options.out, "output directory")->required();
   converge_cmd->add_flag("--force", converge_options.force, "write into a non-empty --out");
-  converge_cmd->add_option("--fields", fields, "fields whose differences give orders")
+  std::string field_names;
+  for (const auto& entry : registry)
+    field_names += (field_names.empty() ? "" : ", ") + std::string(entry.name);
+  converge_cmd
+      ->add_option("--fields", fields,
+                   "fields whose differences give orders, comma separated, from: " + field_names)
       ->capture_default_str();
   converge_cmd->add_option("--scaled-times", scaled_times,
                            "times of the Richardson-scaled H profiles (default: tmax)");
@@ -391,7 +397,9 @@ int run_cli(int argc, char** argv) {
                    "flag=value1,value2,... (repeat for more flags); flags that change together "
                    "share an axis: flag1,flag2=a1:b1,a2:b2")
       ->required();
-  add_number_option(*sweep_cmd, "-j,--jobs", sweep_options.jobs, "members run at once");
+  CLI::Option* sweep_jobs =
+      add_number_option(*sweep_cmd, "-j,--jobs", sweep_options.jobs,
+                        "members run at once (not with --emit-tasks: the scheduler runs them)");
   sweep_cmd->add_option("--out", sweep_options.out, "output directory (a rerun resumes)")
       ->required();
   add_number_option(*sweep_cmd, "--progress-every", sweep_options.progress_every,
@@ -453,6 +461,10 @@ int run_cli(int argc, char** argv) {
       return converge(converge_options, N_list, factors, fields, scaled_times,
                       pass_through(*converge_cmd, {"N", "out", "force"}));
     if (sweep_cmd->parsed()) {
+      if (!sweep_options.emit_tasks.empty() && sweep_jobs->count() > 0)
+        throw ParamError("-j", std::to_string(sweep_options.jobs),
+                         "has no effect with --emit-tasks: the lines run as the scheduler runs "
+                         "them (e.g. `parallel -j N < TASKS`, or an array job)");
       check_jobs(sweep_options.jobs);
       if (!std::isfinite(sweep_options.progress_every) || sweep_options.progress_every < 0.0)
         throw ParamError("--progress-every", fmt::format("{}", sweep_options.progress_every),

@@ -164,9 +164,15 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
   CHECK(err.find("rah-variant=delta-rhs-from-gd_cfl=0.25 blew-up") != std::string::npos);
   CHECK(err.find("rah-variant=consistent_cfl=0.25 ok") != std::string::npos);
 
-  // the same sweep as task lines for GNU parallel or a Slurm array
+  // the same sweep as task lines for GNU parallel or a Slurm array; -j means nothing there and
+  // is refused
   const fs::path tasks = scratch("tasks.txt");
-  REQUIRE(run(sweep + " --emit-tasks " + tasks.string()) == 0);
+  CHECK(run(sweep + " --emit-tasks " + tasks.string(), &err) == 2);
+  CHECK(err.find("-j") != std::string::npos);
+  CHECK_FALSE(fs::exists(tasks));
+  std::string emit = sweep;
+  emit.replace(emit.find("sweep -j 2 "), 11, "sweep ");
+  REQUIRE(run(emit + " --emit-tasks " + tasks.string()) == 0);
   std::ifstream t(tasks);
   int lines = 0;
   for (std::string line; std::getline(t, line); ++lines) {
