@@ -14,9 +14,29 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 using namespace gbssn1d;
+
+namespace {
+
+/// 1+log-trumpet data on `grid_flag`'s grid, plain or with the horizon-adjusting shift
+/// (rahA = 0.5, rah0 = 0.89), validated as the command line would.
+Params trumpet(int n, double rmax, const std::string& grid_flag, bool horizon_shift) {
+  Params p;
+  p.N = n;
+  p.rmax = rmax;
+  p.grid = grid_flag;
+  p.id = "1log-trumpet";
+  if (horizon_shift) {
+    p.rahA = 0.5;
+    p.rah0 = 0.89;
+  }
+  return p;
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"gbssn1d RHS throughput: points x RHS evaluations per second on one core, "
@@ -41,17 +61,9 @@ int main(int argc, char** argv) {
   fmt::print("# shift N evaluations seconds points_x_rhs_per_s ns_per_point rk4_steps_per_s\n");
   for (const bool horizon_shift : {false, true})
     for (int n : sizes) {
-      Params p;
-      p.N = n;
-      p.rmax = 100.0;
-      p.grid = "sinh";
+      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
       p.dr_inner = 0.01; // one sinh map for every N (innermost 0.01 M at N = 400)
-      p.id = "1log-trumpet";
       p.tmax = 0.0;
-      if (horizon_shift) {
-        p.rahA = 0.5;
-        p.rah0 = 0.89;
-      }
       resolve_defaults(p);
       validate(p);
       Simulation sim(evolution_config(p));
@@ -88,17 +100,9 @@ int main(int argc, char** argv) {
   fmt::print("# shift N hierarchy_steps seconds points_x_rhs_per_s hierarchy_steps_per_s\n");
   for (const bool horizon_shift : {false, true})
     for (int n : {32, 64, 128}) {
-      Params p;
-      p.N = n;
-      p.rmax = 1024.0;
-      p.grid = "boxes";
+      Params p = trumpet(n, 1024.0, "boxes", horizon_shift);
       p.levels = 9;
-      p.id = "1log-trumpet";
       p.tmax = 100.0;
-      if (horizon_shift) {
-        p.rahA = 0.5;
-        p.rah0 = 0.89;
-      }
       resolve_defaults(p);
       validate(p);
       Simulation sim(evolution_config(p));

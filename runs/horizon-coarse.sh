@@ -26,7 +26,13 @@ published=(--rah-profile rational --rah-width 1 --rah-normal unit)
 family() { # family NAME "N list" [evolve flags]: one converge run, kept if already complete
   local name=$1 Ns=$2
   shift 2
-  [ -f "$out/$name/convergence.dat" ] && return 0
+  # kept only if made with these very inputs: the same N list and the same configuration, as
+  # `evolve --print-config` writes it now (other flags, or defaults changed since, redo it)
+  if [ -f "$out/$name/convergence.dat" ] && grep -q "^# converge: N = $Ns," "$out/$name/config.toml" &&
+    cmp -s <(build/gbssn1d evolve --N "${Ns%%,*}" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
+      --print-config 2>/dev/null) <(grep -v '^#' "$out/$name/config.toml"); then
+    return 0
+  fi
   rm -rf "${out:?}/$name"
   build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
     >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
@@ -116,7 +122,7 @@ threshold)
 cost)
   # uniform: the threshold families; sinh: one map at every N (--dr-inner 0.06 at N = 400), from
   # about M/12 near the horizon at N = 300 to M/33 at N = 800
-  [ -f "$out/t-standard/convergence.dat" ] || bash "$0" threshold >/dev/null
+  bash "$0" threshold >/dev/null # redoes only the families whose inputs changed
   grid=(--grid sinh --dr-inner 0.06)
   family s-standard 300,400,600,800 --id 1log-trumpet
   for h in 0.6 0.89 1.2 2.0; do

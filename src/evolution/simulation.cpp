@@ -118,8 +118,7 @@ Simulation::Simulation(const EvolutionConfig& config)
                        return locate(l, u, g, seed, t);
                      })),
       diagnostic_rhs_(diagnostic_copies(config_, layout_)), dudt_(layout_.levels()),
-      levels_u_(initial_levels(layout_, config.initial_data)), u_prev_(layout_.levels()),
-      dudt_prev_(layout_.levels()), dudt_now_(layout_.levels()), u_out_(layout_.levels()),
+      levels_u_(initial_levels(layout_, config.initial_data)),
       schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, stepper_options(config)))),
       stepper_(layout_, level_functors(rhs_), stepper_options(config)) {
   stepper_.after_step = [this](std::size_t l, State& u) {
@@ -334,13 +333,19 @@ DerivedProfiles Simulation::composite_profiles(const std::vector<DerivedProfiles
   return c;
 }
 
+namespace {
+/// Samples at radius r are interpolated on the finest level on which r lies this many cells
+/// inside the edge: the 6-point stencil (k - 2 ... k + 3) then reads interior cells only.
+constexpr double sample_margin_cells = 4.0;
+} // namespace
+
 double Simulation::at_radius(Var v, double r) const {
-  const std::size_t l = layout_.finest_level_covering(r, 4.0);
+  const std::size_t l = layout_.finest_level_covering(r, sample_margin_cells);
   return interpolate_at_radius(layout_.grid(l), field(levels_u_[l], layout_.grid(l), v), r);
 }
 
 double Simulation::H_at_radius(const std::vector<DerivedProfiles>& levels, double r) const {
-  const std::size_t l = layout_.finest_level_covering(r, 4.0);
+  const std::size_t l = layout_.finest_level_covering(r, sample_margin_cells);
   const Grid& g = layout_.grid(l);
   // the interior values with their nearest neighbours continued into the ghosts
   std::vector<double> f(g.n_total());
@@ -652,8 +657,9 @@ void Simulation::run(Output* out) {
       on_series(*this);
   };
   // Writes every output time in (t_prev, t_]: on the step itself, or between the steps from
-  // the Hermite interpolant of (u_prev_, dudt_prev_) and (u_, dudt_now_). The diagnostics read
-  // u_ and t_, so the interpolated state stands in for them while it is written.
+  // each level's dense output (boxes, pending_) or the Hermite interpolant of (u_prev_,
+  // dudt_prev_) and (the state, dudt_now_) (a single grid). The diagnostics read the levels'
+  // states and t_, so the interpolated states stand in for them while they are written.
   auto write_due = [&](double t_prev, bool have_dense) {
     const double tol = 1e-9 * s.dt;
     while (true) {
@@ -678,17 +684,14 @@ void Simulation::run(Output* out) {
         write(series, profiles);
         t_ = t_step;
         std::swap(levels_u_, p->u);
-      } else {
-        for (std::size_t l = 0; l < levels_u_.size(); ++l) {
-          hermite_interpolate(u_prev_[l], dudt_prev_[l], levels_u_[l], dudt_now_[l], t_ - t_prev,
-                              (t_out - t_prev) / (t_ - t_prev), u_out_[l]);
-          std::swap(levels_u_[l], u_out_[l]);
-        }
+      } else { // a single grid
+        hermite_interpolate(u_prev_, dudt_prev_, levels_u_[0], dudt_now_, t_ - t_prev,
+                            (t_out - t_prev) / (t_ - t_prev), u_out_);
+        std::swap(levels_u_[0], u_out_);
         const double t_step = std::exchange(t_, t_out);
         write(series, profiles);
         t_ = t_step;
-        for (std::size_t l = 0; l < levels_u_.size(); ++l)
-          std::swap(levels_u_[l], u_out_[l]);
+        std::swap(levels_u_[0], u_out_);
       }
       const bool at_end = t_out >= t_end - tol;
       if (series)
@@ -745,8 +748,8 @@ void Simulation::run(Output* out) {
   auto last_report = start;
   const bool progress = show_progress && ::isatty(STDERR_FILENO);
   shared_h_AH_before_rhs_ = shared_h_AH_;
-  dudt_now_[0].resize(levels_u_[0].size());
-  rhs_[0](levels_u_[0], dudt_now_[0], t_); // RK4's first stage of the first step
+  dudt_now_.resize(levels_u_[0].size());
+  rhs_[0](levels_u_[0], dudt_now_, t_); // RK4's first stage of the first step
   for (long n = step_ + 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
     const double t_prev = t_;
@@ -756,10 +759,10 @@ void Simulation::run(Output* out) {
     if (dense && layout_.levels() > 1) {
       prepare_pending(t_, t_next);
     } else if (dense) {
-      u_prev_[0] = levels_u_[0];
-      dudt_prev_[0] = dudt_now_[0];
+      u_prev_ = levels_u_[0];
+      dudt_prev_ = dudt_now_;
     }
-    step(t_next - t_, dudt_now_[0]);
+    step(t_next - t_, dudt_now_);
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
     check_finite();
@@ -771,8 +774,8 @@ void Simulation::run(Output* out) {
     shared_h_AH_before_rhs_ = shared_h_AH_;
     evaluations_before_rhs_ = rhs_[0].evaluations();
     if (!last || dense)
-      rhs_[0](levels_u_[0], dudt_now_[0], t_); // the next step's first stage, and d_t u for
-                                               // the interpolant
+      rhs_[0](levels_u_[0], dudt_now_, t_); // the next step's first stage, and d_t u for
+                                            // the interpolant
     write_due(t_prev, dense);
     if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
       save(h_AH_before_rhs);

@@ -211,9 +211,11 @@ private:
   std::vector<std::array<double, 2>> h_AH_history_; ///< boxes: (t, h_AH) of the last searches
   std::vector<State> dudt_;                         ///< per level: diagnostic scratch
   std::vector<State> levels_u_;                     ///< the state of each level
-  std::vector<State> u_prev_, dudt_prev_, dudt_now_, u_out_; ///< per level, output between steps
-  State u_composite_;                                        ///< the composite state, for profiles
-  std::vector<std::size_t> composite_levels_;                ///< the level of each composite cell
+  State dudt_now_; ///< level 0's d_t u at the current state: the next step's first RK4 stage
+  /// a single grid's output between steps (boxes use each level's dense output, pending_)
+  State u_prev_, dudt_prev_, u_out_;
+  State u_composite_;                            ///< the composite state, for profiles
+  std::vector<std::size_t> composite_levels_;    ///< the level of each composite cell
   std::optional<double> shared_h_AH_before_rhs_; ///< for checkpoints (as h_AH_before_rhs)
   double t_ = 0.0;
   Schedule schedule_;
