@@ -93,6 +93,34 @@ int main(int argc, char** argv) {
       fmt::print("{} {} {} {:.3f} {:.4e} {:.2f} {:.1f}\n", horizon_shift ? "horizon" : "plain", n,
                  evals, elapsed, rate, 1e9 / rate, steps / elapsed_steps);
     }
+  // Every finite-difference order (--fd-order), plain Gamma-driver, on the largest size: the
+  // wider stencils' cost per point.
+  fmt::print("# --fd-order: plain shift, N = {}\n", sizes.back());
+  fmt::print("# fd_order N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+  for (const int order : {2, 4, 6, 8}) {
+    const int n = sizes.back();
+    Params p = trumpet(n, 100.0, "sinh", false);
+    p.dr_inner = 0.01;
+    p.tmax = 0.0;
+    p.fd_order = order;
+    resolve_defaults(p);
+    validate(p);
+    Simulation sim(evolution_config(p));
+    GbssnRhs rhs(sim.grid(), sim.rhs().params());
+    State dudt(sim.state().size());
+    using clock = std::chrono::steady_clock;
+    long evals = 0;
+    const auto start = clock::now();
+    double elapsed = 0;
+    do {
+      for (int k = 0; k < 50; ++k)
+        rhs(sim.state(), dudt, 0.0);
+      evals += 50;
+      elapsed = std::chrono::duration<double>(clock::now() - start).count();
+    } while (elapsed < seconds);
+    const double rate = static_cast<double>(evals) * n / elapsed;
+    fmt::print("{} {} {} {:.3f} {:.4e} {:.2f}\n", order, n, evals, elapsed, rate, 1e9 / rate);
+  }
   // Nested boxes: whole runs of the hierarchy to 100 M (every level, subcycled, with
   // prolongation, restriction, stage-value time interpolation, the horizon searches and the
   // output-free diagnostics), counted as cells x RHS evaluations of all levels.

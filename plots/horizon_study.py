@@ -3,7 +3,7 @@
 
   horizon_study.py table STD FAMILY [FAMILY ...] [-y H_L2_R] [--t0 10 --t1 100]
   horizon_study.py figure FAMILY [FAMILY ...] [-y H_L2_R] [--cols 3] -o figure.png
-  horizon_study.py threshold FAMILY [FAMILY ...] [--min-order 3.5] [--rmax 200]
+  horizon_study.py threshold FAMILY [FAMILY ...] [--min-order 3.5] [--max-order 6] [--rmax 200]
   horizon_study.py cost STD FAMILY [FAMILY ...] --H-target 1e-5 --M-target 1e-4
 
 Each FAMILY (and STD, the standard gauge at the same resolutions) is a converge directory
@@ -18,7 +18,7 @@ Families whose members stopped early say so (`ended t = ...`).
 `threshold` prints, for each family on a uniform grid of --rmax, the coarsest spacing
 rmax/N_k from which every three consecutive resolutions converge: both pairwise orders of the
 time averages at least --min-order, and every pairwise order at the output times in [t0, t1]
-between --min-order - 1 and 6 (an order far from the design order at some time is a
+between --min-order - 1 and --max-order (an order far from the design order at some time is a
 cancellation, not convergence), for the triple starting at N_k and every finer one.
 `cost` prints, for each family, the work (cells x RK4 steps to t1, from each member's N and
 time step) needed to reach an RMS of the norm of --H-target and a largest |M_AH - M| over
@@ -115,7 +115,7 @@ def threshold(args):
         for k in range(len(Ns) - 2):
             finished = all(ends.get(n, args.t1) >= args.t1 - 1e-9 for n in Ns[k:k + 3])
             p = [order(R[j], R[j + 1], Ns[j], Ns[j + 1]) for j in (k, k + 1)]
-            steady = all(np.all((q >= args.min_order - 1) & (q <= 6)) for q in
+            steady = all(np.all((q >= args.min_order - 1) & (q <= args.max_order)) for q in
                          (orders_in_time(k), orders_in_time(k + 1)))
             ok.append(finished and steady and all(x >= args.min_order for x in p))
         start = None
@@ -253,6 +253,9 @@ def main():
     th = sub.add_parser('threshold')
     th.add_argument('families', nargs='+')
     th.add_argument('--min-order', type=float, default=3.5)
+    th.add_argument('--max-order', type=float, default=6.0,
+                    help='largest pairwise order at an output time counted as convergence '
+                         '(the design order + 2; 6 for 4th-order runs)')
     th.add_argument('--rmax', type=float, default=200.0)
     c = sub.add_parser('cost')
     c.add_argument('std')

@@ -41,6 +41,11 @@ mistakes=(
   "checkpoint drops the RHS-evaluation counter|src/evolution/simulation.cpp|  c.evaluations = evaluations_before_rhs_;|  c.evaluations = 0;"
   "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
   "sweep reruns reuse members of other inputs|src/study/sweep.cpp|      if (!diff.empty())|      if (false)"
+  "--fd-order 6 differenced at 4th order|src/gbssn/rhs.cpp|  case 6:\n    evaluate<6>(u, dudt, t);|  case 6:\n    evaluate<4>(u, dudt, t);"
+  "beta_H not tapered before the outer boundary|src/gbssn/horizon_shift.cpp|           * outer_taper(std::abs(grid.r()[i]) / params.r_cut);|           * 1.0;"
+  "a legacy checkpoint's old outer ghosts dropped|src/evolution/simulation.cpp|    for (std::size_t k = 0; k < n + legacy_ghosts; ++k) // interior and the old outer ghosts|    for (std::size_t k = 0; k < n; ++k)"
+  "--rah-profile auto recorded without its width|src/config/params.cpp|      p.rah_width = hs.width;|      (void)hs.width;"
+  "boxes take the single grid's cfl|src/config/params.cpp|    p.cfl = p.grid == \"boxes\" ? 0.25 : 0.5;|    p.cfl = 0.5;"
   "converge samples reused for other radii|src/study/converge.cpp|    samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;"
 )
 uncaught=0

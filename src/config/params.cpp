@@ -1,6 +1,7 @@
 #include "config/params.hpp"
 
 #include "config/numbers.hpp"
+#include "fd/stencils.hpp"
 #include "io/table.hpp"
 #include "mesh/hierarchy.hpp"
 
@@ -132,7 +133,7 @@ mesh::StepperOptions stepper_options(const Params& p) {
   mesh::StepperOptions o;
   o.time = choice("--time-interp", p.time_interp, time_interp_choices);
   o.subcycling = !p.no_subcycling;
-  o.cfl = p.cfl;
+  o.cfl = p.cfl.value();
   if (p.grid == "boxes")
     o.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
   return o;
@@ -146,8 +147,28 @@ void resolve_defaults(Params& p) {
   // M and rmax are validated afterwards: a bad M gives a non-finite eta
   if (!p.eta)
     p.eta = (shrinks_wormhole(p) ? 1.0 : 2.0) / p.M;
+  // docs/horizon-shift-study.md Sec. 11: on single grids every error measured is the same at
+  // cfl 0.25 ... 0.8 (spatial errors dominate) and runs became unstable from 0.8 (8th order)
+  // or 0.9; on boxes the time interpolation of fine boundaries makes the error depend on it
+  if (!p.cfl)
+    p.cfl = p.grid == "boxes" ? 0.25 : 0.5;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
+  if (p.rahA != 0.0) {
+    if (!p.rah_rcut)
+      p.rah_rcut = 0.5 * p.rmax;
+    // `auto` is written to config.toml as the profile and width it stands for, so that a
+    // checkpoint or a sweep member made when auto meant another width is told apart (not
+    // resumed with the new one); M is validated afterwards
+    if (p.rah_profile == "auto" && std::isfinite(p.M) && p.M > 0.0) {
+      HorizonShiftParams hs;
+      hs.profile = ShiftProfile::automatic;
+      hs.h = p.rah0;
+      resolve_automatic_profile(hs, p.M);
+      p.rah_profile = hs.profile == ShiftProfile::gauss ? "gauss" : "rational";
+      p.rah_width = hs.width;
+    }
+  }
 }
 
 std::vector<std::string> warnings(const Params& p) {
@@ -235,6 +256,12 @@ void validate(const Params& p) {
                        "must be even with --grid boxes: each coarse cell holds two fine cells, "
                        "so that a fine box's edge is a coarse cell's face");
   }
+  if (!fd::valid_order(p.fd_order))
+    throw ParamError("--fd-order", std::to_string(p.fd_order), "must be 2, 4, 6 or 8");
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.fd_order != 4)
+    throw ParamError("--fd-order", std::to_string(p.fd_order),
+                     "must be 4 with --grid boxes: the boxes' buffer zones are sized for the "
+                     "4th-order stencils");
   if (p.grid == "sinh") {
     require_positive("--dr-inner", p.dr_inner);
     const double needed = p.dr_inner * sinh_reference_N;
@@ -260,12 +287,15 @@ void validate(const Params& p) {
   require_finite("--eta", eta);
   if (eta < 0.0)
     throw ParamError("--eta", num(eta), "must be >= 0");
-  require_positive("--cfl", p.cfl);
-  if (p.cfl < cfl_min)
-    throw ParamError("--cfl", num(p.cfl),
+  if (!p.cfl)
+    throw std::logic_error("validate() before resolve_defaults()");
+  const double cfl = *p.cfl;
+  require_positive("--cfl", cfl);
+  if (cfl < cfl_min)
+    throw ParamError("--cfl", num(cfl),
                      fmt::format("below {}: such steps only accumulate round-off", cfl_min));
-  if (p.cfl > cfl_max)
-    throw ParamError("--cfl", num(p.cfl),
+  if (cfl > cfl_max)
+    throw ParamError("--cfl", num(cfl),
                      fmt::format("outside the stable range (0, {}] of RK4 with 4th-order "
                                  "differences",
                                  cfl_max));
@@ -303,6 +333,15 @@ void validate(const Params& p) {
   require_finite("--rahA", p.rahA);
   require_positive("--rah0", p.rah0);
   require_positive("--rah-width", p.rah_width);
+  if (p.rah_rcut) {
+    require_positive("--rah-rcut", *p.rah_rcut);
+    // the shift must act at the horizon: the taper begins (at rcut/2) outside twice its radius
+    if (p.rahA != 0.0 && !(*p.rah_rcut >= 4.0 * std::max(p.rah0, p.M)))
+      throw ParamError("--rah-rcut", num(*p.rah_rcut),
+                       fmt::format("must be at least 4 max(rah0, M) = {}: beta_H would be cut "
+                                   "near the horizon it moves",
+                                   num(4.0 * std::max(p.rah0, p.M))));
+  }
   if (p.ah_every != "substage" && p.ah_every != "step") {
     const auto n = parse_decimal<long>(p.ah_every);
     if (!n || *n < 1)
@@ -380,7 +419,7 @@ void validate(const Params& p) {
                                  ah_tol_over_spacing_max, grid.min_spacing()));
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = mesh::hierarchy_dt(layout, stepper_options(p)); // the whole step
-  const double dt_finest = time_step(p.cfl, grid);
+  const double dt_finest = time_step(p.cfl.value(), grid);
   if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
     throw ParamError("--checkpoint-every", num(p.checkpoint_every),
                      fmt::format("is shorter than the time step dt = {:.6g} (checkpoints are "
@@ -403,7 +442,7 @@ void validate(const Params& p) {
         fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
                     p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
   if (eta * dt_finest > eta_dt_max)
-    throw ParamError("--cfl", num(p.cfl),
+    throw ParamError("--cfl", num(p.cfl.value()),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));
@@ -448,6 +487,7 @@ GridSpec grid_spec(const Params& p) {
   spec.N = static_cast<std::size_t>(p.N);
   spec.rmax = p.rmax;
   spec.dr_inner = p.dr_inner;
+  spec.fd_order = p.fd_order;
   return spec;
 }
 
@@ -463,7 +503,7 @@ EvolutionConfig evolution_config(const Params& p) {
   }
   c.initial_data = initial_data_params(p);
   c.rhs = rhs_params(p);
-  c.cfl = p.cfl;
+  c.cfl = p.cfl.value();
   c.chi_floor = p.chi_floor;
   c.tmax = p.tmax;
   c.dt_series = p.dt_series;
@@ -501,6 +541,7 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.ramp = p.rah_ramp;
+  r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
   r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
   r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;

@@ -44,8 +44,11 @@ struct Params {
   bool advective_shift = false;
   bool non_advective_lapse = false;
   // numerics
-  double cfl = evolution_defaults().cfl;
+  /// unset: 0.5 on a single grid, 0.25 on boxes (resolve_defaults; docs/horizon-shift-study.md
+  /// Sec. 11)
+  std::optional<double> cfl;
   double ko_sigma = evolution_defaults().rhs.ko_sigma;
+  int fd_order = evolution_defaults().grid.fd_order; ///< 2 | 4 | 6 | 8
   /// chi is raised to at least this after every RK4 step (0: off)
   double chi_floor = evolution_defaults().chi_floor;
   // time
@@ -69,6 +72,9 @@ struct Params {
       evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
   /// T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
   double rah_ramp = evolution_defaults().rhs.horizon_shift.ramp;
+  /// beta_H is tapered to 0 between rah_rcut/2 and rah_rcut; unset: rmax/2 (resolve_defaults,
+  /// with the horizon shift on)
+  std::optional<double> rah_rcut;
   std::string rah_profile = "auto";     ///< auto | rational | rational3 | gauss | gauss3
   std::string rah_normal = "conformal"; ///< conformal | unit | smooth
   /// chi_s of the smooth normal sqrt((chi + chi_s)/a)

@@ -47,7 +47,7 @@ struct EvolutionConfig {
   RefinementSettings refinement;
   InitialDataParams initial_data;
   RhsParams rhs; ///< equations, gauge, dissipation, horizon shift (its `locate` is set by the run)
-  double cfl = 0.25;       ///< dt = cfl x smallest spacing
+  double cfl = 0.5; ///< dt = cfl x smallest spacing (0.25 on boxes: params.cpp resolve_defaults)
   double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
   double tmax = 10.0;
   double dt_series = 0.25;       ///< time between rows of timeseries.dat

@@ -51,8 +51,9 @@ void hermite_interpolate(const State& u0, const State& f0, const State& u1, cons
 
 mesh::MeshLayout make_layout(const EvolutionConfig& config) {
   if (config.refinement.levels > 1)
-    return mesh::MeshLayout(config.grid.rmax, config.grid.N, config.refinement.levels);
-  return mesh::MeshLayout(make_grid(config.grid).map(), config.grid.N, 1);
+    return mesh::MeshLayout(config.grid.rmax, config.grid.N, config.refinement.levels,
+                            config.grid.fd_order);
+  return mesh::MeshLayout(make_grid(config.grid).map(), config.grid.N, 1, config.grid.fd_order);
 }
 
 mesh::StepperOptions stepper_options(const EvolutionConfig& config) {
@@ -503,8 +504,46 @@ void Simulation::check_finite() const {
   }
 }
 
-void Simulation::restore(const Checkpoint& c) {
+namespace {
+
+/// Ghosts per side before the finite-difference order became a choice (checkpoint formats 2
+/// and 3 of earlier versions).
+constexpr std::size_t legacy_ghosts = 3;
+
+/// `u` re-laid out from legacy_ghosts to Grid::n_ghost ghosts per side, if it has the legacy
+/// size for `grid`: the interior and the old outer ghosts are kept, the origin ghosts refilled
+/// by parity, the new outermost ghosts copied from the last old one. At 4th order nothing reads
+/// them but their own boundary condition, so the run continues as it would have.
+void widen_legacy_ghosts(State& u, const Grid& grid) {
+  const std::size_t n = grid.n_interior(), old_total = n + 2 * legacy_ghosts;
+  if (u.size() != n_vars * old_total || grid.n_total() == old_total)
+    return;
+  State w(n_vars * grid.n_total(), 0.0);
+  for (std::size_t v = 0; v < n_vars; ++v) {
+    const double* from = u.data() + v * old_total;
+    double* to = w.data() + v * grid.n_total();
+    for (std::size_t k = 0; k < n + legacy_ghosts; ++k) // interior and the old outer ghosts
+      to[grid.first_interior() + k] = from[legacy_ghosts + k];
+    for (std::size_t k = n + legacy_ghosts; k < n + Grid::n_ghost; ++k)
+      to[grid.first_interior() + k] = from[legacy_ghosts + n + legacy_ghosts - 1];
+  }
+  fill_origin_ghosts(w, grid);
+  u = std::move(w);
+}
+
+} // namespace
+
+void Simulation::restore(const Checkpoint& checkpoint) {
   const std::size_t n_levels = layout_.levels();
+  Checkpoint c = checkpoint;
+  if (c.finer.size() + 1 == n_levels) {
+    widen_legacy_ghosts(c.u, layout_.grid(0));
+    for (std::size_t l = 1; l < n_levels; ++l)
+      widen_legacy_ghosts(c.finer[l - 1], layout_.grid(l));
+    for (std::size_t l = 0; l < c.history.size() && l < n_levels; ++l)
+      for (auto& h : c.history[l])
+        widen_legacy_ghosts(h.u, layout_.grid(l));
+  }
   if (c.finer.size() + 1 != n_levels)
     throw CheckpointError(
         fmt::format("the checkpoint has {} levels, this grid {}", c.finer.size() + 1, n_levels));

@@ -1,66 +1,298 @@
-// Finite-difference stencils on the uniform computational coordinate x (spacing dx).
+// Finite-difference stencils on the uniform computational coordinate x (spacing dx), of order
+// 2, 4, 6 or 8 (`--fd-order`).
 //
-// Each takes a pointer to the value at the point and reads its neighbours f[k]. They are
-// inline, branch-free where it matters, so that point loops vectorise. Radial derivatives
-// follow by the chain rule (grid/grid.hpp).
+// The coefficients are derived, not typed: Fornberg's algorithm (Math. Comp. 51:699, 1988) runs
+// at compile time in exact rational arithmetic, and each stencil is stored as integer weights
+// over one common denominator. The 4th-order weights are the classic ones, e.g. (1, -8, 0, 8, -1)
+// / 12 for the first derivative (tests/fd/test_stencils.cpp checks them and every order against
+// polynomials).
+//
+// Each operator takes a pointer to the value at the point and reads its neighbours f[k]. They
+// are inline and branch-free, so that point loops vectorise. Radial derivatives follow by the
+// chain rule (grid/grid.hpp).
 #pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
 
 namespace gbssn1d::fd {
 
-/// 4th-order centred first derivative, times dx.
-inline double d1_centred(const double* f) {
-  return (f[-2] - 8.0 * f[-1] + 8.0 * f[1] - f[2]) * (1.0 / 12.0);
+/// The finite-difference orders offered.
+inline constexpr std::array<int, 4> orders{2, 4, 6, 8};
+inline constexpr bool valid_order(int order) {
+  return order == 2 || order == 4 || order == 6 || order == 8;
 }
 
-/// 4th-order centred second derivative, times dx^2.
-inline double d2_centred(const double* f) {
-  return (-f[-2] + 16.0 * f[-1] - 30.0 * f[0] + 16.0 * f[1] - f[2]) * (1.0 / 12.0);
+/// An exact rational p / q (q > 0, lowest terms), for deriving weights at compile time.
+struct Rational {
+  std::int64_t p, q;
+  static constexpr std::int64_t gcd(std::int64_t a, std::int64_t b) {
+    a = a < 0 ? -a : a;
+    b = b < 0 ? -b : b;
+    while (b != 0) {
+      const std::int64_t t = a % b;
+      a = b;
+      b = t;
+    }
+    return a == 0 ? 1 : a;
+  }
+  constexpr Rational() : p(0), q(1) {} // user-provided: value-initialised arrays hold 0/1
+  constexpr Rational(std::int64_t num, std::int64_t den = 1) : p(num), q(den) {
+    if (q < 0) {
+      p = -p;
+      q = -q;
+    }
+    const std::int64_t g = gcd(p, q);
+    p /= g;
+    q /= g;
+  }
+  friend constexpr Rational operator+(Rational a, Rational b) {
+    const std::int64_t g = gcd(a.q, b.q);
+    return {a.p * (b.q / g) + b.p * (a.q / g), a.q / g * b.q};
+  }
+  friend constexpr Rational operator-(Rational a, Rational b) { return a + Rational(-b.p, b.q); }
+  friend constexpr Rational operator*(Rational a, Rational b) {
+    const std::int64_t g1 = gcd(a.p, b.q), g2 = gcd(b.p, a.q);
+    return {(a.p / g1) * (b.p / g2), (a.q / g2) * (b.q / g1)};
+  }
+  friend constexpr Rational operator/(Rational a, Rational b) { return a * Rational(b.q, b.p); }
+  friend constexpr bool operator==(Rational a, Rational b) { return a.p == b.p && a.q == b.q; }
+};
+
+/// Fornberg's algorithm: the weights of the m-th derivative at x = 0 on the n integer nodes
+/// first, first + 1, ..., first + n - 1 (unit spacing), exact.
+template <std::size_t n>
+constexpr std::array<Rational, n> fornberg(int m, int first) {
+  // c[j][k]: weight of node j for the k-th derivative, k = 0 ... m (the recursion of the paper,
+  // Table 1, with the evaluation point z = 0)
+  std::array<std::array<Rational, 9>, n> c{};
+  Rational c1 = 1;
+  c[0][0] = 1;
+  for (std::size_t i = 1; i < n; ++i) {
+    const Rational xi = static_cast<std::int64_t>(first + static_cast<int>(i));
+    Rational c2 = 1;
+    const int mn = static_cast<int>(i) < m ? static_cast<int>(i) : m;
+    for (std::size_t j = 0; j < i; ++j) {
+      const Rational xj = static_cast<std::int64_t>(first + static_cast<int>(j));
+      const Rational c3 = xi - xj;
+      c2 = c2 * c3;
+      if (j == i - 1)
+        for (int k = mn; k >= 0; --k) {
+          const Rational prev_k1 = k > 0 ? c[i - 1][k - 1] : Rational(0);
+          const Rational xi_prev =
+              static_cast<std::int64_t>(first + static_cast<int>(i) - 1); // x_{i-1}
+          const Rational value = c1 * (Rational(k) * prev_k1 - xi_prev * c[i - 1][k]) / c2;
+          c[i][k] = value; // through a temporary (see combine)
+        }
+      for (int k = mn; k >= 0; --k) {
+        const Rational prev_k1 = k > 0 ? c[j][k - 1] : Rational(0);
+        const Rational value = (xi * c[j][k] - Rational(k) * prev_k1) / c3;
+        c[j][k] = value;
+      }
+    }
+    c1 = c2;
+  }
+  std::array<Rational, n> w{};
+  for (std::size_t j = 0; j < n; ++j)
+    w[j] = c[j][m];
+  return w;
 }
 
-/// 4th-order lopsided first derivative biased towards +x (use where the advecting velocity
-/// is positive), times dx.
-inline double d1_lopsided_plus(const double* f) {
-  return (-3.0 * f[-1] - 10.0 * f[0] + 18.0 * f[1] - 6.0 * f[2] + f[3]) * (1.0 / 12.0);
+/// A stencil as integer weights w[k] on the points first ... first + n - 1, over a common
+/// denominator: sum_k w[k] f[first + k] / denominator.
+template <std::size_t n>
+struct Stencil {
+  int first = 0;
+  std::array<std::int64_t, n> weight{};
+  std::int64_t denominator = 1;
+  static constexpr std::size_t size = n;
+  /// The weights over one denominator, the least common multiple of theirs.
+  static constexpr Stencil from(const std::array<Rational, n>& w, int first_point) {
+    Stencil s;
+    s.first = first_point;
+    std::int64_t l = 1;
+    for (const Rational& r : w)
+      l = l / Rational::gcd(l, r.q) * r.q;
+    s.denominator = l;
+    for (std::size_t k = 0; k < n; ++k)
+      s.weight[k] = w[k].p * (l / w[k].q);
+    return s;
+  }
+  constexpr Rational exact(std::size_t k) const { return Rational(weight[k], denominator); }
+  /// sum_k w[k] f[first + k] (without the denominator), in increasing k, skipping zeros.
+  [[gnu::always_inline]] double sum(const double* f) const {
+    double s = 0.0;
+    bool started = false;
+#pragma GCC unroll 16
+    for (std::size_t k = 0; k < n; ++k) {
+      if (weight[k] == 0)
+        continue;
+      const double t = static_cast<double>(weight[k]) * f[first + static_cast<int>(k)];
+      s = started ? s + t : t;
+      started = true;
+    }
+    return s;
+  }
+  [[gnu::always_inline]] double operator()(const double* f) const {
+    return sum(f) * (1.0 / static_cast<double>(denominator));
+  }
+};
+
+namespace detail {
+
+/// The (2 radius)-th difference on -radius ... radius: binomial weights with alternating signs,
+/// end weights +1.
+template <std::size_t n>
+constexpr std::array<Rational, n> difference_weights() {
+  std::array<Rational, n> w{};
+  std::int64_t binom = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    w[k] = Rational((k % 2 == 0 ? 1 : -1) * binom);
+    binom = binom * static_cast<std::int64_t>(n - 1 - k) / static_cast<std::int64_t>(k + 1);
+  }
+  return w;
 }
 
-/// 4th-order lopsided first derivative biased towards -x, times dx.
-inline double d1_lopsided_minus(const double* f) {
-  return (3.0 * f[1] + 10.0 * f[0] - 18.0 * f[-1] + 6.0 * f[-2] - f[-3]) * (1.0 / 12.0);
+/// lopsided_plus + sign x lopsided_minus of order p on the wide stencil -radius ... radius,
+/// exact (lopsided_plus on -(p/2 - 1) ... p/2 + 1; lopsided_minus(x) = -plus(-x)). Each weight
+/// is computed in one expression: GCC 12's constant evaluation inside a class template's
+/// instantiation lost values written to an array element twice.
+template <int p>
+constexpr std::array<Rational, p + 3> combine(int sign) {
+  constexpr int radius = p / 2 + 1, first = -(p / 2 - 1), n_plus = p + 1;
+  const std::array<Rational, n_plus> plus = fornberg<n_plus>(1, first);
+  auto plus_at = [&plus](int x) {
+    return x >= first && x < first + n_plus ? plus[static_cast<std::size_t>(x - first)]
+                                            : Rational(0);
+  };
+  std::array<Rational, p + 3> w{};
+  for (int x = -radius; x <= radius; ++x)
+    w[static_cast<std::size_t>(x + radius)] = plus_at(x) - Rational(sign) * plus_at(-x);
+  return w;
 }
 
-/// The sum of the two lopsided derivatives, times dx: d1_lopsided_plus + d1_lopsided_minus.
-/// Their difference is ko6 / 12, so each is (lopsided_sum +/- ko6 / 6) / 2: an upwind
-/// derivative costs one more stencil once ko6 is known (dissipation needs it anyway).
-inline double lopsided_sum(const double* f) {
-  return (f[3] - 6.0 * f[2] + 21.0 * f[1] - 21.0 * f[-1] + 6.0 * f[-2] - f[-3]) * (1.0 / 12.0);
+/// Whether a = c b for the constant c = a[0] / b[0].
+template <std::size_t n>
+constexpr bool proportional(const std::array<Rational, n>& a, const std::array<Rational, n>& b) {
+  const Rational c = a[0] / b[0];
+  for (std::size_t k = 0; k < n; ++k)
+    if (!(a[k] == c * b[k]))
+      return false;
+  return true;
 }
 
-/// advect() from lopsided_sum(f) and ko6(f), branch-free:
-///   v (S/2 + sign(v) ko6/24) = v S/2 + |v| ko6/24.
-inline double advect_from(double beta, double lopsided_sum, double ko6) {
-  return 0.5 * beta * lopsided_sum + (1.0 / 24.0) * (beta < 0.0 ? -beta : beta) * ko6;
+} // namespace detail
+
+/// The stencils of one order p (p = 2, 4, 6, 8), all times the power of dx of their derivative:
+///  - d1, d2: centred first and second derivatives on -p/2 ... p/2;
+///  - lopsided_plus: first derivative on -(p/2 - 1) ... p/2 + 1, leaning towards +x;
+///    lopsided_minus, its mirror image;
+///  - difference: the (p+2)-th difference on -(p/2 + 1) ... p/2 + 1 with end weights +1 (the
+///    Kreiss-Oliger operator's stencil), which annihilates polynomials of degree <= p + 1;
+///  - lopsided_sum: lopsided_plus + lopsided_minus. Their difference is a symmetric stencil
+///    that annihilates degree <= p, i.e. `upwind_ratio` times `difference` (checked here at
+///    compile time), so each upwind derivative is (lopsided_sum +/- upwind_ratio difference) / 2.
+template <int p>
+struct Order {
+  static_assert(valid_order(p), "finite-difference orders are 2, 4, 6 and 8");
+  static constexpr int half = p / 2;
+  static constexpr int radius = half + 1; ///< the widest reach: upwind and dissipation
+  static constexpr std::size_t n_centred = 2 * half + 1, n_wide = 2 * radius + 1;
+
+  static constexpr auto d1_exact = fornberg<n_centred>(1, -half);
+  static constexpr auto d2_exact = fornberg<n_centred>(2, -half);
+  static constexpr auto plus_exact = fornberg<n_centred>(1, -(half - 1));
+  static constexpr auto difference_exact = detail::difference_weights<n_wide>();
+  static constexpr auto sum_exact = detail::combine<p>(+1);
+  static constexpr auto plus_minus_minus = detail::combine<p>(-1);
+  /// lopsided_plus - lopsided_minus is a multiple of the difference (asserted below)
+  static constexpr bool upwind_is_difference() {
+    return detail::proportional(plus_minus_minus, difference_exact);
+  }
+
+  static constexpr Stencil<n_centred> d1 = Stencil<n_centred>::from(d1_exact, -half);
+  static constexpr Stencil<n_centred> d2 = Stencil<n_centred>::from(d2_exact, -half);
+  static constexpr Stencil<n_centred> lopsided_plus =
+      Stencil<n_centred>::from(plus_exact, -(half - 1));
+  static constexpr Stencil<n_centred> lopsided_minus =
+      Stencil<n_centred>::from(fornberg<n_centred>(1, -(half + 1)), -(half + 1));
+  static constexpr Stencil<n_wide> difference = Stencil<n_wide>::from(difference_exact, -radius);
+  static constexpr Stencil<n_wide> lopsided_sum = Stencil<n_wide>::from(sum_exact, -radius);
+  /// c of lopsided_plus - lopsided_minus = c difference (the difference's end weight is 1)
+  static constexpr Rational upwind_ratio_exact = plus_minus_minus[0];
+  static constexpr double upwind_ratio =
+      static_cast<double>(upwind_ratio_exact.p) / static_cast<double>(upwind_ratio_exact.q);
+
+  /// The highest grid mode (-1)^j gives difference = (-1)^radius 2^(2 radius); the dissipation
+  /// Q f = sigma/dx dissipation_sign difference(f) / 2^(2 radius) damps it at the rate sigma/dx.
+  static constexpr double dissipation_sign = radius % 2 == 0 ? -1.0 : 1.0;
+  static constexpr double dissipation_norm =
+      1.0 / static_cast<double>(std::int64_t{1} << (2 * radius));
+};
+
+static_assert(Order<2>::upwind_is_difference() && Order<4>::upwind_is_difference()
+                  && Order<6>::upwind_is_difference() && Order<8>::upwind_is_difference(),
+              "lopsided_plus - lopsided_minus must be a multiple of the (p+2)-th difference");
+
+// The operators of order p, each times dx to its derivative's power.
+
+template <int p>
+[[gnu::always_inline]] inline double d1_centred(const double* f) {
+  return Order<p>::d1(f);
+}
+template <int p>
+[[gnu::always_inline]] inline double d2_centred(const double* f) {
+  return Order<p>::d2(f);
+}
+template <int p>
+[[gnu::always_inline]] inline double d1_lopsided_plus(const double* f) {
+  return Order<p>::lopsided_plus(f);
+}
+/// The mirror image of d1_lopsided_plus, leaning towards -x.
+template <int p>
+[[gnu::always_inline]] inline double d1_lopsided_minus(const double* f) {
+  return Order<p>::lopsided_minus(f);
+}
+template <int p>
+[[gnu::always_inline]] inline double lopsided_sum(const double* f) {
+  return Order<p>::lopsided_sum(f);
+}
+/// The (p+2)-th difference (Kreiss-Oliger stencil, without sign and normalisation).
+template <int p>
+[[gnu::always_inline]] inline double difference(const double* f) {
+  return Order<p>::difference.sum(f);
+}
+
+/// Upwinded advection v f_x from lopsided_sum(f) and difference(f), branch-free:
+///   v (S/2 + sign(v) c D/2) = v S/2 + |v| c D/2,  c = upwind_ratio.
+template <int p>
+[[gnu::always_inline]] inline double advect_from(double beta, double lopsided_sum,
+                                                 double difference) {
+  return 0.5 * beta * lopsided_sum
+         + (0.5 * Order<p>::upwind_ratio) * (beta < 0.0 ? -beta : beta) * difference;
 }
 
 /// Upwinded advection v f_x: lopsided towards the direction the flow comes from, times dx.
 /// The shift term beta d_r f of the equations is advection with velocity -beta, so the
 /// stencil leans towards +x where beta > 0.
+/// (With a branch; the point loops use advect_from.)
+template <int p>
 inline double advect(double beta, const double* f) {
-  const double plus = d1_lopsided_plus(f);
-  const double minus = d1_lopsided_minus(f);
-  return beta * (beta > 0.0 ? plus : minus);
+  return beta * (beta > 0.0 ? d1_lopsided_plus<p>(f) : d1_lopsided_minus<p>(f));
 }
 
-/// 4th-order one-sided (backward) first derivative, times dx; reads f[-4] ... f[0].
+/// 4th-order one-sided (backward) first derivative, times dx; reads f[-4] ... f[0] (the outer
+/// boundary condition, at every order).
+inline constexpr Stencil<5> backward4 = Stencil<5>::from(fornberg<5>(1, -4), -4);
+/// Summed from f[0] outwards, the way the largest weights come first (the boundary values nearly
+/// cancel: this order keeps the rounding of the classic formula).
 inline double d1_backward(const double* f) {
-  return (25.0 * f[0] - 48.0 * f[-1] + 36.0 * f[-2] - 16.0 * f[-3] + 3.0 * f[-4]) * (1.0 / 12.0);
-}
-
-/// Kreiss-Oliger dissipation of the 6th difference, matched to a 4th-order scheme:
-///   Q f = (sigma / (64 h)) (D+ D-)^3 f h^6,
-/// which damps the highest grid mode at rate sigma / h. Returns the stencil sum (divide by
-/// 64 h and multiply by sigma to get the rate).
-inline double ko6(const double* f) {
-  return f[-3] - 6.0 * f[-2] + 15.0 * f[-1] - 20.0 * f[0] + 15.0 * f[1] - 6.0 * f[2] + f[3];
+  double s = static_cast<double>(backward4.weight[4]) * f[0];
+#pragma GCC unroll 4
+  for (int k = 3; k >= 0; --k)
+    s += static_cast<double>(backward4.weight[static_cast<std::size_t>(k)]) * f[k - 4];
+  return s * (1.0 / static_cast<double>(backward4.denominator));
 }
 
 } // namespace gbssn1d::fd

@@ -2,12 +2,15 @@
 
 #include "core/registry.hpp"
 
+#include <cmath>
+
 namespace gbssn1d {
 
 std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& params) {
   std::vector<double> f(grid.n_total());
   for (std::size_t i = 0; i < f.size(); ++i)
-    f[i] = shift_profile(params.profile, grid.r()[i] / params.width); // odd
+    f[i] = shift_profile(params.profile, grid.r()[i] / params.width) // odd
+           * outer_taper(std::abs(grid.r()[i]) / params.r_cut);
   return f;
 }
 

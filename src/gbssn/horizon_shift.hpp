@@ -27,6 +27,19 @@ enum class ShiftProfile {
   gauss3,    ///< (q^3/2) exp(3 (1 - q^2)/2): concentrated at r ~ w, f ~ r^3 at the origin
 };
 
+/// The outer taper of beta_H at s = |r| / r_cut: 1 for s <= 1/2, 0 for s >= 1, and in between
+/// the C-infinity step g(1 - u) / (g(1 - u) + g(u)), u = 2 s - 1, g(x) = exp(-1/x): every
+/// derivative is continuous, so that the taper costs no order at any finite-difference order.
+inline double outer_taper(double s) {
+  const double u = 2.0 * s - 1.0;
+  if (u <= 0.0)
+    return 1.0;
+  if (u >= 1.0)
+    return 0.0;
+  const double a = std::exp(-1.0 / (1.0 - u)), b = std::exp(-1.0 / u);
+  return a / (a + b);
+}
+
 /// The radial vector s^r that beta_H points along.
 enum class ShiftNormal {
   unit,      ///< sqrt(chi/a), the unit normal of (H3); ~ |r| at a trumpet's puncture (a kink)
@@ -76,6 +89,10 @@ struct HorizonShiftParams {
   double h = 0.89;    ///< desired coordinate radius of the horizon
   double width = 1.0; ///< w
   double ramp = 0.0;  ///< T: the strength grows as A (1 - exp(-(t/T)^2)) (0: A from t = 0)
+  /// r_cut: f(r) is multiplied by outer_taper(r / r_cut), which falls smoothly from 1 at
+  /// r_cut/2 to 0 at r_cut, so that beta_H vanishes before the outer boundary, where the
+  /// boundary condition assumes the shift of the Gamma-driver alone (infinity: no taper).
+  double r_cut = std::numeric_limits<double>::infinity();
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
   double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth

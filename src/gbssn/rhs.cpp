@@ -19,14 +19,16 @@ struct StencilWeights {
         upwind_full(s == AdvectionStencil::upwind_full ? 1.0 : 0.0) {}
 };
 
-/// d_x Delta^r (times dx) by the weighted stencil; `beta_gd`, `beta_full` give the upwind
-/// directions; `ko6` is fd::ko6(f).
+/// d_x Delta^r (times dx) by the weighted stencil of order p; `beta_gd`, `beta_full` give the
+/// upwind directions; `diff` is fd::difference<p>(f).
+template <int p>
 [[gnu::always_inline]] inline double delta_derivative(const StencilWeights& w, const double* f,
                                                       double beta_gd, double beta_full,
-                                                      double ko6) {
-  const double half_sum = 0.5 * fd::lopsided_sum(f), half_diff = (1.0 / 24.0) * ko6;
+                                                      double diff) {
+  const double half_sum = 0.5 * fd::lopsided_sum<p>(f),
+               half_diff = (0.5 * fd::Order<p>::upwind_ratio) * diff;
   const double sign_gd = beta_gd > 0.0 ? 1.0 : -1.0, sign_full = beta_full > 0.0 ? 1.0 : -1.0;
-  return w.centred * fd::d1_centred(f) + w.upwind_gd * (half_sum + sign_gd * half_diff)
+  return w.centred * fd::d1_centred<p>(f) + w.upwind_gd * (half_sum + sign_gd * half_diff)
          + w.upwind_full * (half_sum + sign_full * half_diff);
 }
 
@@ -42,43 +44,58 @@ struct Rows {
   const double* operator[](Var v) const { return row[index(v)]; }
 };
 
-/// The 6th differences of the fields at one point (fd::ko6): shared by the upwind stencils
-/// (fd::advect_from) and the dissipation.
-using Ko6 = PerVar;
+/// The (p+2)-th differences of the fields at one point (fd::difference): shared by the upwind
+/// stencils (fd::advect_from) and the dissipation.
+using Differences = PerVar;
 
-/// All of point_data, with the per-point grid factors passed in (the hot loop); `ko` receives
-/// the 6th differences.
+/// All of point_data at order p, with the per-point grid factors passed in (the hot loop); `ko`
+/// receives the (p+2)-th differences.
+template <int p>
 [[gnu::always_inline]] inline PointData gather(const Rows u, std::size_t i, double r, double inv_r,
                                                double inv_dx, double inv_rx, double d2_fx,
-                                               Ko6& ko) {
+                                               Differences& ko) {
   const double d1_scale = inv_dx * inv_rx;
   const double d2_scale = inv_dx * inv_dx * inv_rx * inv_rx;
-  PointData p;
-  p.r = r;
-  p.inv_r = inv_r;
+  PointData pd;
+  pd.r = r;
+  pd.inv_r = inv_r;
   // beta d_r f, lopsided upwind; the map factor 1/r_x is positive, so the direction is that of
-  // the shift in x as well. Each upwind stencil is the lopsided sum and the 6th difference.
+  // the shift in x as well. Each upwind stencil is the lopsided sum and the (p+2)-th difference.
   const double beta_r = u[Var::beta][i] * d1_scale;
 #pragma GCC unroll 16 // unrolled, so that the point loop around it vectorises
   for (const auto& entry : registry) {
     const Var v = entry.var;
     const double* f = u[v] + i;
-    p.f[v] = f[0];
+    pd.f[v] = f[0];
     // f_r = f_x / r_x;  f_rr = f_xx / r_x^2 - f_x r_xx / r_x^3
-    p.d[v] = fd::d1_centred(f) * d1_scale;
-    p.dd[v] = fd::d2_centred(f) * d2_scale + fd::d1_centred(f) * inv_dx * d2_fx;
-    ko[v] = fd::ko6(f);
-    p.adv[v] = fd::advect_from(beta_r, fd::lopsided_sum(f), ko[v]);
+    pd.d[v] = fd::d1_centred<p>(f) * d1_scale;
+    pd.dd[v] = fd::d2_centred<p>(f) * d2_scale + fd::d1_centred<p>(f) * inv_dx * d2_fx;
+    ko[v] = fd::difference<p>(f);
+    pd.adv[v] = fd::advect_from<p>(beta_r, fd::lopsided_sum<p>(f), ko[v]);
   }
-  return p;
+  return pd;
+}
+
+template <int p>
+PointData point_data_at(const State& u, const Grid& grid, std::size_t i) {
+  Differences ko;
+  return gather<p>(Rows(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
+                   grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i], ko);
 }
 
 } // namespace
 
 PointData point_data(const State& u, const Grid& grid, std::size_t i) {
-  Ko6 ko;
-  return gather(Rows(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
-                grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i], ko);
+  switch (grid.fd_order()) {
+  case 2:
+    return point_data_at<2>(u, grid, i);
+  case 6:
+    return point_data_at<6>(u, grid, i);
+  case 8:
+    return point_data_at<8>(u, grid, i);
+  default:
+    return point_data_at<4>(u, grid, i);
+  }
 }
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
@@ -109,10 +126,27 @@ void GbssnRhs::split_shift(const State& u, double t) {
 }
 
 void GbssnRhs::operator()(const State& u, State& dudt, double t) {
+  switch (grid_->fd_order()) { // dispatched once per call: each order's loop is its own instance
+  case 2:
+    evaluate<2>(u, dudt, t);
+    break;
+  case 6:
+    evaluate<6>(u, dudt, t);
+    break;
+  case 8:
+    evaluate<8>(u, dudt, t);
+    break;
+  default:
+    evaluate<4>(u, dudt, t);
+  }
+}
+
+template <int p>
+void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   dudt.resize(u.size());
   const HorizonShiftParams& hs = params_.horizon_shift;
   if (!hs.active()) {
-    interior<false>(u, dudt);
+    interior<p, false>(u, dudt);
   } else {
     const bool in_window = t >= hs.t_min && t <= hs.t_max;
     const bool midstep_search =
@@ -129,19 +163,19 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
     case V::consistent:
     case V::midstep_update: // these two differ only in when and where h_AH is searched
     case V::box_substage:
-      interior<true, V::consistent>(u, dudt);
+      interior<p, true, V::consistent>(u, dudt);
       break;
     case V::no_shift_derivatives:
-      interior<true, V::no_shift_derivatives>(u, dudt);
+      interior<p, true, V::no_shift_derivatives>(u, dudt);
       break;
     case V::no_shift_second_derivatives:
-      interior<true, V::no_shift_second_derivatives>(u, dudt);
+      interior<p, true, V::no_shift_second_derivatives>(u, dudt);
       break;
     case V::delta_rhs_from_gd:
-      interior<true, V::delta_rhs_from_gd>(u, dudt);
+      interior<p, true, V::delta_rhs_from_gd>(u, dudt);
       break;
     case V::driver_full_shift:
-      interior<true, V::driver_full_shift>(u, dudt);
+      interior<p, true, V::driver_full_shift>(u, dudt);
       break;
     }
   }
@@ -150,7 +184,7 @@ void GbssnRhs::operator()(const State& u, State& dudt, double t) {
   ++evaluations_;
 }
 
-template <bool with_horizon_shift, HorizonShiftParams::Variant variant>
+template <int order, bool with_horizon_shift, HorizonShiftParams::Variant variant>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
@@ -160,16 +194,21 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   if constexpr (with_horizon_shift)
     in_full[Var::beta] = beta_full_.data();
   const double inv_dx = 1.0 / g.dx();
-  const double ko_scale = params_.ko_sigma / 64.0 * inv_dx;
+  // Kreiss-Oliger dissipation: sigma/dx x the (p+2)-th difference, signed and normalised so
+  // that the highest grid mode decays at the rate sigma/dx (fd::Order)
+  const double ko_scale = params_.ko_sigma * fd::Order<order>::dissipation_sign
+                          * fd::Order<order>::dissipation_norm * inv_dx;
   const Gauge gauge = params_.gauge;
   const StencilWeights driver_w(params_.advection.driver), delta_w(params_.advection.delta);
   // The points are taken in blocks of B. Each block's input rows (the fields, with the full
   // shift in place of beta when the horizon shift is on, and beta_GD; each with the stencils'
-  // halo of 3 on each side) and its grid factors are first copied into one scratch array at
-  // compile-time offsets, so that the point loop addresses them all from one base register:
-  // with 10 input and 4 grid rows as separate pointers (and the 9 output rows) the loop spent
-  // about 17% of its time reloading pointers (profile). Results are unchanged bit for bit.
-  constexpr std::size_t B = block_size, W = B + 6; // block, and block with the halo
+  // halo of the stencils' radius R on each side) and its grid factors are first copied into one
+  // scratch array at compile-time offsets, so that the point loop addresses them all from one base
+  // register: with 10 input and 4 grid rows as separate pointers (and the 9 output rows) the loop
+  // spent about 17% of its time reloading pointers (profile). Results are unchanged bit for bit.
+  constexpr std::size_t R = fd::Order<order>::radius;
+  static_assert(R <= Grid::n_ghost, "the stencils reach beyond the ghosts");
+  constexpr std::size_t B = block_size, W = B + 2 * R; // block, and block with the halo
   constexpr std::size_t rows_in = n_vars + 1, rows_grid = 4;
   thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
@@ -178,13 +217,13 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
     Rows in = in_full;
     for (const auto& entry : registry) {
       const std::size_t v = index(entry.var);
-      std::copy(in_full.row[v] + i0 - 3, in_full.row[v] + i0 + n + 3, buf + v * W);
+      std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
     }
 #pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
     for (const auto& entry : registry)
-      in[entry.var] = buf + index(entry.var) * W + 3;
-    std::copy(beta_GD_full + i0 - 3, beta_GD_full + i0 + n + 3, buf + n_vars * W);
-    const double* const beta_GD = buf + n_vars * W + 3;
+      in[entry.var] = buf + index(entry.var) * W + R;
+    std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_vars * W);
+    const double* const beta_GD = buf + n_vars * W + R;
     // the grid factors of this block, laid out once per grid (grid_blocks_)
     const double* const grid = grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B;
     const double* const r = grid + 0 * B;
@@ -197,8 +236,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
     // points.
 #pragma GCC ivdep
     for (std::size_t i = begin; i < end; ++i) {
-      Ko6 k6;
-      PointData p = gather(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
+      Differences k6;
+      PointData p = gather<order>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
       const double d1_scale = inv_dx * inv_rx[i];
       // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
       // beta_GD alone with the horizon shift (H2).
@@ -206,17 +245,19 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       const double* f = beta_GD + i;
       if constexpr (with_horizon_shift) {
         gd.beta = f[0];
-        gd.d_beta = fd::d1_centred(f) * d1_scale;
-        gd.dd_beta =
-            fd::d2_centred(f) * d1_scale * d1_scale + fd::d1_centred(f) * inv_dx * d2_fx[i];
+        gd.d_beta = fd::d1_centred<order>(f) * d1_scale;
+        gd.dd_beta = fd::d2_centred<order>(f) * d1_scale * d1_scale
+                     + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];
       }
       // The two beta d_r Delta^r terms, each with its stencil (AdvectionParams).
       const double* Delta = in[Var::Delta_r] + i;
       const double ko_Delta = k6[Var::Delta_r];
       gd.adv_Delta_r =
-          gd.beta * d1_scale * delta_derivative(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
-      p.adv[Var::Delta_r] = p.f[Var::beta] * d1_scale
-                            * delta_derivative(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
+          gd.beta * d1_scale
+          * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
+      p.adv[Var::Delta_r] =
+          p.f[Var::beta] * d1_scale
+          * delta_derivative<order>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
       Rhs rhs;
       if constexpr (with_horizon_shift) {
         using Variant = HorizonShiftParams::Variant;
@@ -229,9 +270,9 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
           gd = full_shift(p);
         }
         // beta_GD is the evolved field: (G2) advects it, and it is what dissipation damps
-        k6[Var::beta] = fd::ko6(f);
-        p.adv[Var::beta] =
-            fd::advect_from(p.f[Var::beta] * d1_scale, fd::lopsided_sum(f), k6[Var::beta]);
+        k6[Var::beta] = fd::difference<order>(f);
+        p.adv[Var::beta] = fd::advect_from<order>(p.f[Var::beta] * d1_scale,
+                                                  fd::lopsided_sum<order>(f), k6[Var::beta]);
         rhs = gbssn_rhs(p, gauge, gd);
         if constexpr (variant == Variant::delta_rhs_from_gd)
           rhs[Var::Delta_r] = rhs_Delta_r(p, metric_pieces(p), gd);

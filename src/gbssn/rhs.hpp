@@ -1,7 +1,8 @@
 // The right-hand side on the whole grid (method of lines):
-//  - interior points: 4th-order centred derivatives (chain rule through the radial map),
-//    4th-order lopsided derivatives for the beta d_r advection terms, the point-wise equations
-//    of gbssn/equations.hpp, plus Kreiss-Oliger dissipation;
+//  - interior points: centred derivatives of the grid's order p = 2, 4, 6 or 8 (chain rule
+//    through the radial map), lopsided derivatives of order p for the beta d_r advection terms,
+//    the point-wise equations of gbssn/equations.hpp, plus Kreiss-Oliger dissipation of the
+//    (p+2)-th difference (fd/stencils.hpp);
 //  - outer ghost cells: Sommerfeld condition (Sec. 8) with one-sided derivatives, toward each
 //    variable's asymptotic value from the registry, at the speed the gauge gives its wave
 //    family (Gauge::speed);
@@ -25,7 +26,7 @@ namespace gbssn1d {
 enum class AdvectionStencil {
   upwind_gd,   ///< lopsided towards where beta_GD comes from
   upwind_full, ///< lopsided towards where the full shift beta_GD + beta_H comes from
-  centred,     ///< 4th-order centred
+  centred,     ///< centred, of the grid's order
 };
 
 /// The differencing of the two beta d_r Delta^r terms: the one inside d_t Delta^r|beta_GD that
@@ -42,7 +43,8 @@ struct RhsParams {
   HorizonShiftParams horizon_shift;
 };
 
-/// Fields, derivatives and advection terms at grid point i (needs i - 3 ... i + 3).
+/// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
+/// order p (needs i - p/2 - 1 ... i + p/2 + 1).
 PointData point_data(const State& u, const Grid& grid, std::size_t i);
 
 class GbssnRhs {
@@ -65,9 +67,12 @@ public:
 private:
   /// The point loop; the horizon shift and its variant are template parameters, so that each
   /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <bool with_horizon_shift,
+  template <int order, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const State& u, State& dudt) const;
+  /// operator() at the grid's finite-difference order p.
+  template <int p>
+  void evaluate(const State& u, State& dudt, double t);
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;
   /// beta_H_ and beta_full_ = beta_GD + beta_H_ for the current h_AH_ (H3).

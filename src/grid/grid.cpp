@@ -1,5 +1,7 @@
 #include "grid/grid.hpp"
 
+#include "fd/stencils.hpp"
+
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
@@ -62,8 +64,10 @@ double RadialMap::d2r_dx2(double x) const {
   return rmax_ * s_ * s_ * std::sinh(s_ * x) / std::sinh(s_);
 }
 
-Grid::Grid(RadialMap map, std::size_t n_interior)
-    : map_(map), n_(n_interior), dx_(1.0 / static_cast<double>(n_interior)) {
+Grid::Grid(RadialMap map, std::size_t n_interior, int fd_order)
+    : map_(map), n_(n_interior), dx_(1.0 / static_cast<double>(n_interior)), fd_order_(fd_order) {
+  if (!fd::valid_order(fd_order))
+    throw std::invalid_argument("the finite-difference order must be 2, 4, 6 or 8");
   const std::size_t n = n_total();
   x_.resize(n);
   r_.resize(n);
@@ -88,7 +92,8 @@ Grid::Grid(const std::vector<double>& r_cells, const std::vector<double>& dr_cel
     : map_(RadialMap::uniform(r_cells.empty() ? 1.0 : r_cells.back() + 0.5 * dr_cells.back())),
       n_(r_cells.size()), dx_(std::numeric_limits<double>::quiet_NaN()) {
   if (r_cells.size() < n_ghost || r_cells.size() != dr_cells.size())
-    throw std::invalid_argument("a grid of cells needs at least 3 centres and one width each");
+    throw std::invalid_argument(
+        "a grid of cells needs at least as many centres as ghosts, and one width each");
   for (std::size_t k = 0; k < n_; ++k)
     if (!(dr_cells[k] > 0.0) || (k > 0 && !(r_cells[k] > r_cells[k - 1])))
       throw std::invalid_argument("a grid of cells needs increasing centres and positive widths");
@@ -122,8 +127,8 @@ double Grid::min_spacing() const {
 
 Grid make_grid(const GridSpec& spec) {
   if (spec.kind == GridKind::uniform)
-    return Grid(RadialMap::uniform(spec.rmax), spec.N);
-  return Grid(RadialMap::sinh(spec.rmax, spec.dr_inner, sinh_reference_N), spec.N);
+    return Grid(RadialMap::uniform(spec.rmax), spec.N, spec.fd_order);
+  return Grid(RadialMap::sinh(spec.rmax, spec.dr_inner, sinh_reference_N), spec.N, spec.fd_order);
 }
 
 } // namespace gbssn1d

@@ -44,9 +44,13 @@ private:
 
 class Grid {
 public:
-  static constexpr std::size_t n_ghost = 3; ///< enough for 4th-order upwind and 6th-difference KO
+  /// Ghosts on each side: the widest stencil of the highest order (8th-order upwind and the
+  /// 10th difference of its dissipation reach 5 points); lower orders leave the outer ones unread.
+  static constexpr std::size_t n_ghost = 5;
 
-  Grid(RadialMap map, std::size_t n_interior);
+  /// N cells on `map`, differenced at `fd_order` (2, 4, 6 or 8: fd/stencils.hpp); throws
+  /// std::invalid_argument for another order.
+  Grid(RadialMap map, std::size_t n_interior, int fd_order = 4);
   /// Cells given by their centres and widths (increasing, positive), without a map: the
   /// composite of several grids, for output and norms. The origin ghosts mirror the first cells
   /// (r -> -r), the outer ghosts continue the last width; x, 1/r_x and the second-derivative
@@ -60,6 +64,9 @@ public:
   std::size_t end_interior() const { return n_ghost + n_; } ///< one past the last interior
   double dx() const { return dx_; }
   const RadialMap& map() const { return map_; }
+  /// The order of the finite differences on this grid: the right-hand side and every
+  /// diagnostic (constraints, expansion) difference at it.
+  int fd_order() const { return fd_order_; }
 
   // Per point (ghosts included), index 0 ... n_total()-1.
   const std::vector<double>& x() const { return x_; }
@@ -80,6 +87,7 @@ private:
   RadialMap map_;
   std::size_t n_;
   double dx_;
+  int fd_order_ = 4;
   std::vector<double> x_, r_, inv_r_, inv_rx_, d2_fx_coeff_, dr_;
 };
 
@@ -93,6 +101,7 @@ struct GridSpec {
   std::size_t N = 400; ///< interior cells
   double rmax = 1000.0;
   double dr_inner = 0.02; ///< sinh: innermost cell width at N = sinh_reference_N
+  int fd_order = 4;       ///< finite-difference order (2, 4, 6, 8)
 };
 
 /// The grid of `spec`; the sinh map is fixed at sinh_reference_N cells, so N alone refines.

@@ -17,9 +17,12 @@ namespace gbssn1d::mesh {
 /// Interior fine cells next to the ghosts that are refilled from the coarser level at every
 /// fine step when the stages are not filled one by one (TimeInterpolation::quadratic): the
 /// region the four RK4 stages contaminate from the outer ghosts, (stages - 1) x stencil radius
-/// = 3 x 3 = 9 cells; with the 3 ghosts that is stages x radius = 12 points, the buffer width of
-/// Schnetter, Hawley & Hawke 2004 (CQG 21:1465, Sec. 2.3).
-inline constexpr std::size_t buffer_cells = 3 * Grid::n_ghost;
+/// = 3 x 3 = 9 cells; with the 3 ghosts the 4th-order stencils read that is stages x radius = 12
+/// points, the buffer width of Schnetter, Hawley & Hawke 2004 (CQG 21:1465, Sec. 2.3). Boxes
+/// difference at 4th order (other orders are refused there: their radius would need a wider
+/// buffer).
+inline constexpr std::size_t stencil_radius = 3;
+inline constexpr std::size_t buffer_cells = 3 * stencil_radius;
 
 /// Fewest cells per level with more than one level: the buffer, the restriction stencil's reach
 /// (a coarse cell is restricted from fine cells 2i-2 ... 2i+3) and one restricted cell.
@@ -29,10 +32,11 @@ class MeshLayout {
 public:
   /// `levels` levels of `n_cells` cells each on `map` (levels > 1: a uniform map, N even, at
   /// least min_cells). Throws std::invalid_argument naming the parameter and why.
-  MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t levels);
+  /// `fd_order`: the grids' finite-difference order (only 4 with more than one level).
+  MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t levels, int fd_order = 4);
   /// L uniform levels on [0, rmax].
-  MeshLayout(double rmax, std::size_t n_cells, std::size_t levels)
-      : MeshLayout(RadialMap::uniform(rmax), n_cells, levels) {}
+  MeshLayout(double rmax, std::size_t n_cells, std::size_t levels, int fd_order = 4)
+      : MeshLayout(RadialMap::uniform(rmax), n_cells, levels, fd_order) {}
 
   std::size_t levels() const { return grids_.size(); }
   std::size_t n_cells() const { return grids_.front().n_interior(); }

@@ -376,13 +376,13 @@ TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an un
 // RK4 is stable for d_t B = -eta B only while eta dt stays inside its real stability interval
 // (-2.785..., 0]: at eta dt = 2.8 the amplification 1 - z + z^2/2 - z^3/6 + z^4/24 exceeds 1.
 TEST_CASE("the Gamma-driver damping limit: eta dt = 2.7 runs, 2.8 is refused as unstable") {
-  // uniform N = 20, rmax = 100: dx = 5, dt = cfl dx = 1.25
+  // uniform N = 20, rmax = 100, cfl = 0.25: dx = 5, dt = cfl dx = 1.25
   auto amplification = [](double z) {
     return 1 - z + z * z / 2 - z * z * z / 6 + z * z * z * z / 24;
   };
   CHECK(std::abs(amplification(2.7)) < 1.0);
   CHECK(std::abs(amplification(2.8)) > 1.0);
-  const std::string grid = "--grid uniform --N 20 --rmax 100 --tmax 0 ";
+  const std::string grid = "--grid uniform --N 20 --rmax 100 --cfl 0.25 --tmax 0 ";
   const fs::path out = scratch("eta_ok");
   CHECK(run("evolve " + grid + "--eta " + std::to_string(2.7 / 1.25) + " --out " + out.string())
             .status

@@ -93,6 +93,11 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   CHECK(c.grid.N == d.grid.N);
   CHECK(c.grid.dr_inner == d.grid.dr_inner);
   CHECK(c.cfl == d.cfl);
+  CHECK(c.cfl == 0.5); // measured (docs/horizon-shift-study.md Sec. 11)
+  Params b;
+  b.grid = "boxes";
+  b.N = 64;
+  CHECK(evolution_config(validated(b)).cfl == 0.25); // boxes: their time interpolation
   CHECK(c.chi_floor == d.chi_floor);
   CHECK(c.rhs.gauge.shift.eta == 1.0); // 2/M
   CHECK(c.rhs.gauge.slicing.mu_L == 2.0);

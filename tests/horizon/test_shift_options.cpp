@@ -2,6 +2,7 @@
 // the areal-radius norms, the finder's failures, and the coarse-resolution convergence of the
 // default method (docs/horizon-shift-study.md).
 #include "../test_support.hpp"
+#include "config/config_file.hpp"
 #include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
@@ -152,9 +153,68 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   p.rah0 = 0.6;
   resolve_defaults(p);
   CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
-  p.rah0 = 0.89;
-  CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::rational);
-  CHECK(rhs_params(p).horizon_shift.width == 3.0);
+  // and config.toml records what auto stood for, so that a later change of auto is detected
+  CHECK(p.rah_profile == "gauss");
+  CHECK(p.rah_width == 1.0);
+  Params q = trumpet(200, 20.0, 0.0);
+  q.rahA = 0.5;
+  q.rah0 = 0.89;
+  resolve_defaults(q);
+  CHECK(rhs_params(q).horizon_shift.profile == ShiftProfile::rational);
+  CHECK(rhs_params(q).horizon_shift.width == 3.0);
+  CHECK(q.rah_profile == "rational");
+  CHECK(config_text(q).find("rah-width = 3\n") != std::string::npos);
+  // without the horizon shift nothing is resolved (auto means nothing there)
+  Params off = trumpet(200, 20.0, 0.0);
+  resolve_defaults(off);
+  CHECK(off.rah_profile == "auto");
+  CHECK_FALSE(off.rah_rcut.has_value());
+}
+
+TEST_CASE("beta_H is tapered to zero before the outer boundary: 1 to rcut/2, 0 from rcut") {
+  // the step itself: 1, 1/2 at the middle (g(1 - u) = g(u) there), 0, and monotone
+  CHECK(outer_taper(0.0) == 1.0);
+  CHECK(outer_taper(0.5) == 1.0);
+  CHECK(outer_taper(0.75) == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(outer_taper(1.0) == 0.0);
+  CHECK(outer_taper(3.0) == 0.0);
+  for (double s = 0.5; s < 1.0; s += 0.01)
+    CHECK(outer_taper(s + 0.01) <= outer_taper(s));
+  // smooth: near each end it departs from 1 (or 0) faster than any power (here: below 1e-6
+  // within 0.03 of the end, where a C^3 polynomial step would still be ~1e-5)
+  CHECK(1.0 - outer_taper(0.5 + 0.03) < 1e-6);
+  CHECK(outer_taper(1.0 - 0.03) < 1e-6);
+  // in a run: default rcut = rmax / 2; beta_H / (f(r)/sqrt(a)) is A (h_AH - h) times the taper
+  Params p = trumpet(400, 40.0, 0.0);
+  p.rahA = 0.5;
+  p.rah0 = 1.2;
+  p.rah_profile = "rational";
+  p.rah_width = 3.0;
+  p.rah_normal = "conformal";
+  resolve_defaults(p);
+  Simulation sim = simulation(p);
+  REQUIRE(p.rah_rcut.has_value());
+  CHECK(*p.rah_rcut == 20.0);
+  const auto beta_H = sim.horizon_shift();
+  const Grid& g = sim.grid();
+  const auto a = field(sim.state(), g, Var::a);
+  const std::size_t i0 = g.first_interior() + 20;
+  auto ratio = [&](std::size_t i) {
+    const double q = g.r()[i] / 3.0;
+    return beta_H[i] / (q / (1.0 + q * q) / std::sqrt(a[i]));
+  };
+  const double amplitude = ratio(i0);
+  REQUIRE(std::abs(amplitude) > 1e-6);
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    const double r = g.r()[i];
+    INFO("r = " << r);
+    if (r <= 10.0)
+      CHECK(ratio(i) == doctest::Approx(amplitude).epsilon(1e-12));
+    else if (r >= 20.0)
+      CHECK(beta_H[i] == 0.0);
+    else
+      CHECK(ratio(i) == doctest::Approx(amplitude * outer_taper(r / 20.0)).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("the advection stencil options change exactly the term they name") {
@@ -186,8 +246,9 @@ TEST_CASE("the advection stencil options change exactly the term they name") {
   for (std::size_t i = g.first_interior() + 5; i < g.end_interior() - 5; ++i) {
     const double scale = 1.0 / (g.dx() * g.map().dr_dx(g.x()[i]));
     const double* f = Delta.data() + i;
-    const double up = (beta[i] > 0 ? fd::d1_lopsided_plus(f) : fd::d1_lopsided_minus(f)) * scale;
-    const double centred = fd::d1_centred(f) * scale;
+    const double up =
+        (beta[i] > 0 ? fd::d1_lopsided_plus<4>(f) : fd::d1_lopsided_minus<4>(f)) * scale;
+    const double centred = fd::d1_centred<4>(f) * scale;
     const double expected = beta[i] * (centred - up);
     const std::size_t iB = index(Var::B) * nt + i, iD = index(Var::Delta_r) * nt + i;
     // round-off of the O(1) right-hand sides: ~1e-15
@@ -392,6 +453,7 @@ TEST_CASE("--rah-width reaches the shift: f(r) = (r/w)/(1 + (r/w)^2) with the wi
     p.rah_profile = "rational";
     p.rah_width = w;
     p.rah_normal = "conformal";
+    p.rah_rcut = 1e6; // the taper far outside the grid (it has its own test)
     Simulation sim = simulation(p);
     const auto beta_H = sim.horizon_shift();
     const Grid& g = sim.grid();
