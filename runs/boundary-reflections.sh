@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The outer boundary's reflections and the taper of beta_H (docs/horizon-shift-study.md,
+# Sec. 7.1), every run made afresh in out/boundary-reflections/ (about 2 minutes on 2 cores):
+#  1. the reflected amplitude at the horizon: the default wormhole (standard gauge) on uniform
+#     grids with the boundary at 50, 100, 200 M, at spacings M/8 and M/16, to 150 M, against a
+#     reference at the same spacing with the boundary at 400 M (beyond the light cone): the
+#     largest difference of the lapse at the puncture and of M_AH once the boundary's influence
+#     can have reached the horizon, and before;
+#  2. the criterion of uniform N = 1280, rmax 80 M to 100 M: max|M_AH - M| for the standard
+#     gauge and h = 0.6, 0.89, 1.2 M (A = 0.5), at --fd-order 4 and 6, with beta_H tapered to 0
+#     before the boundary (the default, --rah-rcut = rmax/2) and not (--rah-rcut 1e9), and with
+#     the boundary at 160 M (N = 2560, the same spacing) as the reference.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+out=out/boundary-reflections
+rm -rf "$out"
+mkdir -p "$out"
+jobs=$(nproc)
+run() { # name, then evolve flags; runs in the background, at most $jobs at once
+  local name=$1
+  shift
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  build/gbssn1d evolve --grid uniform --dt-series 0.5 --dt-profiles 1000 --out "$out/$name" "$@" \
+    >"$out/$name.log" 2>&1 || echo "  ($name stopped, see $out/$name.log)" &
+}
+for per_M in 8 16; do
+  for rmax in 50 100 200 400; do
+    run "reflect-M$per_M-rmax$rmax" --rmax "$rmax" --N "$((rmax * per_M))" --tmax 150
+  done
+done
+for p in 4 6; do
+  for h in 0 0.6 0.89 1.2; do
+    shift_flags=()
+    [ "$h" != 0 ] && shift_flags=(--rahA 0.5 --rah0 "$h")
+    run "p$p-h$h-taper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 "${shift_flags[@]}"
+    run "p$p-h$h-far" --fd-order "$p" --rmax 160 --N 2560 --tmax 100 "${shift_flags[@]}"
+    [ "$h" != 0 ] && run "p$p-h$h-notaper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 \
+      "${shift_flags[@]}" --rah-rcut 1e9
+  done
+done
+wait
+$py - "$out" <<'PY' | tee "$out/table.txt"
+import os, sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import parse, read_text
+out = sys.argv[1]
+def series(name):
+    columns, blocks = parse(read_text(os.path.join(out, name, 'timeseries.dat')))
+    d = blocks[0][1]
+    return {c: d[:, columns.index(c)] for c in columns}
+print("# 1. reflected amplitude at the horizon: largest |difference| to the rmax 400 M run")
+print("# spacing rmax t_b max|d alpha_center| max|d M_AH| (t >= t_b) max|d M_AH| (t < t_b)"
+      " (t_b = (rmax - 2)/sqrt 2: the boundary's influence reaches the horizon)")
+for per_M in (8, 16):
+    ref = series(f"reflect-M{per_M}-rmax400")
+    for rmax in (50, 100, 200):
+        s = series(f"reflect-M{per_M}-rmax{rmax}")
+        n = min(len(s['t']), len(ref['t']))
+        t = s['t'][:n]
+        # the boundary's influence reaches the horizon (r ~ 2 M) after (rmax - 2) / sqrt(2) at
+        # the gauge speed; the collapse's outgoing pulse comes back after twice that
+        t_return = (rmax - 2.0) / np.sqrt(2.0)
+        late, early = t >= t_return, t < t_return
+        da = np.abs(s['alpha_center'][:n] - ref['alpha_center'][:n])
+        dm = np.abs(s['M_ah'][:n] - ref['M_ah'][:n])
+        fmt = lambda a, sel: f"{np.nanmax(a[sel]):.2e}" if sel.any() else "--"
+        print(f"M/{per_M} {rmax} {t_return:.0f} {fmt(da, late)} {fmt(dm, late)} {fmt(dm, early)}")
+print("# 2. uniform N = 1280, rmax 80 M, to 100 M: max|M_AH - M| over 0 <= t <= 100 M")
+print("# fd_order h tapered(default) untapered boundary_at_160M")
+for p in (4, 6):
+    for h in ('0', '0.6', '0.89', '1.2'):
+        def m(name):
+            path = os.path.join(out, name, 'timeseries.dat')
+            if not os.path.exists(path):
+                return "--"
+            e = np.abs(series(name)['M_ah_err'])
+            return f"{np.nanmax(e):.2e}"
+        label = 'standard' if h == '0' else h
+        print(f"{p} {label} {m(f'p{p}-h{h}-taper')} {m(f'p{p}-h{h}-notaper')} {m(f'p{p}-h{h}-far')}")
+PY
