@@ -405,8 +405,18 @@ int run_cli(int argc, char** argv) {
   add_number_option(*sweep_cmd, "--progress-every", sweep_options.progress_every,
                     "seconds between progress lines (k of n done, running members) while "
                     "members run; 0: none");
-  sweep_cmd->add_option("--emit-tasks", sweep_options.emit_tasks,
-                        "write the member command lines (GNU parallel, Slurm arrays) and exit");
+  CLI::Option* sweep_emit = sweep_cmd->add_option(
+      "--emit-tasks", sweep_options.emit_tasks,
+      "write one command line per valid member (for GNU parallel or a Slurm array) and exit; "
+      "each runs its member into --out from any folder and resumes it when requeued");
+  CLI::Option* sweep_member = sweep_cmd->add_option(
+      "--member", sweep_options.member,
+      "run only the member of this name (what an emitted line does); exit 0 finished, 3 blew "
+      "up or failed");
+  CLI::Option* sweep_collect = sweep_cmd->add_flag(
+      "--collect", sweep_options.collect,
+      "build summary.dat from the members in --out without running any; exit 0 if all "
+      "finished, 3 if any blew up, failed or was invalid, 1 if some have not run yet");
   sweep_cmd->allow_extras();
   sweep_cmd->footer("Every other flag is an evolve flag, common to all members.");
 
@@ -465,6 +475,17 @@ int run_cli(int argc, char** argv) {
         throw ParamError("-j", std::to_string(sweep_options.jobs),
                          "has no effect with --emit-tasks: the lines run as the scheduler runs "
                          "them (e.g. `parallel -j N < TASKS`, or an array job)");
+      if ((sweep_member->count() > 0 || sweep_collect->count() > 0) && sweep_jobs->count() > 0)
+        throw ParamError("-j", std::to_string(sweep_options.jobs),
+                         "has no effect with --member or --collect (one member, or none, runs)");
+      if (sweep_collect->count() > 0 && (sweep_member->count() > 0 || sweep_emit->count() > 0))
+        throw ParamError("--collect", "is its own step: not with --member or --emit-tasks");
+      if (sweep_member->count() > 0 && sweep_options.member.empty())
+        throw ParamError("--member", "''",
+                         "names no member (a member folder's name, as in the "
+                         "emitted lines)");
+      if (sweep_member->count() > 0 && sweep_emit->count() > 0)
+        throw ParamError("--member", sweep_options.member, "not with --emit-tasks");
       check_jobs(sweep_options.jobs);
       if (!std::isfinite(sweep_options.progress_every) || sweep_options.progress_every < 0.0)
         throw ParamError("--progress-every", fmt::format("{}", sweep_options.progress_every),

@@ -272,194 +272,104 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
   return members;
 }
 
-int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args) {
-  std::vector<SweepAxis> axes;
-  for (const auto& s : options.sweeps)
-    axes.push_back(parse_sweep_axis(s));
-  if (axes.empty())
-    throw ParamError("--sweep", "''", "give at least one flag=values list");
-  {
-    std::set<std::string> flags; // a flag on two axes would mislabel the members
-    for (const auto& axis : axes)
-      for (const auto& flag : axis.flags)
-        if (!flags.insert(flag).second)
-          throw ParamError("--sweep", flag, "is swept more than once (one axis per flag)");
-  }
-  if (options.out.empty())
-    throw ParamError("--out", "''", "an output directory is required");
-  const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
-  // A value common to all members that no member can run with is a usage error: refused
-  // before anything is launched or written.
-  {
-    std::string first_error;
-    bool any_valid = false;
-    for (const auto& m : members) {
-      try {
-        std::vector<std::string> args(m.args.begin() + 1, m.args.end());
-        Params p = parse_evolve_args(args);
-        resolve_defaults(p);
-        validate(p);
-        any_valid = true;
-        break;
-      } catch (const ParamError& e) {
-        if (first_error.empty())
-          first_error = e.what();
-      }
-    }
-    if (!any_valid && !first_error.empty())
-      throw ParamError("--sweep", fmt::format("{}", fmt::join(options.sweeps, " ")),
-                       "no member is valid: " + first_error);
-  }
-  const std::string exe = fs::canonical("/proc/self/exe").string();
+namespace {
 
-  if (!options.emit_tasks.empty()) {
-    std::string lines;
-    for (const auto& m : members) {
-      lines += shell_quote(exe);
-      for (const auto& a : m.args)
-        lines += ' ' + shell_quote(a);
-      lines += '\n';
-    }
-    std::ofstream tasks(options.emit_tasks);
-    if (!tasks)
-      throw ParamError("--emit-tasks", options.emit_tasks, "cannot be written");
-    tasks << lines;
-    tasks.close(); // flushes: a full disk shows here
-    if (!tasks)
-      throw OutputError(fmt::format("--emit-tasks {}: the command lines could not be written",
-                                    options.emit_tasks));
-    say("gbssn1d sweep: {} member command lines written to {}\n", members.size(),
-        options.emit_tasks);
-    return 0;
+/// Why `m` cannot run (its flags do not validate), or nullopt.
+std::optional<std::string> invalid_reason(const SweepMember& m) {
+  try {
+    std::vector<std::string> args(m.args.begin() + 1, m.args.end());
+    Params p = parse_evolve_args(args);
+    resolve_defaults(p);
+    validate(p);
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    return std::string(e.what());
   }
+}
 
-  const fs::path dir(options.out);
-  // A rerun into the same folder continues the sweep only if every member that has left
-  // anything there was run with the inputs it would run with now; results of other inputs are
-  // never reused or mixed in. Checked before anything is written or launched.
-  {
-    std::vector<std::string> changed;
-    for (const auto& m : members) {
-      const std::string before = earlier_inputs(dir, m);
-      if (before.empty())
-        continue;
-      const auto diff = config_differences(before, m.inputs);
-      if (!diff.empty())
-        changed.push_back(fmt::format("{} ({})", m.name, fmt::join(diff, ", ")));
-    }
-    if (!changed.empty())
-      throw ParamError(
-          "--out", options.out,
-          fmt::format("holds members run with other inputs: {}; nothing was run or changed. "
-                      "Use another --out, or remove those members' folders and logs/ files to "
-                      "rerun them",
-                      fmt::join(changed.begin(),
-                                changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3),
-                                "; "))
-              + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
+/// A folder that holds members run with other inputs is refused (naming them) before anything
+/// is written or launched: results of other inputs are never reused or mixed in.
+void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMember*>& members,
+                          const std::string& out) {
+  std::vector<std::string> changed;
+  for (const SweepMember* m : members) {
+    const std::string before = earlier_inputs(dir, *m);
+    if (before.empty())
+      continue;
+    const auto diff = config_differences(before, m->inputs);
+    if (!diff.empty())
+      changed.push_back(fmt::format("{} ({})", m->name, fmt::join(diff, ", ")));
   }
-  create_output_dir("--out", dir / "logs");
-  install_stop_handlers();
-  std::mutex mutex;
-  std::size_t finished = 0; // members done in this run (under `mutex`)
-  using Clock = std::chrono::steady_clock;
-  std::map<std::string, Clock::time_point> running; // member -> start (under `mutex`)
-  std::size_t done_before = 0; // members finished by an earlier run of the same sweep
+  if (!changed.empty())
+    throw ParamError(
+        "--out", out,
+        fmt::format("holds members run with other inputs: {}; nothing was run or changed. "
+                    "Use another --out, or remove those members' folders and logs/ files to "
+                    "rerun them",
+                    fmt::join(changed.begin(),
+                              changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3), "; "))
+            + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
+}
+
+std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members) {
+  std::vector<const SweepMember*> all;
   for (const auto& m : members)
-    done_before += member_done(dir / "logs" / (m.name + ".status")) ? 1 : 0;
-  // A progress line every progress_every seconds while members run: on long runs the [k/n]
-  // lines can be hours apart.
-  std::condition_variable all_done;
-  bool stop_progress = false;
-  std::thread progress;
-  if (options.progress_every > 0.0)
-    progress = std::thread([&] {
-      std::unique_lock lock(mutex);
-      const auto every = std::chrono::duration<double>(options.progress_every);
-      while (!all_done.wait_for(lock, every, [&] { return stop_progress; })) {
-        if (running.empty())
-          continue;
-        const auto longest =
-            std::min_element(running.begin(), running.end(),
-                             [](const auto& a, const auto& b) { return a.second < b.second; });
-        say("gbssn1d sweep: {} of {} members done, {} running (longest: {}, {:.0f} s)\n",
-            done_before + finished, members.size(), running.size(), longest->first,
-            std::chrono::duration<double>(Clock::now() - longest->second).count());
-      }
-    });
-  auto member_task = [&](std::size_t k) {
-    {
-      const SweepMember& m = members[k];
-      const fs::path status_file = dir / "logs" / (m.name + ".status");
-      if (member_done(status_file))
-        return; // finished in an earlier run of the same sweep
-      if (stop_signal() != 0)
-        return; // interrupted: start nothing new (a rerun resumes)
-      write_file_atomically(dir / "logs" / (m.name + ".inputs"), m.inputs);
-      // Invalid values are caught here, before a subprocess is started.
-      std::string status = "ok", reason = "-";
-      double wall = 0.0;
-      try {
-        std::vector<std::string> args(m.args.begin() + 1, m.args.end());
-        Params p = parse_evolve_args(args);
-        resolve_defaults(p);
-        validate(p);
-      } catch (const std::exception& e) {
-        status = "invalid";
-        reason = e.what();
-      }
-      if (status == "ok") {
-        const auto start = std::chrono::steady_clock::now();
-        {
-          const std::lock_guard lock(mutex);
-          running[m.name] = start;
-        }
-        const fs::path log = dir / "logs" / (m.name + ".log");
-        // a member stopped with a checkpoint (interrupted, or killed) continues from it
-        const fs::path member_dir = dir / m.name;
-        const bool resumable = fs::is_regular_file(member_dir / "checkpoint.bin")
-                               && fs::is_regular_file(member_dir / "config.toml");
-        const std::vector<std::string> args =
-            resumable ? std::vector<std::string>{"resume", member_dir.string()} : m.args;
-        const int rc = spawn_and_wait(exe, args, log);
-        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (rc > 128 && stop_signal() != 0) {
-          status = "interrupted";
-          reason = "interrupted by " + signal_name(rc - 128);
-        } else if (rc != 0) {
-          status = rc == 3 ? "blew-up" : "failed";
-          reason = last_line(log);
-          if (reason.empty())
-            reason =
-                rc > 128 ? "killed by " + signal_name(rc - 128) : fmt::format("exit status {}", rc);
-        }
-      }
-      write_file_atomically(status_file, fmt::format("{} {} {}\n", status, wall, token(reason)));
-      const std::lock_guard lock(mutex);
-      running.erase(m.name);
-      ++finished;
-      say("gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", done_before + finished, members.size(),
-          m.name, status, wall, status == "ok" ? "" : ": " + reason);
-    }
-  };
-  {
-    struct JoinOnExit { // the reporter stops however run_tasks ends (an exception included)
-      std::function<void()> stop;
-      ~JoinOnExit() { stop(); }
-    } join_progress{[&] {
-      if (!progress.joinable())
-        return;
-      {
-        const std::lock_guard lock(mutex);
-        stop_progress = true;
-      }
-      all_done.notify_all();
-      progress.join();
-    }};
-    run_tasks(members.size(), options.jobs, member_task);
-  }
+    all.push_back(&m);
+  return all;
+}
 
-  // summary.dat
+/// What one member's run ended with.
+struct MemberOutcome {
+  std::string status = "ok", reason = "-";
+  double wall = 0.0;
+};
+
+/// Runs member `m` to completion (from its checkpoint if it has one) as a subprocess, with its
+/// inputs, log and status in DIR/logs/: the one place a member is run, by a sweep and by an
+/// emitted task line alike. `on_start` is called when the subprocess starts.
+MemberOutcome run_member(const fs::path& dir, const SweepMember& m, const std::string& exe,
+                         const std::function<void()>& on_start = {}) {
+  MemberOutcome o;
+  write_file_atomically(dir / "logs" / (m.name + ".inputs"), m.inputs);
+  // Invalid values are caught here, before a subprocess is started.
+  if (const auto why = invalid_reason(m)) {
+    o.status = "invalid";
+    o.reason = *why;
+  } else {
+    if (on_start)
+      on_start();
+    const auto start = std::chrono::steady_clock::now();
+    const fs::path log = dir / "logs" / (m.name + ".log");
+    // a member stopped with a checkpoint (interrupted, killed, or requeued) continues from it
+    const fs::path member_dir = dir / m.name;
+    const bool resumable = fs::is_regular_file(member_dir / "checkpoint.bin")
+                           && fs::is_regular_file(member_dir / "config.toml");
+    const std::vector<std::string> args =
+        resumable ? std::vector<std::string>{"resume", member_dir.string()} : m.args;
+    const int rc = spawn_and_wait(exe, args, log);
+    o.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (rc > 128 && stop_signal() != 0) {
+      o.status = "interrupted";
+      o.reason = "interrupted by " + signal_name(rc - 128);
+    } else if (rc != 0) {
+      o.status = rc == 3 ? "blew-up" : "failed";
+      o.reason = last_line(log);
+      if (o.reason.empty())
+        o.reason =
+            rc > 128 ? "killed by " + signal_name(rc - 128) : fmt::format("exit status {}", rc);
+    }
+  }
+  write_file_atomically(dir / "logs" / (m.name + ".status"),
+                        fmt::format("{} {} {}\n", o.status, o.wall, token(o.reason)));
+  return o;
+}
+
+/// DIR/summary.dat from the members' status files and outputs (nothing is run); members
+/// without a status are `invalid` if their flags do not validate, `missing` otherwise. Returns
+/// each member's status.
+std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& options,
+                                       const std::vector<SweepAxis>& axes,
+                                       const std::vector<SweepMember>& members) {
   std::vector<std::string> cols;
   std::vector<std::string> resolution_axis; // the flags that vary together with N
   for (const auto& axis : axes) {
@@ -481,8 +391,11 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   for (std::size_t k = 0; k < members.size(); ++k) {
     std::ifstream in(dir / "logs" / (members[k].name + ".status"));
     in >> statuses[k] >> walls[k] >> reasons[k];
-    if (statuses[k].empty())
-      statuses[k] = "missing";
+    if (statuses[k].empty()) {
+      const auto why = invalid_reason(members[k]);
+      statuses[k] = why ? "invalid" : "missing";
+      reasons[k] = why ? token(*why) : "-";
+    }
     results[k] = read_result(dir / members[k].name / "timeseries.dat");
   }
   // order of the final H_L2_ext over each group of members that differ only in N
@@ -533,19 +446,232 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     summary.write(line.data(), line.size());
   }
   summary.flush(); // checked: a failed write throws OutputError
+  return statuses;
+}
+
+/// `sweep ... --member NAME`: that member alone, as an emitted task line runs it (checked
+/// against the inputs of what its folder holds, resumed from its checkpoint, its log and status
+/// in DIR/logs/). Exit status: 0 finished, 3 blew up or failed, 2 invalid, 128 + signal when
+/// interrupted; a member finished earlier is not rerun and gives its recorded status.
+int run_one_member(const SweepOptions& options, const std::vector<SweepMember>& members,
+                   const std::string& exe) {
+  const auto it = std::find_if(members.begin(), members.end(),
+                               [&](const SweepMember& m) { return m.name == options.member; });
+  if (it == members.end())
+    throw ParamError("--member", options.member,
+                     fmt::format("is not a member of this sweep (its {} members: {}{})",
+                                 members.size(), members.front().name,
+                                 members.size() > 1 ? " ... " + members.back().name : ""));
+  const SweepMember& m = *it;
+  const fs::path dir(options.out);
+  check_earlier_inputs(dir, {&m}, options.out);
+  const fs::path status_file = dir / "logs" / (m.name + ".status");
+  MemberOutcome o;
+  if (member_done(status_file)) {
+    std::ifstream in(status_file);
+    in >> o.status >> o.wall >> o.reason;
+    say("gbssn1d sweep: {} finished earlier: {}\n", m.name, o.status);
+  } else {
+    create_output_dir("--out", dir / "logs");
+    install_stop_handlers();
+    o = run_member(dir, m, exe);
+    say("gbssn1d sweep: {} {} ({:.1f} s){}\n", m.name, o.status, o.wall,
+        o.status == "ok" ? "" : ": " + o.reason);
+  }
+  if (o.status == "ok")
+    return 0;
+  if (o.status == "invalid")
+    return 2;
+  if (o.status == "interrupted")
+    return stop_signal() != 0 ? 128 + stop_signal() : 3;
+  return 3;
+}
+
+/// The exit status for a set of member statuses: 0 if all finished, 3 if any blew up, failed or
+/// was invalid (what a direct sweep returns), 1 if the only gaps are members that have not run.
+int exit_status(const std::vector<std::string>& statuses, std::size_t n) {
+  std::map<std::string, std::size_t> count;
+  for (const auto& s : statuses)
+    ++count[s];
+  if (count["ok"] == n)
+    return 0;
+  std::vector<std::string> parts;
+  for (const auto& [status, k] : count)
+    if (status != "ok" && k > 0)
+      parts.push_back(fmt::format("{} {}", k, status));
+  say("gbssn1d sweep: {} of {} members did not complete ({}; see summary.dat)\n", n - count["ok"],
+      n, fmt::join(parts, ", "));
+  const bool only_missing = count["missing"] + count["ok"] == n;
+  return only_missing ? 1 : 3;
+}
+
+} // namespace
+
+int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args) {
+  std::vector<SweepAxis> axes;
+  for (const auto& s : options.sweeps)
+    axes.push_back(parse_sweep_axis(s));
+  if (axes.empty())
+    throw ParamError("--sweep", "''", "give at least one flag=values list");
+  {
+    std::set<std::string> flags; // a flag on two axes would mislabel the members
+    for (const auto& axis : axes)
+      for (const auto& flag : axis.flags)
+        if (!flags.insert(flag).second)
+          throw ParamError("--sweep", flag, "is swept more than once (one axis per flag)");
+  }
+  if (options.out.empty())
+    throw ParamError("--out", "''", "an output directory is required");
+  const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
+  // A value common to all members that no member can run with is a usage error: refused
+  // before anything is launched or written.
+  {
+    std::string first_error;
+    bool any_valid = false;
+    for (const auto& m : members) {
+      try {
+        std::vector<std::string> args(m.args.begin() + 1, m.args.end());
+        Params p = parse_evolve_args(args);
+        resolve_defaults(p);
+        validate(p);
+        any_valid = true;
+        break;
+      } catch (const ParamError& e) {
+        if (first_error.empty())
+          first_error = e.what();
+      }
+    }
+    if (!any_valid && !first_error.empty())
+      throw ParamError("--sweep", fmt::format("{}", fmt::join(options.sweeps, " ")),
+                       "no member is valid: " + first_error);
+  }
+  const std::string exe = fs::canonical("/proc/self/exe").string();
+
+  const fs::path dir(options.out);
+  if (!options.member.empty() && !options.collect && options.emit_tasks.empty())
+    return run_one_member(options, members, exe);
+  if (options.collect) {
+    check_earlier_inputs(dir, all_of(members), options.out);
+    const auto statuses = write_summary(dir, options, axes, members);
+    say("gbssn1d sweep: summary.dat collected from {} members (nothing was run)\n", members.size());
+    return exit_status(statuses, members.size());
+  }
+  if (!options.emit_tasks.empty()) {
+    // One line per valid member, each the one-member form of this very sweep: it runs that
+    // member (resuming its checkpoint when requeued) and writes its results, log and status
+    // into the sweep's folder, from whatever folder the scheduler starts it in. Invalid
+    // members are not emitted; --collect marks them.
+    check_earlier_inputs(dir, all_of(members), options.out);
+    const std::string cwd = fs::current_path().string();
+    const std::string abs_out = fs::absolute(options.out).lexically_normal().string();
+    std::string lines;
+    std::size_t emitted = 0;
+    for (const auto& m : members) {
+      if (const auto why = invalid_reason(m)) {
+        say("gbssn1d sweep: {} not emitted: {}\n", m.name, *why);
+        continue;
+      }
+      lines += "cd " + shell_quote(cwd) + " && " + shell_quote(exe) + " sweep --out "
+               + shell_quote(abs_out) + " --member " + shell_quote(m.name) + " --progress-every 0";
+      for (const auto& sw : options.sweeps)
+        lines += " --sweep " + shell_quote(sw);
+      for (const auto& a : evolve_args)
+        lines += ' ' + shell_quote(a);
+      lines += '\n';
+      ++emitted;
+    }
+    std::ofstream tasks(options.emit_tasks);
+    if (!tasks)
+      throw ParamError("--emit-tasks", options.emit_tasks, "cannot be written");
+    tasks << lines;
+    tasks.close(); // flushes: a full disk shows here
+    if (!tasks)
+      throw OutputError(fmt::format("--emit-tasks {}: the command lines could not be written",
+                                    options.emit_tasks));
+    say("gbssn1d sweep: {} member command lines written to {} (of {} members); then "
+        "`gbssn1d sweep ... --collect` with the same flags builds summary.dat\n",
+        emitted, options.emit_tasks, members.size());
+    return 0;
+  }
+
+  // A rerun into the same folder continues the sweep only if every member that has left
+  // anything there was run with the inputs it would run with now.
+  check_earlier_inputs(dir, all_of(members), options.out);
+  create_output_dir("--out", dir / "logs");
+  install_stop_handlers();
+  std::mutex mutex;
+  std::size_t finished = 0; // members done in this run (under `mutex`)
+  using Clock = std::chrono::steady_clock;
+  std::map<std::string, Clock::time_point> running; // member -> start (under `mutex`)
+  std::size_t done_before = 0; // members finished by an earlier run of the same sweep
+  for (const auto& m : members)
+    done_before += member_done(dir / "logs" / (m.name + ".status")) ? 1 : 0;
+  // A progress line every progress_every seconds while members run: on long runs the [k/n]
+  // lines can be hours apart.
+  std::condition_variable all_done;
+  bool stop_progress = false;
+  std::thread progress;
+  if (options.progress_every > 0.0)
+    progress = std::thread([&] {
+      std::unique_lock lock(mutex);
+      const auto every = std::chrono::duration<double>(options.progress_every);
+      while (!all_done.wait_for(lock, every, [&] { return stop_progress; })) {
+        if (running.empty())
+          continue;
+        const auto longest =
+            std::min_element(running.begin(), running.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        say("gbssn1d sweep: {} of {} members done, {} running (longest: {}, {:.0f} s)\n",
+            done_before + finished, members.size(), running.size(), longest->first,
+            std::chrono::duration<double>(Clock::now() - longest->second).count());
+      }
+    });
+  auto member_task = [&](std::size_t k) {
+    {
+      const SweepMember& m = members[k];
+      const fs::path status_file = dir / "logs" / (m.name + ".status");
+      if (member_done(status_file))
+        return; // finished in an earlier run of the same sweep
+      if (stop_signal() != 0)
+        return; // interrupted: start nothing new (a rerun resumes)
+      const MemberOutcome o = run_member(dir, m, exe, [&] {
+        const std::lock_guard lock(mutex);
+        running[m.name] = Clock::now();
+      });
+      const std::string& status = o.status;
+      const std::string& reason = o.reason;
+      const double wall = o.wall;
+      const std::lock_guard lock(mutex);
+      running.erase(m.name);
+      ++finished;
+      say("gbssn1d sweep: [{}/{}] {} {} ({:.1f} s){}\n", done_before + finished, members.size(),
+          m.name, status, wall, status == "ok" ? "" : ": " + reason);
+    }
+  };
+  {
+    struct JoinOnExit { // the reporter stops however run_tasks ends (an exception included)
+      std::function<void()> stop;
+      ~JoinOnExit() { stop(); }
+    } join_progress{[&] {
+      if (!progress.joinable())
+        return;
+      {
+        const std::lock_guard lock(mutex);
+        stop_progress = true;
+      }
+      all_done.notify_all();
+      progress.join();
+    }};
+    run_tasks(members.size(), options.jobs, member_task);
+  }
+
+  const auto statuses = write_summary(dir, options, axes, members);
   if (const int signal = stop_signal(); signal != 0) {
     say("gbssn1d sweep: interrupted by {}; rerun the same command to finish\n",
         signal_name(signal));
     return 128 + signal;
   }
-  const auto bad = std::count_if(statuses.begin(), statuses.end(),
-                                 [](const std::string& s) { return s != "ok"; });
-  if (bad > 0) {
-    say("gbssn1d sweep: {} of {} members did not complete (see summary.dat)\n", bad,
-        members.size());
-    return 3;
-  }
-  return 0;
+  return exit_status(statuses, members.size());
 }
 
 } // namespace gbssn1d

@@ -36,11 +36,15 @@ struct SweepOptions {
   int jobs = 1;
   std::string out;
   std::string emit_tasks;       ///< write the member command lines here instead of running
+  std::string member;           ///< run only this member (what an emitted line does)
+  bool collect = false;         ///< build summary.dat from the members, run nothing
   double progress_every = 60.0; ///< seconds between progress lines while members run (0: none)
 };
 
-/// Runs (or resumes) the sweep and writes DIR/summary.dat; returns 0 even when members failed
-/// (they are marked in the summary), 2 for bad sweep arguments.
+/// Runs (or resumes) the sweep and writes DIR/summary.dat: 0 when every member finished, 3
+/// when any blew up, failed or was invalid (marked in the summary), 2 for bad sweep arguments.
+/// With `member`, runs that member alone; with `collect`, only writes summary.dat (1 when
+/// members have not run yet); with `emit_tasks`, writes one command line per valid member.
 int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args);
 
 } // namespace gbssn1d

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -164,24 +165,162 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
   CHECK(err.find("rah-variant=delta-rhs-from-gd_cfl=0.25 blew-up") != std::string::npos);
   CHECK(err.find("rah-variant=consistent_cfl=0.25 ok") != std::string::npos);
 
-  // the same sweep as task lines for GNU parallel or a Slurm array; -j means nothing there and
-  // is refused
+  // -j means nothing for task lines (the scheduler runs them) and is refused
   const fs::path tasks = scratch("tasks.txt");
   CHECK(run(sweep + " --emit-tasks " + tasks.string(), &err) == 2);
   CHECK(err.find("-j") != std::string::npos);
   CHECK_FALSE(fs::exists(tasks));
-  std::string emit = sweep;
-  emit.replace(emit.find("sweep -j 2 "), 11, "sweep ");
-  REQUIRE(run(emit + " --emit-tasks " + tasks.string()) == 0);
-  std::ifstream t(tasks);
-  int lines = 0;
-  for (std::string line; std::getline(t, line); ++lines) {
-    CHECK(line.find(" evolve ") != std::string::npos);
-    CHECK(line.find("--out=" + out.string() + "/rah-variant=") != std::string::npos);
-  }
-  CHECK(lines == 4);
-  fs::remove(tasks);
   fs::remove_all(out);
+}
+
+namespace {
+
+/// The summary rows without the wall_s column (the one column two runs of a sweep may differ
+/// in), the sweep's folder `out` in the reasons replaced by OUT.
+std::vector<std::string> without_wall(const fs::path& summary, const fs::path& out) {
+  std::vector<std::string> header;
+  {
+    std::ifstream in(summary);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("# ", 0) == 0 && line.find(" status ") != std::string::npos) {
+        std::istringstream words(line.substr(2));
+        for (std::string w; words >> w;)
+          header.push_back(w);
+      }
+  }
+  const auto wall = std::find(header.begin(), header.end(), "wall_s") - header.begin();
+  std::vector<std::string> rows;
+  for (const auto& row : summary_rows(summary)) {
+    std::istringstream words(row);
+    std::string text, w;
+    for (std::ptrdiff_t k = 0; words >> w; ++k)
+      if (k != wall)
+        text += w + " ";
+    for (auto at = text.find(out.string()); at != std::string::npos; at = text.find(out.string()))
+      text.replace(at, out.string().size(), "OUT");
+    rows.push_back(text);
+  }
+  return rows;
+}
+
+/// Runs each line of `tasks` with a plain shell started in `folder`; their exit statuses.
+std::vector<int> run_lines(const fs::path& tasks, const fs::path& folder) {
+  std::ifstream in(tasks);
+  std::vector<int> status;
+  for (std::string line; std::getline(in, line);) {
+    const fs::path script = scratch("task.sh");
+    std::ofstream(script) << line << "\n";
+    const std::string cmd =
+        "cd " + folder.string() + " && sh " + script.string() + " >/dev/null 2>&1";
+    const int raw = std::system(cmd.c_str());
+    status.push_back(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1);
+    fs::remove(script);
+  }
+  return status;
+}
+
+} // namespace
+
+TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --collect summarises") {
+  // a 2 x 2 sweep with one member that blows up and one that is invalid (cfl 7)
+  // (the member that finishes runs for about 2 s, long enough to be stopped by a signal)
+  const std::string flags = " --sweep rah-variant=consistent,delta-rhs-from-gd --sweep cfl=0.25,7"
+                            " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 1500"
+                            " --dt-series 1 --dt-profiles 500 --rahA 0.5 --rah0 0.6"
+                            " --checkpoint-every 5";
+  const fs::path direct = scratch("sweep_direct"), queued = scratch("sweep_queued");
+  REQUIRE(run("sweep -j 2 --out " + direct.string() + flags) == 3);
+  // the lines, emitted from the scratch folder with a relative --out
+  const fs::path tasks = scratch("sweep_tasks.txt");
+  const std::string rel = fs::relative(queued, queued.parent_path()).string();
+  const std::string in_scratch = "cd " + queued.parent_path().string() + " && ";
+  {
+    const std::string cmd = in_scratch + GBSSN1D_EXECUTABLE + " sweep --out " + rel + flags
+                            + " --emit-tasks " + tasks.string() + " >/dev/null 2>&1";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+  }
+  // before any line ran, --collect reports the members as missing (exit 1) and runs nothing
+  CHECK(run("sweep --out " + queued.string() + flags + " --collect") == 1);
+  CHECK_FALSE(fs::exists(queued / "rah-variant=consistent_cfl=0.25"));
+  // only the 2 valid members are emitted; each line runs from another folder (/)
+  const auto status = run_lines(tasks, "/");
+  REQUIRE(status.size() == 2);
+  CHECK(status[0] == 0); // consistent: finished
+  CHECK(status[1] == 3); // delta-rhs-from-gd: blew up
+  CHECK(fs::exists(queued / "logs" / "rah-variant=consistent_cfl=0.25.log"));
+  CHECK(fs::exists(queued / "logs" / "rah-variant=consistent_cfl=0.25.status"));
+  // --collect gives the direct sweep's summary (wall time aside), the invalid member marked
+  std::string err;
+  CHECK(run("sweep --out " + queued.string() + flags + " --collect", &err) == 3);
+  CHECK(err.find("1 blew-up") != std::string::npos);
+  CHECK(err.find("2 invalid") != std::string::npos);
+  const auto a = without_wall(direct / "summary.dat", direct),
+             b = without_wall(queued / "summary.dat", queued);
+  REQUIRE(a.size() == 4);
+  CHECK(a == b);
+  // a requeued line of a finished member does not run it again
+  const fs::path series = queued / "rah-variant=consistent_cfl=0.25" / "timeseries.dat";
+  const auto stamp = fs::last_write_time(series);
+  CHECK(run_lines(tasks, "/").front() == 0);
+  CHECK(fs::last_write_time(series) == stamp);
+  // a member stopped by the scheduler (SIGTERM to the task's process group, as on preemption
+  // or a time limit) is marked interrupted; its line, requeued, resumes from the checkpoint
+  // and ends with the same results
+  fs::remove_all(queued / "rah-variant=consistent_cfl=0.25");
+  fs::remove(queued / "logs" / "rah-variant=consistent_cfl=0.25.status");
+  {
+    std::ifstream in(tasks);
+    std::string line;
+    std::getline(in, line);
+    const fs::path script = scratch("task_bg.sh"), pid = scratch("task_bg.pid");
+    std::ofstream(script) << line << "\n";
+    // in its own session, whose id is its pid: the process group a scheduler signals
+    const std::string start = "cd / && setsid sh -c 'echo $$ > " + pid.string() + "; exec sh "
+                              + script.string() + "' >/dev/null 2>&1 &";
+    REQUIRE(std::system(start.c_str()) == 0);
+    auto pid_written = [&] { return fs::exists(pid) && fs::file_size(pid) > 0; };
+    for (int k = 0; k < 1000 && !pid_written(); ++k)
+      ::usleep(10000);
+    REQUIRE(pid_written());
+    const fs::path checkpoint = queued / "rah-variant=consistent_cfl=0.25" / "checkpoint.bin";
+    for (int k = 0; k < 1000 && !fs::exists(checkpoint); ++k)
+      ::usleep(10000);
+    REQUIRE(fs::exists(checkpoint));
+    pid_t group = 0;
+    std::ifstream(pid) >> group;
+    REQUIRE(group > 1);
+    REQUIRE(::kill(-group, SIGTERM) == 0);
+    const fs::path status_file = queued / "logs" / "rah-variant=consistent_cfl=0.25.status";
+    for (int k = 0; k < 1000 && !fs::exists(status_file); ++k)
+      ::usleep(10000);
+    std::ifstream st(status_file);
+    std::string status;
+    st >> status;
+    CHECK(status == "interrupted");
+    fs::remove(script);
+    fs::remove(pid);
+  }
+  CHECK(run_lines(tasks, "/").front() == 0);
+  {
+    std::ifstream log(queued / "logs" / "rah-variant=consistent_cfl=0.25.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    CHECK(text.str().find("resuming") != std::string::npos);
+  }
+  CHECK(run("sweep --out " + queued.string() + flags + " --collect") == 3);
+  CHECK(without_wall(queued / "summary.dat", queued) == a);
+  // a member line of other flags than the folder's members were run with is refused
+  CHECK(run("sweep --out " + queued.string() + flags
+                + " --ko-sigma 0.2 --member "
+                  "rah-variant=consistent_cfl=0.25",
+            &err)
+        == 2);
+  CHECK(err.find("other inputs") != std::string::npos);
+  CHECK(run("sweep --out " + queued.string() + flags + " --member nobody", &err) == 2);
+  CHECK(err.find("--member") != std::string::npos);
+  fs::remove(tasks);
+  fs::remove_all(direct);
+  fs::remove_all(queued);
 }
 
 TEST_CASE("sweep refuses a --sweep that names no flag") {
