@@ -28,6 +28,13 @@ def parse(text):
 
     lines = text.splitlines()
     last = max((k for k, line in enumerate(lines) if line.strip()), default=-1)
+    # The column names are the first line (numpy.genfromtxt(f, names=True) reads them there);
+    # files of earlier versions began with the version line and named the columns last.
+    # (the version line is the second line then; other tables name their columns last too)
+    names_first = (len(lines) > 1 and lines[0].startswith('#')
+                   and lines[1].startswith('# gbssn1d'))
+    if names_first:
+        columns = lines[0][1:].split()
     for k, line in enumerate(lines):
         s = line.strip()
         if not s:
@@ -37,7 +44,8 @@ def parse(text):
             if s.startswith('# t ='):
                 close()
                 t = float(s.split('=')[1])
-            elif rows == [] and not blocks and not s.startswith('# end:'):
+            elif (not names_first and rows == [] and not blocks
+                  and not s.startswith('# end:')):
                 columns = s[1:].split()
             continue
         try:

@@ -72,12 +72,14 @@ std::string header_text(const std::string& parameter_header) {
 
 namespace {
 
+/// The column names first, as a comment line (`numpy.genfromtxt(file, names=True)` takes its
+/// names from the first line), then the version and the parameters.
 std::string header_with_columns(const std::string& parameter_header,
                                 const std::vector<std::string>& columns) {
-  std::string text = header_text(parameter_header) + "#";
+  std::string text = "#";
   for (const auto& c : columns)
     text += " " + c;
-  return text + "\n";
+  return text + "\n" + header_text(parameter_header);
 }
 
 } // namespace
@@ -208,9 +210,9 @@ OutputMarks Output::marks() {
 }
 
 void Output::write_series(const SeriesRow& row) {
-  series_.print("{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
+  series_.print("{} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
                 "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
-                row.t, row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+                time_text(row.t), row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
                 row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
                 row.H_L2_int, row.M_ah_err);
   series_.flush();
@@ -228,7 +230,8 @@ void Output::write_horizons(double t, const HorizonSearch& search) {
   auto R_of = [&](std::size_t k) { return k < others.size() ? others[k]->R_areal : nan; };
   // the box the horizon was found on (-1 without one)
   const long level = horizon ? static_cast<long>(horizon->level) : -1;
-  horizons_.print("{:.16e} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e} {}\n", t,
+  horizons_.print("{} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e} {}\n",
+                  time_text(t),
                   horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan,
                   horizon ? horizon->mass : nan, search.surfaces.size(), r_of(0), R_of(0), r_of(1),
                   R_of(1), level);
@@ -247,7 +250,7 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
   if (!first_block_)
     profiles_.print("\n\n");
   first_block_ = false;
-  profiles_.print("# t = {:.16e}\n", t);
+  profiles_.print("# t = {}\n", time_text(t));
   fmt::memory_buffer line;
   for (std::size_t k = 0; k < grid.n_interior(); ++k) {
     const std::size_t i = grid.first_interior() + k;

@@ -21,6 +21,15 @@ Table read_table(const std::filesystem::path& path) {
     throw std::runtime_error("cannot open " + path.string());
   Table table;
   std::vector<std::string> names;
+  // gbssn1d writes the column names first and its version line second; in other tables (and
+  // files of earlier versions, which began with the version line) the names are the last
+  // comment line before the first row.
+  std::string first, second;
+  std::getline(in, first);
+  std::getline(in, second);
+  const bool names_first = !first.empty() && first[0] == '#' && second.rfind("# gbssn1d", 0) == 0;
+  in.clear();
+  in.seekg(0);
   for (std::string line; std::getline(in, line);) {
     if (line.empty()) {
       if (!table.rows.empty())
@@ -28,8 +37,9 @@ Table read_table(const std::filesystem::path& path) {
       continue;
     }
     if (line[0] == '#') {
-      if (line.rfind("# t =", 0) == 0)
-        continue; // a block marker names no columns
+      if (names_first ? !names.empty()
+                      : line.rfind("# t =", 0) == 0 || line.rfind("# end:", 0) == 0)
+        continue; // parameters, block markers and end lines name no columns
       std::istringstream words(line.substr(1));
       names.clear();
       for (std::string w; words >> w;)

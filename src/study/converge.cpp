@@ -8,6 +8,7 @@
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
 #include "grid/interpolation.hpp"
+#include "io/output.hpp"
 #include "study/orders.hpp"
 #include "study/parallel.hpp"
 
@@ -300,7 +301,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   {
     DataFile file(fs::path(options.out) / "convergence.dat", header, cols);
     for (std::size_t s = 0; s < n_times; ++s) {
-      std::string line = fmt::format("{:.16e}", records.front().rows[s].t);
+      std::string line = time_text(records.front().rows[s].t);
       auto norm = [&](std::size_t k, int c) { return records[k].rows[s].*norms[c].value; };
       for (int c = 0; c < n_norms; ++c)
         for (std::size_t k = 0; k < m; ++k)
@@ -351,7 +352,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
           s = q;
       std::string block = first ? "" : "\n\n";
       first = false;
-      block += fmt::format("# t = {:.16e}\n", records.front().rows[s].t);
+      block += "# t = " + time_text(records.front().rows[s].t) + "\n";
       for (std::size_t j = 0; j < radii.size(); ++j) {
         block += fmt::format("{:.16e}", radii[j]);
         for (std::size_t k = 0; k < m; ++k)

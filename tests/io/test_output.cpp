@@ -11,6 +11,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 #include <limits>
 #include <unistd.h>
 
@@ -64,4 +67,46 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
             == doctest::Approx(field(fresh.state(), g, e.var)[i]).epsilon(1e-15));
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)") {
+  namespace fs = std::filesystem;
+  const fs::path dir = gbssn1d::testing::scratch("decimal_times", true);
+  Params p;
+  p.id = "1log-trumpet";
+  p.grid = "uniform";
+  p.N = 60;
+  p.rmax = 20.0;
+  p.tmax = 3.05; // the last row at tmax, not a multiple of the cadence
+  p.dt_series = 0.1;
+  p.dt_profiles = 0.7;
+  Simulation sim = simulation(p);
+  {
+    Output out(dir, sim.run_facts());
+    sim.run(&out);
+  }
+  // the first word of every row (and of every profile block's "# t = " line)
+  auto times = [](const fs::path& file, const std::string& prefix) {
+    std::ifstream in(file);
+    std::vector<std::string> t;
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && (prefix.empty() ? line[0] != '#' : line.rfind(prefix, 0) == 0))
+        t.push_back(line.substr(prefix.size(), line.find(' ', prefix.size()) - prefix.size()));
+    return t;
+  };
+  const auto series = times(dir / "timeseries.dat", "");
+  REQUIRE(series.size() == 32); // 0, 0.1, ..., 3.0, and 3.05
+  for (std::size_t k = 0; k + 1 < series.size(); ++k) {
+    // k/10 written the way a person writes it: "0", "0.1", ..., "2.3", ..., "3"
+    const std::string expected =
+        k % 10 == 0 ? std::to_string(k / 10) : std::to_string(k / 10) + "." + std::to_string(k % 10);
+    CHECK(series[k] == expected);
+  }
+  CHECK(series.back() == "3.05");
+  CHECK(times(dir / "horizon.dat", "")[23] == "2.3");
+  const auto blocks = times(dir / "profiles.dat", "# t = ");
+  REQUIRE(blocks.size() == 6); // 0, 0.7, 1.4, 2.1, 2.8 and tmax
+  CHECK(blocks[2] == "1.4");
+  CHECK(blocks[3] == "2.1");
+  CHECK(blocks.back() == "3.05");
 }

@@ -59,3 +59,33 @@ assert all(x > y for x, y in zip(lum, lum[1:])), f"sequential colours not darken
 assert len(set(qualitative_colors(7, 'runs'))) == 7 == len(QUALITATIVE)
 PY
 echo "plot scripts: every figure written, colour rules hold"
+# One-line loading: numpy.genfromtxt(file, names=True) reads every output file, the column
+# names from its first line, and gives the numbers gbssn1d_data.parse reads
+"$gbssn1d" converge --N 40,60,80 --out "$dir/loaders_converge" --id 1log-trumpet --grid uniform \
+  --rmax 20 --tmax 1 --dt-series 0.5 >/dev/null 2>&1
+"$gbssn1d" sweep --out "$dir/loaders_sweep" --sweep rahA=0.25,0.5 --id 1log-trumpet --grid uniform \
+  --N 60 --rmax 20 --tmax 1 --dt-series 0.5 >/dev/null 2>&1
+PYTHONPATH="$plots" "$py" - "$dir" <<'PY'
+import sys
+import numpy as np
+from gbssn1d_data import parse, read_text
+d = sys.argv[1]
+files = [f"{d}/run/timeseries.dat", f"{d}/run/profiles.dat", f"{d}/run/horizon.dat",
+         f"{d}/boxes32/profiles.dat", f"{d}/loaders_converge/convergence.dat",
+         f"{d}/loaders_converge/scaled_H.dat", f"{d}/loaders_sweep/summary.dat"]
+for f in files:
+    a = np.genfromtxt(f, names=True, dtype=None, encoding=None)
+    if 'summary' in f:  # its status and reason columns are words
+        columns = open(f).readline()[1:].split()
+        assert list(a.dtype.names) == columns, (f, a.dtype.names, columns)
+        assert list(a['status']) == ['ok', 'ok'], a['status']
+        assert list(a['rahA']) == [0.25, 0.5], a['rahA']
+        continue
+    columns, blocks = parse(read_text(f))
+    assert list(a.dtype.names) == columns, (f, a.dtype.names, columns)
+    rows = np.concatenate([b for _, b in blocks])
+    assert len(a) == len(rows), (f, len(a), len(rows))
+    for k, c in enumerate(columns):
+        assert np.allclose(a[c], rows[:, k], equal_nan=True, rtol=0, atol=0), (f, c)
+print(f"numpy.genfromtxt(names=True) reads {len(files)} kinds of output file")
+PY
