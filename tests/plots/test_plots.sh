@@ -87,5 +87,15 @@ for f in files:
     assert len(a) == len(rows), (f, len(a), len(rows))
     for k, c in enumerate(columns):
         assert np.allclose(a[c], rows[:, k], equal_nan=True, rtol=0, atol=0), (f, c)
+# a file of an earlier version (version line first, the column names on the last header line)
+# is read the same
+text = open(f"{d}/run/timeseries.dat").read().splitlines()
+header_end = max(k for k, l in enumerate(text) if l.startswith('#') and k < len(text) - 1
+                 and not text[k + 1].startswith('#'))
+legacy = text[1:header_end + 1] + [text[0]] + text[header_end + 1:]
+assert legacy[0].startswith('# gbssn1d')
+new_cols, new_blocks = parse('\n'.join(text))
+old_cols, old_blocks = parse('\n'.join(legacy))
+assert new_cols == old_cols and np.array_equal(new_blocks[0][1], old_blocks[0][1])
 print(f"numpy.genfromtxt(names=True) reads {len(files)} kinds of output file")
 PY
