@@ -209,6 +209,32 @@ std::vector<std::string> warnings(const Params& p) {
           "a larger --N",
           num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
+  // The horizon-shift flags act only with a strength: given with --rahA 0 they change nothing,
+  // which a user who forgot --rahA would not otherwise learn.
+  if (p.rahA == 0.0) {
+    const Params d;
+    std::vector<std::string> idle;
+    if (p.rah0 != d.rah0)
+      idle.push_back("--rah0 " + num(p.rah0));
+    if (p.rah_profile != d.rah_profile)
+      idle.push_back("--rah-profile " + p.rah_profile);
+    if (p.rah_width != d.rah_width)
+      idle.push_back("--rah-width " + num(p.rah_width));
+    if (p.rah_rcut)
+      idle.push_back("--rah-rcut " + num(*p.rah_rcut));
+    if (p.rah_ramp != d.rah_ramp)
+      idle.push_back("--rah-ramp " + num(p.rah_ramp));
+    if (p.rah_normal != d.rah_normal)
+      idle.push_back("--rah-normal " + p.rah_normal);
+    if (!p.rah_hAH_file.empty())
+      idle.push_back("--rah-hAH-file " + p.rah_hAH_file);
+    if (p.rah_variant != d.rah_variant)
+      idle.push_back("--rah-variant " + p.rah_variant);
+    if (!idle.empty())
+      w.push_back(fmt::format("{} {} nothing with --rahA 0: the horizon-adjusting shift is off "
+                              "(give --rahA A, e.g. 0.5, to move the horizon)",
+                              fmt::join(idle, ", "), idle.size() == 1 ? "does" : "do"));
+  }
   return w;
 }
 

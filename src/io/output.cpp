@@ -212,9 +212,9 @@ OutputMarks Output::marks() {
 void Output::write_series(const SeriesRow& row) {
   series_.print("{} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
                 "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
-                time_text(row.t), row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
-                row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
-                row.H_L2_int, row.M_ah_err);
+                time_text(row.t), row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext,
+                row.G_L2, row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R,
+                row.M_L2_R, row.H_L2_int, row.M_ah_err);
   series_.flush();
 }
 
@@ -231,8 +231,7 @@ void Output::write_horizons(double t, const HorizonSearch& search) {
   // the box the horizon was found on (-1 without one)
   const long level = horizon ? static_cast<long>(horizon->level) : -1;
   horizons_.print("{} {:.16e} {:.16e} {:.16e} {} {:.16e} {:.16e} {:.16e} {:.16e} {}\n",
-                  time_text(t),
-                  horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan,
+                  time_text(t), horizon ? horizon->r : nan, horizon ? horizon->R_areal : nan,
                   horizon ? horizon->mass : nan, search.surfaces.size(), r_of(0), R_of(0), r_of(1),
                   R_of(1), level);
   horizons_.flush();

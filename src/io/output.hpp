@@ -45,7 +45,9 @@ public:
 /// An output time as the decimal it stands for: times are k x cadence (or tmax), computed in
 /// binary, e.g. 23 x 0.1 = 2.3000000000000003; 15 significant digits, all a double carries
 /// exactly, print it as 2.3 (and read back to within one rounding of the computed value).
-inline std::string time_text(double t) { return fmt::format("{:.15g}", t); }
+inline std::string time_text(double t) {
+  return fmt::format("{:.15g}", t);
+}
 
 /// A text file with the standard header. Closes on destruction. Every flush is checked: a
 /// failed write throws OutputError.

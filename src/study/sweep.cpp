@@ -274,6 +274,38 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
 
 namespace {
 
+/// A member's inputs without the horizon-shift flags if its strength is 0 (where they do
+/// nothing): members with equal keys are the same run.
+std::string same_run_key(const std::string& inputs) {
+  if (inputs.find("\nrahA = 0\n") == std::string::npos && inputs.rfind("rahA = 0\n", 0) != 0)
+    return inputs;
+  std::istringstream lines(inputs);
+  std::string key;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("rah", 0) != 0 || line.rfind("rahA ", 0) == 0)
+      key += line + "\n";
+  return key;
+}
+
+/// Groups of members that are the same run (the horizon-shift flags of a member with rahA = 0
+/// do nothing), each as "a = b = c"; said on stderr and in summary.dat, so that nobody reads
+/// them as different results.
+std::vector<std::string> same_runs(const std::vector<SweepMember>& members) {
+  std::map<std::string, std::vector<std::string>> groups;
+  std::vector<std::string> order;
+  for (const auto& m : members) {
+    auto& g = groups[same_run_key(m.inputs)];
+    if (g.empty())
+      order.push_back(same_run_key(m.inputs));
+    g.push_back(m.name);
+  }
+  std::vector<std::string> out;
+  for (const auto& key : order)
+    if (groups[key].size() > 1)
+      out.push_back(fmt::format("{}", fmt::join(groups[key], " = ")));
+  return out;
+}
+
 /// Why `m` cannot run (its flags do not validate), or nullopt.
 std::optional<std::string> invalid_reason(const SweepMember& m) {
   try {
@@ -424,13 +456,17 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
           orders[k] = order_fitted(N, E);
     }
   }
+  std::string same;
+  for (const auto& g : same_runs(members))
+    same += "same run (rahA = 0: the horizon-shift flags do nothing): " + g + "\n";
   DataFile summary(
       dir / "summary.dat",
-      fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
-                  "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
-                  "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
-                  "order_H_final fitted over N for members that differ only in N\n",
-                  members.size(), fmt::join(options.sweeps, " ")),
+      same
+          + fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
+                        "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
+                        "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
+                        "order_H_final fitted over N for members that differ only in N\n",
+                        members.size(), fmt::join(options.sweeps, " ")),
       cols);
   for (std::size_t k = 0; k < members.size(); ++k) {
     std::string line;
@@ -523,6 +559,11 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   if (options.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
   const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
+  if (options.member.empty() && !options.collect)
+    for (const auto& g : same_runs(members))
+      say("gbssn1d sweep: note: {} are the same run (the horizon-shift flags do nothing with "
+          "rahA = 0); each is run and listed, with the same results\n",
+          g);
   // A value common to all members that no member can run with is a usage error: refused
   // before anything is launched or written.
   {

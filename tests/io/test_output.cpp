@@ -12,10 +12,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <string>
-#include <vector>
 #include <limits>
+#include <string>
 #include <unistd.h>
+#include <vector>
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
@@ -98,8 +98,9 @@ TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)
   REQUIRE(series.size() == 32); // 0, 0.1, ..., 3.0, and 3.05
   for (std::size_t k = 0; k + 1 < series.size(); ++k) {
     // k/10 written the way a person writes it: "0", "0.1", ..., "2.3", ..., "3"
-    const std::string expected =
-        k % 10 == 0 ? std::to_string(k / 10) : std::to_string(k / 10) + "." + std::to_string(k % 10);
+    const std::string expected = k % 10 == 0
+                                     ? std::to_string(k / 10)
+                                     : std::to_string(k / 10) + "." + std::to_string(k % 10);
     CHECK(series[k] == expected);
   }
   CHECK(series.back() == "3.05");

@@ -486,3 +486,27 @@ TEST_CASE("converge -j runs that many members at once") {
   CHECK(order(1) == "SESESE");
   fs::remove_all(out);
 }
+
+TEST_CASE("sweep: members that are the same run (rahA = 0, other rah0) are said to be") {
+  const fs::path out = scratch("sweep_same");
+  std::string err;
+  REQUIRE(run("sweep -j 2 --out " + out.string()
+                  + " --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet --grid uniform"
+                    " --N 60 --rmax 20 --tmax 1",
+              &err)
+          == 0);
+  CHECK(err.find("rahA=0_rah0=0.6 = rahA=0_rah0=1.2 are the same run") != std::string::npos);
+  CHECK(err.find("rahA=0.5_rah0=0.6 =") == std::string::npos); // those two differ
+  std::ifstream in(out / "summary.dat");
+  std::stringstream text;
+  text << in.rdbuf();
+  CHECK(text.str().find("# same run (rahA = 0: the horizon-shift flags do nothing): "
+                        "rahA=0_rah0=0.6 = rahA=0_rah0=1.2")
+        != std::string::npos);
+  // and each member's own log warns that its --rah0 does nothing
+  std::ifstream log(out / "logs" / "rahA=0_rah0=0.6.log");
+  std::stringstream log_text;
+  log_text << log.rdbuf();
+  CHECK(log_text.str().find("--rah0 0.6 does nothing with --rahA 0") != std::string::npos);
+  fs::remove_all(out);
+}
