@@ -64,6 +64,28 @@ def parse(text):
     return columns, blocks
 
 
+def parse_table(text):
+    """(columns, data) of any output file, summary.dat included: parse() for numeric files;
+    for a table with words (a sweep's status and reason) the numeric columns as floats and the
+    word columns as NaN. Returns the first block only."""
+    try:
+        columns, blocks = parse(text)
+        return columns, blocks[0][1]
+    except SystemExit:
+        lines = [l for l in text.splitlines() if l.strip()]
+        names = lines[0][1:].split() if lines and lines[0].startswith('#') else None
+        rows = [l.split() for l in lines if not l.startswith('#')]
+        if not names or not rows or any(len(r) != len(names) for r in rows):
+            raise
+
+        def number(word):
+            try:
+                return float(word)
+            except ValueError:
+                return np.nan
+        return names, np.array([[number(w) for w in r] for r in rows], dtype=float)
+
+
 def column(columns, data, name):
     if name not in columns:
         raise SystemExit(f"no column '{name}'; columns are: {' '.join(columns)}")
@@ -107,7 +129,10 @@ def sequential_colors(n):
     return [cmap(x) for x in np.linspace(0.85, 0.0, n)] if n > 1 else [cmap(0.35)]
 
 
-UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M'}
+UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M',
+         'M_ah': 'M_AH / M', 'M_ah_err': '(M_AH - M) / M', 'rah0': 'h / M', 'r_ah_final': 'r_AH / M',
+         'M_ah_drift': 'M_AH drift / M', 'M_ah_err_max': 'max |M_AH - M| / M', 'rahA': 'A',
+         'R_ah_final': 'R_AH / M', 't_end': 't_end / M', 'rmax': 'rmax / M', 'M': 'M'}
 
 
 def run_label(path):

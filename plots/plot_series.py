@@ -1,17 +1,24 @@
 #!/usr/bin/env python3
-"""Plot columns of timeseries.dat against t, for one or several runs.
+"""Plot columns of timeseries.dat (or of any output table: horizon.dat, a sweep's
+summary.dat) against t or another column, for one or several runs.
 
   plot_series.py RUN/timeseries.dat [MORE ...] -y H_L2_ext -y M_L2_ext --logy -o out.png
   gbssn1d ... ; cat RUN/timeseries.dat | plot_series.py - -y alpha_center -o lapse.png
+  plot_series.py SWEEP/summary.dat -x rah0 -y M_ah_err_max --logy --points -o drift.png
+
+With --logy the absolute values are plotted (the axis says |y|).
 """
 import argparse
+import sys
+
+import numpy as np
 
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import (axis_label, column, finish, line_styles, parse, qualitative_colors,
-                          read_text, run_label, sequential_colors, style)
+from gbssn1d_data import (axis_label, column, finish, line_styles, parse_table,
+                          qualitative_colors, read_text, run_label, sequential_colors, style)
 
 
 def main():
@@ -23,6 +30,7 @@ def main():
     ap.add_argument('--ordered', action='store_true',
                     help='the files form a sequence (resolutions, times): colours from one '
                          'sequential colormap, darker for later files')
+    ap.add_argument('--points', action='store_true', help='markers, no lines (tables of runs)')
     ap.add_argument('--label', action='append', help='legend label per file')
     ap.add_argument('--title', default='')
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
@@ -39,18 +47,22 @@ def main():
         styles = line_styles(len(a.y), 'columns')
         column_colors = None
     for k, path in enumerate(a.files):
-        columns, blocks = parse(read_text(path))
-        data = blocks[0][1]
+        columns, data = parse_table(read_text(path))
         label = a.label[k] if a.label and k < len(a.label) else run_label(path)
         for j, y in enumerate(a.y):
             values = column(columns, data, y)
+            if not np.isfinite(values).any():
+                sys.stderr.write(f'note: {path}: {y} has no finite value; nothing to draw\n')
             color = column_colors[j] if column_colors else colors[k]
             ax.plot(column(columns, data, a.x), abs(values) if a.logy else values, color=color,
-                    ls=styles[j],
+                    ls='none' if a.points else styles[j], marker='o' if a.points else None,
                     label=f'{label}: {y}' if len(a.files) > 1 or len(a.y) > 1 else label)
     if a.logy:
         ax.set_yscale('log')
-    finish(fig, ax, axis_label(a.x), ', '.join(a.y), a.title, a.output)
+    ylabel = ', '.join(axis_label(y) for y in a.y)
+    if a.logy and '|' not in ylabel:
+        ylabel = f'|{ylabel}|'
+    finish(fig, ax, axis_label(a.x), ylabel, a.title, a.output)
 
 
 if __name__ == '__main__':
