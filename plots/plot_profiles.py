@@ -59,7 +59,7 @@ def main():
                 s = series + j
                 ax.plot(x[keep], abs(v) if a.logy else v, ls=styles[s],
                         color=series_colors[s] if series_colors else colors[i],
-                        label=f'{label}: {y}, t = {t:g}')
+                        label=f'{label}: {y}, t = {t:g} M')
         series += len(a.y)
     if a.logy:
         ax.set_yscale('log')

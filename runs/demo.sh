@@ -34,7 +34,7 @@ for n in 300 600 1200; do
 done
 $py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy --ordered \
   --label "N=300" --label "N=600" --label "N=1200" \
-  --title "1+log trumpet: H over 1 M <= r <= 10 M, uniform grids of M/7.5, M/15, M/30" \
+  --title "1+log trumpet: H on [1, 10] M at M/7.5, M/15, M/30" \
   -o demo/trumpet_H.png
 echo "== converge: the 1+log trumpet at N = 600, 900, 1200"
 $g converge --N 600,900,1200 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
@@ -43,11 +43,11 @@ $py plots/constraint_orders.py demo/converge/N{600,900,1200}/timeseries.dat --ti
   --title "1+log trumpet: H on [1, 10] M, scaled at 4th order" -o demo/trumpet_orders.png
 
 echo "== sweep: horizon shift strength x target radius (1+log trumpet data, t = 40 M)"
-$g sweep -j 2 --out demo/sweep --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet \
+$g sweep -j 2 --out demo/sweep --sweep rahA=0.25,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet \
   --grid sinh --N 300 --rmax 100 --dr-inner 0.01875 --tmax 40 --dt-series 0.5
-# the column names (the last '#' line) and the rows
-awk '/^#/ { header = substr($0, 3); next } !shown++ { print header } { print }' \
-  demo/sweep/summary.dat | column -t
+# the column names (the first line) and the rows
+awk 'NR == 1 { print substr($0, 3); next } !/^#/ { print }' demo/sweep/summary.dat | column -t
 $py plots/plot_horizons.py demo/sweep/*/horizon.dat --label-by rahA,rah0 --target \
-  --title "sweep: r_AH(t)" -o demo/sweep_r_ah.png
+  --title "sweep: r_AH(t), dotted: the targets h" -o demo/sweep_r_ah.png
+$py plots/plot_sweep.py demo/sweep/summary.dat -o demo/sweep_map.png
 echo "figures: $(ls demo/*.png | tr '\n' ' ')"
