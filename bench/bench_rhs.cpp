@@ -36,6 +36,27 @@ Params trumpet(int n, double rmax, const std::string& grid_flag, bool horizon_sh
   return p;
 }
 
+/// Full-grid RHS evaluations of `sim`'s state, repeated for at least `seconds` (one RHS with
+/// the run's horizon locator, so that the shift's searches count).
+struct RhsTiming {
+  long evaluations = 0;
+  double seconds = 0.0;
+};
+RhsTiming time_rhs(const Simulation& sim, double seconds) {
+  GbssnRhs rhs(sim.grid(), sim.rhs().params());
+  State dudt(sim.state().size());
+  using clock = std::chrono::steady_clock;
+  RhsTiming t;
+  const auto start = clock::now();
+  do {
+    for (int k = 0; k < 50; ++k)
+      rhs(sim.state(), dudt, 0.0);
+    t.evaluations += 50;
+    t.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  } while (t.seconds < seconds);
+  return t;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -67,19 +88,9 @@ int main(int argc, char** argv) {
       resolve_defaults(p);
       validate(p);
       Simulation sim(evolution_config(p));
-      GbssnRhs rhs(sim.grid(), sim.rhs().params()); // with the horizon locator
-      State dudt(sim.state().size());
-      using clock = std::chrono::steady_clock;
-      long evals = 0;
-      const auto start = clock::now();
-      double elapsed = 0;
-      do {
-        for (int k = 0; k < 50; ++k)
-          rhs(sim.state(), dudt, 0.0);
-        evals += 50;
-        elapsed = std::chrono::duration<double>(clock::now() - start).count();
-      } while (elapsed < seconds);
+      const auto [evals, elapsed] = time_rhs(sim, seconds);
       const double rate = static_cast<double>(evals) * n / elapsed;
+      using clock = std::chrono::steady_clock;
 
       long steps = 0;
       const auto start_steps = clock::now();
@@ -106,18 +117,7 @@ int main(int argc, char** argv) {
     resolve_defaults(p);
     validate(p);
     Simulation sim(evolution_config(p));
-    GbssnRhs rhs(sim.grid(), sim.rhs().params());
-    State dudt(sim.state().size());
-    using clock = std::chrono::steady_clock;
-    long evals = 0;
-    const auto start = clock::now();
-    double elapsed = 0;
-    do {
-      for (int k = 0; k < 50; ++k)
-        rhs(sim.state(), dudt, 0.0);
-      evals += 50;
-      elapsed = std::chrono::duration<double>(clock::now() - start).count();
-    } while (elapsed < seconds);
+    const auto [evals, elapsed] = time_rhs(sim, seconds);
     const double rate = static_cast<double>(evals) * n / elapsed;
     fmt::print("{} {} {} {:.3f} {:.4e} {:.2f}\n", order, n, evals, elapsed, rate, 1e9 / rate);
   }
