@@ -13,13 +13,7 @@ py=/usr/bin/python3
 out=out/fd-order
 mkdir -p "$out"
 common=(--id 1log-trumpet --grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
-family() {
-  local name=$1
-  shift
-  rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N 1600,2400,3200 -j "$(nproc)" --out "$out/$name" "${common[@]}" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
-}
+source runs/coarse-family.sh
 for p in 2 4 6 8; do
   family "p$p-standard" --fd-order "$p" --order "$p"
   family "p$p-h2" --fd-order "$p" --order "$p" --rahA 0.5 --rah0 2
