@@ -156,8 +156,9 @@ constexpr std::array<Rational, n> difference_weights() {
 
 /// lopsided_plus + sign x lopsided_minus of order p on the wide stencil -radius ... radius,
 /// exact (lopsided_plus on -(p/2 - 1) ... p/2 + 1; lopsided_minus(x) = -plus(-x)). Each weight
-/// is computed in one expression: GCC 12's constant evaluation inside a class template's
-/// instantiation lost values written to an array element twice.
+/// is computed in one expression: the accumulating form (w[i] = w[i] + ...) gave 0/0 weights
+/// under GCC 12's constant evaluation when Order<p> was instantiated (observed; the cause in
+/// the compiler was not isolated; the tests check every weight against the classic tables).
 template <int p>
 constexpr std::array<Rational, p + 3> combine(int sign) {
   constexpr int radius = p / 2 + 1, first = -(p / 2 - 1), n_plus = p + 1;

@@ -294,9 +294,10 @@ std::vector<std::string> same_runs(const std::vector<SweepMember>& members) {
   std::map<std::string, std::vector<std::string>> groups;
   std::vector<std::string> order;
   for (const auto& m : members) {
-    auto& g = groups[same_run_key(m.inputs)];
+    const std::string key = same_run_key(m.inputs);
+    auto& g = groups[key];
     if (g.empty())
-      order.push_back(same_run_key(m.inputs));
+      order.push_back(key);
     g.push_back(m.name);
   }
   std::vector<std::string> out;
