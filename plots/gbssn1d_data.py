@@ -86,6 +86,15 @@ def parse_table(text):
         return names, np.array([[number(w) for w in r] for r in rows], dtype=float)
 
 
+def series(path):
+    """{column name: values} of the first block of an output file (timeseries.dat), or None
+    when the file does not exist (a run that stopped before writing it)."""
+    if not os.path.exists(path):
+        return None
+    columns, data = parse_table(read_text(path))
+    return {c: data[:, i] for i, c in enumerate(columns)}
+
+
 def column(columns, data, name):
     if name not in columns:
         raise SystemExit(f"no column '{name}'; columns are: {' '.join(columns)}")

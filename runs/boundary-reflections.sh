@@ -17,26 +17,19 @@ py=/usr/bin/python3
 out=out/boundary-reflections
 rm -rf "$out"
 mkdir -p "$out"
-jobs=$(nproc)
-run() { # name, then evolve flags; runs in the background, at most $jobs at once
-  local name=$1
-  shift
-  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
-  build/gbssn1d evolve --grid uniform --dt-series 0.5 --dt-profiles 1000 --out "$out/$name" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name stopped, see $out/$name.log)" &
-}
+source runs/study-helpers.sh
 for per_M in 8 16; do
   for rmax in 50 100 200 400; do
-    run "reflect-M$per_M-rmax$rmax" --rmax "$rmax" --N "$((rmax * per_M))" --tmax 150
+    uniform_run "reflect-M$per_M-rmax$rmax" --rmax "$rmax" --N "$((rmax * per_M))" --tmax 150
   done
 done
 for p in 4 6; do
   for h in 0 0.6 0.89 1.2; do
     shift_flags=()
     [ "$h" != 0 ] && shift_flags=(--rahA 0.5 --rah0 "$h")
-    run "p$p-h$h-taper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 "${shift_flags[@]}"
-    run "p$p-h$h-far" --fd-order "$p" --rmax 160 --N 2560 --tmax 100 "${shift_flags[@]}"
-    [ "$h" != 0 ] && run "p$p-h$h-notaper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 \
+    uniform_run "p$p-h$h-taper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 "${shift_flags[@]}"
+    uniform_run "p$p-h$h-far" --fd-order "$p" --rmax 160 --N 2560 --tmax 100 "${shift_flags[@]}"
+    [ "$h" != 0 ] && uniform_run "p$p-h$h-notaper" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 \
       "${shift_flags[@]}" --rah-rcut 1e9
   done
 done
@@ -45,12 +38,10 @@ $py - "$out" <<'PY' | tee "$out/table.txt"
 import os, sys
 import numpy as np
 sys.path.insert(0, 'plots')
-from gbssn1d_data import parse, read_text
+from gbssn1d_data import series as read_series
 out = sys.argv[1]
 def series(name):
-    columns, blocks = parse(read_text(os.path.join(out, name, 'timeseries.dat')))
-    d = blocks[0][1]
-    return {c: d[:, columns.index(c)] for c in columns}
+    return read_series(os.path.join(out, name, 'timeseries.dat'))
 print("# 1. reflected amplitude at the horizon: largest |difference| to the rmax 400 M run")
 print("# spacing rmax t_b max|d alpha_center| max|d M_AH| (t >= t_b) max|d M_AH| (t < t_b)"
       " (t_b = (rmax - 2)/sqrt 2: the boundary's influence reaches the horizon)")
@@ -73,11 +64,8 @@ print("# fd_order h tapered(default) untapered boundary_at_160M")
 for p in (4, 6):
     for h in ('0', '0.6', '0.89', '1.2'):
         def m(name):
-            path = os.path.join(out, name, 'timeseries.dat')
-            if not os.path.exists(path):
-                return "--"
-            e = np.abs(series(name)['M_ah_err'])
-            return f"{np.nanmax(e):.2e}"
+            s = series(name)
+            return "--" if s is None else f"{np.nanmax(np.abs(s['M_ah_err'])):.2e}"
         label = 'standard' if h == '0' else h
         print(f"{p} {label} {m(f'p{p}-h{h}-taper')} {m(f'p{p}-h{h}-notaper')} {m(f'p{p}-h{h}-far')}")
 PY

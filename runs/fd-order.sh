@@ -13,7 +13,7 @@ py=/usr/bin/python3
 out=out/fd-order
 mkdir -p "$out"
 common=(--id 1log-trumpet --grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
-source runs/coarse-family.sh
+source runs/study-helpers.sh
 for p in 2 4 6 8; do
   family "p$p-standard" --fd-order "$p" --order "$p"
   family "p$p-h2" --fd-order "$p" --order "$p" --rahA 0.5 --rah0 2

@@ -10,7 +10,7 @@ py=/usr/bin/python3
 out=out/horizon-width
 mkdir -p "$out"
 common=(--grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
-source runs/coarse-family.sh
+source runs/study-helpers.sh
 family standard --id 1log-trumpet
 for hw in 0.89:3 0.89:2.67 1.2:3 1.2:3.6 1.5:3 1.5:4.5 2:3 2:4 2:6; do
   family "h${hw%%:*}-w${hw#*:}" --id 1log-trumpet --rahA 0.5 --rah0 "${hw%%:*}" --rah-profile rational --rah-width "${hw#*:}"

@@ -12,7 +12,7 @@ py=/usr/bin/python3
 out=out/horizon-wormhole
 mkdir -p "$out"
 common=(--id wormhole --grid uniform --rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
-source runs/coarse-family.sh
+source runs/study-helpers.sh
 family standard
 for h in 0.5 0.6 0.89 1.2 1.5 2; do
   family "h$h" --rahA 0.5 --rah0 "$h"

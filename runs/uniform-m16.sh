@@ -21,43 +21,36 @@ py=/usr/bin/python3
 out=out/uniform-m16
 rm -rf "$out"
 mkdir -p "$out"
-jobs=$(nproc)
-run() { # name, then evolve flags; runs in the background, at most $jobs at once
-  local name=$1
-  shift
-  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
-  build/gbssn1d evolve --grid uniform --dt-series 0.5 --dt-profiles 1000 --out "$out/$name" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name stopped, see $out/$name.log)" &
-}
+source runs/study-helpers.sh
 for p in 4 6; do
   for n in 2560 5120 10240; do
-    run "standard-p$p-N$n" --fd-order "$p" --rmax 160 --N "$n" --tmax 50
+    uniform_run "standard-p$p-N$n" --fd-order "$p" --rmax 160 --N "$n" --tmax 50
   done
   for n in 2048 2560 3072 3413 4096 5120; do
-    run "shrink-p$p-N$n" --fd-order "$p" --rmax 160 --N "$n" --tmax 60 --rahA 0.5 --rah0 0.6
+    uniform_run "shrink-p$p-N$n" --fd-order "$p" --rmax 160 --N "$n" --tmax 60 --rahA 0.5 --rah0 0.6
   done
   for sigma in 0 0.02 0.05 0.1 0.2; do
     for h in 0 0.6 0.89 1.2; do
       shift_flags=()
       [ "$h" != 0 ] && shift_flags=(--rahA 0.5 --rah0 "$h")
-      run "m16-p$p-ko$sigma-h$h" --fd-order "$p" --ko-sigma "$sigma" --rmax 80 --N 1280 \
+      uniform_run "m16-p$p-ko$sigma-h$h" --fd-order "$p" --ko-sigma "$sigma" --rmax 80 --N 1280 \
         --tmax 100 "${shift_flags[@]}"
     done
   done
 done
 wait
 shrink=(--fd-order 6 --rmax 80 --N 1280 --tmax 100 --rahA 0.5 --rah0 0.6)
-run try-open-loop "${shrink[@]}" --rah-hAH-file "$out/m16-p6-ko0.1-h0.6/horizon.dat"
-run try-driver-centred "${shrink[@]}" --driver-advection centred
-run try-driver-full "${shrink[@]}" --driver-advection upwind-full
-run try-eta1-standard --fd-order 6 --rmax 80 --N 1280 --tmax 100 --eta 1
-run try-cfl0.25 "${shrink[@]}" --cfl 0.25
-run try-no-chi-floor "${shrink[@]}" --chi-floor 0
+uniform_run try-open-loop "${shrink[@]}" --rah-hAH-file "$out/m16-p6-ko0.1-h0.6/horizon.dat"
+uniform_run try-driver-centred "${shrink[@]}" --driver-advection centred
+uniform_run try-driver-full "${shrink[@]}" --driver-advection upwind-full
+uniform_run try-eta1-standard --fd-order 6 --rmax 80 --N 1280 --tmax 100 --eta 1
+uniform_run try-cfl0.25 "${shrink[@]}" --cfl 0.25
+uniform_run try-no-chi-floor "${shrink[@]}" --chi-floor 0
 for p in 4 6; do
   for h in 0 0.6 0.89 1.2; do
     shift_flags=()
     [ "$h" != 0 ] && shift_flags=(--rahA 0.5 --rah0 "$h")
-    run "m19-p$p-h$h" --fd-order "$p" --rmax 80 --N 1536 --tmax 100 "${shift_flags[@]}"
+    uniform_run "m19-p$p-h$h" --fd-order "$p" --rmax 80 --N 1536 --tmax 100 "${shift_flags[@]}"
   done
 done
 wait
@@ -65,15 +58,10 @@ $py - "$out" <<'PY' | tee "$out/table.txt"
 import math, os, sys
 import numpy as np
 sys.path.insert(0, 'plots')
-from gbssn1d_data import parse, read_text
+from gbssn1d_data import series as read_series
 out = sys.argv[1]
 def series(name):
-    path = os.path.join(out, name, 'timeseries.dat')
-    if not os.path.exists(path):
-        return None
-    columns, blocks = parse(read_text(path))
-    d = blocks[0][1]
-    return {c: d[:, columns.index(c)] for c in columns}
+    return read_series(os.path.join(out, name, 'timeseries.dat'))
 def max_err(name):
     s = series(name)
     return None if s is None else float(np.nanmax(np.abs(s['M_ah_err'])))
