@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What limits max|M_AH - M| on the uniform M/16 grid of the study (docs/horizon-shift-study.md,
-# Sec. 7.2), every run made afresh in out/uniform-m16/ (about 3 minutes on 2 cores). Wormhole
+# Sec. 7.2), every run made afresh in out/uniform-m16/ (about 1 minute on 2 cores). Wormhole
 # data with every default but the grid and the ones named:
 #  1. the standard gauge (no horizon shift) at --fd-order 4 and 6 on uniform grids with the
 #     boundary at 160 M (out of the way to 50 M) at M/16, M/32, M/64, to 50 M: the largest
@@ -13,7 +13,10 @@
 #  4. on that grid at --fd-order 6, the shrink with one thing changed at a time: h_AH(t)
 #     prescribed from the run's own horizon.dat (no finder feedback), the advection stencil of
 #     B's driver, eta = 1/M (also the standard gauge), cfl 0.25, and no chi floor;
-#  5. the four gauges of part 3 at the defaults, 20% finer: N = 1536 (M/19.2), rmax 80 M.
+#  5. the four gauges of part 3 at the defaults, 20% finer: N = 1536 (M/19.2), rmax 80 M;
+#  6. the four gauges of part 3 at the defaults on the trumpet data sets (1log-trumpet,
+#     maximal-trumpet), N = 1280, rmax 80 M: max|M_AH - M| over the run and before 55 M (before
+#     the outer boundary's influence can reach the horizon).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
@@ -51,6 +54,10 @@ for p in 4 6; do
     shift_flags=()
     [ "$h" != 0 ] && shift_flags=(--rahA 0.5 --rah0 "$h")
     uniform_run "m19-p$p-h$h" --fd-order "$p" --rmax 80 --N 1536 --tmax 100 "${shift_flags[@]}"
+    for id in 1log-trumpet maximal-trumpet; do
+      uniform_run "$id-p$p-h$h" --id "$id" --fd-order "$p" --rmax 80 --N 1280 --tmax 100 \
+        "${shift_flags[@]}"
+    done
   done
 done
 wait
@@ -100,4 +107,15 @@ print("# 5. uniform N = 1536 (M/19.2), rmax 80 M, to 100 M, defaults: max|M_AH -
 print("# fd-order standard 0.6 0.89 1.2")
 for p in (4, 6):
     print(f"{p} " + " ".join(fmt(max_err(f"m19-p{p}-h{h}")) for h in ('0', '0.6', '0.89', '1.2')))
+print("# 6. trumpet data, uniform N = 1280, rmax 80 M, to 100 M: max|M_AH - M| (before 55 M)")
+print("# data fd-order standard 0.6 0.89 1.2")
+def early_late(name):
+    s = series(name)
+    if s is None:
+        return "--"
+    e = np.abs(s['M_ah_err'])
+    return f"{np.nanmax(e):.2e} ({np.nanmax(e[s['t'] < 55]):.1e})"
+for id in ('1log-trumpet', 'maximal-trumpet'):
+    for p in (4, 6):
+        print(f"{id} {p} " + " ".join(early_late(f"{id}-p{p}-h{h}") for h in ('0', '0.6', '0.89', '1.2')))
 PY
