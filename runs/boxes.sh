@@ -10,6 +10,8 @@
 #   bash runs/boxes.sh interp    # h = 0.6, 0.89, 1.2, 2: boxes (stage values, quadratic) vs sinh and uniform
 #   bash runs/boxes.sh cost      # wall time against H error: uniform, sinh, boxes, standard and stretched
 #   bash runs/boxes.sh speed     # the stretched 3-resolution study to 1000 M as one converge -j 2
+#   bash runs/boxes.sh order     # --fd-order 6 against 4 on the published grid, 6 boxes and 9 boxes
+#   bash runs/boxes.sh taper     # beta_H's outer taper (quartic, step, none) on coarse boxes
 #
 # Output under out/boxes/: one folder per family, tables on stdout (also in out/boxes/*.txt),
 # figures *.png.
@@ -140,6 +142,63 @@ interp)
 cost)
   # wall time (one core, each member alone) against the RMS of H_L2_R over [10, 1000] M
   $py plots/boxes_cost.py --out "$out/cost" --tmax 1000 | tee "$out/cost.txt"
+  ;;
+order)
+  # --fd-order 6 against 4, each order's own standard gauge as the reference: the published
+  # grid (7 boxes, rmax 128, M/12, M/16, M/24, to 100 M), h = 2 M on 6 boxes (finest r <= 4 M),
+  # and the unshifted and stretched trumpet on 9 boxes to 1000 M (rmax 1024)
+  seven=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100)
+  six=(--grid boxes --levels 6 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100)
+  nine=(--grid boxes --levels 9 --rmax 1024 --tmax 1000 --dt-series 1 --dt-profiles 1000)
+  for p in 4 6; do
+    for id in 1log-trumpet maximal-trumpet; do
+      family "order-p$p-$id-standard" 24,32,48 "${seven[@]}" --id $id --fd-order $p
+      family "order-p$p-$id-stretch" 24,32,48 "${seven[@]}" --id $id --fd-order $p --rahA 0.5 --rah0 0.89
+      family "order-p$p-$id-shrink" 24,32,48 "${seven[@]}" --id $id --fd-order $p --rahA 0.5 --rah0 0.6
+    done
+    family "order-p$p-six-standard" 48,64,96 "${six[@]}" --id 1log-trumpet --fd-order $p
+    family "order-p$p-six-h2" 48,64,96 "${six[@]}" --id 1log-trumpet --fd-order $p --rahA 0.5 --rah0 2
+    family "order-p$p-nine-standard" 48,64,96 "${nine[@]}" --id 1log-trumpet --fd-order $p --norm-Rmin 3
+    family "order-p$p-nine-stretch" 48,64,96 "${nine[@]}" --id 1log-trumpet --fd-order $p --norm-Rmin 3 \
+      --rahA 0.5 --rah0 0.89
+  done
+  for p in 4 6; do
+    for id in 1log-trumpet maximal-trumpet; do
+      echo "== --fd-order $p, $id on the published grid (7 boxes, rmax 128), t in [10, 100] M"
+      table "$out/order-p$p-$id-standard" "$out/order-p$p-$id"-*/ --t0 10 --t1 100
+    done
+    echo "== --fd-order $p, h = 2 M on 6 boxes, t in [10, 100] M"
+    table "$out/order-p$p-six-standard" "$out/order-p$p-six"-*/ --t0 10 --t1 100
+    echo "== --fd-order $p, the trumpet on 9 boxes, t in [10, 1000] M"
+    table "$out/order-p$p-nine-standard" "$out/order-p$p-nine"-*/ --t0 10 --t1 1000
+  done | tee "$out/order.txt"
+  ;;
+taper)
+  # beta_H's outer taper where coarse boxes sample it: h = 2 M on 6 boxes to rmax 128 (the taper
+  # on boxes 1 and 2, spacing 0.67 ... 2.7 M) and the published grid's stretch and shrink, with
+  # the quartic taper (default), the C-infinity step, and none (--rah-rcut 1e9), against each
+  # grid's standard gauge
+  six=(--grid boxes --levels 6 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100 --id 1log-trumpet)
+  seven=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 100 --id 1log-trumpet)
+  family taper-six-standard 48,64,96 "${six[@]}"
+  family taper-seven-standard 24,32,48 "${seven[@]}"
+  family taper-six-h2-none 48,64,96 "${six[@]}" --rahA 0.5 --rah0 2 --rah-rcut 1e9
+  family taper-seven-h0.89-none 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.89 --rah-rcut 1e9
+  family taper-seven-h0.6-none 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.6 --rah-rcut 1e9
+  for taper in quartic step; do
+    for rcut in 48 64 80; do
+      family "taper-six-h2-$taper-rcut$rcut" 48,64,96 "${six[@]}" --rahA 0.5 --rah0 2 \
+        --rah-taper $taper --rah-rcut $rcut
+    done
+    family "taper-seven-h0.89-$taper" 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.89 --rah-taper $taper
+    family "taper-seven-h0.6-$taper" 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.6 --rah-taper $taper
+  done
+  {
+    echo "== h = 2 M on 6 boxes (rmax 128), t in [10, 100] M"
+    table "$out/taper-six-standard" "$out"/taper-six-h2-*/ --t0 10 --t1 100
+    echo "== the published grid (7 boxes, rmax 128), rcut 64, t in [10, 100] M"
+    table "$out/taper-seven-standard" "$out"/taper-seven-h*/ --t0 10 --t1 100
+  } | tee "$out/taper.txt"
   ;;
 speed)
   # the stretched study on 9 boxes to rmax 1024, finest M/8, M/12, M/16, to 1000 M

@@ -42,13 +42,15 @@ mistakes=(
   "checkpoint checksum not checked|src/evolution/checkpoint.cpp|  if (fnv1a(body) != stored_hash)|  if (false)"
   "sweep reruns reuse members of other inputs|src/study/sweep.cpp|    if (!diff.empty())|    if (false)"
   "--fd-order 6 differenced at 4th order|src/gbssn/rhs.cpp|  case 6:\n    evaluate<6>(u, dudt, t);|  case 6:\n    evaluate<4>(u, dudt, t);"
-  "beta_H not tapered before the outer boundary|src/gbssn/horizon_shift.cpp|           * outer_taper(std::abs(grid.r()[i]) / params.r_cut);|           * 1.0;"
+  "beta_H not tapered before the outer boundary|src/gbssn/horizon_shift.cpp|           * outer_taper(std::abs(grid.r()[i]) / params.r_cut, params.taper);|           * 1.0;"
   "a legacy checkpoint's old outer ghosts dropped|src/evolution/simulation.cpp|    for (std::size_t k = 0; k < n + legacy_ghosts; ++k) // interior and the old outer ghosts|    for (std::size_t k = 0; k < n; ++k)"
   "--rah-profile auto recorded without its width|src/config/params.cpp|      p.rah_width = hs.width;|      (void)hs.width;"
   "boxes take the single grid's cfl|src/config/params.cpp|    p.cfl = p.grid == \"boxes\" ? 0.25 : 0.5;|    p.cfl = 0.5;"
   "a requeued sweep member starts over instead of resuming|src/study/sweep.cpp|        resumable ? std::vector<std::string>{\"resume\", member_dir.string()} : m.args;|        m.args;"
   "invalid sweep members emitted as task lines|src/study/sweep.cpp|      if (const auto why = invalid_reason(m)) {\n        say(|      if (const auto why = invalid_reason(m); false) {\n        say("
   "converge samples reused for other radii|src/study/converge.cpp|    samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;"
+  "boxes: fine levels differenced at 4th order whatever --fd-order|src/mesh/layout.cpp|                        fd_order);|                        4);"
+  "beta_H's quartic taper only quadratic|src/gbssn/horizon_shift.hpp|    return std::exp(-x2 * x2);|    return std::exp(-x2);"
 )
 uncaught=0
 caught=0

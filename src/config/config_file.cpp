@@ -25,7 +25,8 @@ namespace {
 struct ParamSpec {
   const char* name;
   std::variant<int Params::*, double Params::*, std::optional<double> Params::*,
-               std::optional<int> Params::*, std::string Params::*, bool Params::*>
+               std::optional<int> Params::*, std::string Params::*,
+               std::optional<std::string> Params::*, bool Params::*>
       member;
   const char* group;
   const char* help;
@@ -66,7 +67,7 @@ const std::vector<ParamSpec>& param_specs() {
       {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
       {"fd-order", &Params::fd_order, "Numerics",
        "order of the finite differences: 2 | 4 | 6 | 8 (derivatives, upwind advection, and "
-       "dissipation of the (order+2)-th difference; boxes: 4)"},
+       "dissipation of the (order+2)-th difference; boxes: 2 | 4 | 6)"},
       {"chi-floor", &Params::chi_floor, "Numerics",
        "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
        "cross chi = 0 at the innermost cell during the lapse collapse"},
@@ -89,8 +90,13 @@ const std::vector<ParamSpec>& param_specs() {
       {"rah-width", &Params::rah_width, "Horizon",
        "width w of f(r), for every --rah-profile but auto"},
       {"rah-rcut", &Params::rah_rcut, "Horizon",
-       "beta_H falls smoothly (C-infinity) from its profile at rcut/2 to 0 at rcut, so that it "
-       "vanishes before the outer boundary; default rmax/2 when --rahA != 0"},
+       "beta_H vanishes smoothly by rcut (see --rah-taper), before the outer boundary; default "
+       "rmax/2 when --rahA != 0"},
+      {"rah-taper", &Params::rah_taper, "Horizon",
+       "how beta_H vanishes before the outer boundary: quartic (beta_H x exp(-(2r/rcut)^4): 0.94 "
+       "at rcut/4, 0.37 at rcut/2, 1e-7 at rcut; its derivatives are small enough for coarse "
+       "boxes) | step (C-infinity step from 1 at rcut/2 to 0 at rcut; large derivatives: "
+       "convergence lost on boxes with rmax 128); default quartic when --rahA != 0"},
       {"rah-ramp", &Params::rah_ramp, "Horizon",
        "T: the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0"},
       {"rah-profile", &Params::rah_profile, "Horizon",
@@ -135,6 +141,8 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
         using T = std::decay_t<decltype(p.*member)>;
         if constexpr (std::is_same_v<T, std::string>)
           return fmt::format("\"{}\"", p.*member);
+        else if constexpr (std::is_same_v<T, std::optional<std::string>>)
+          return p.*member ? std::optional(fmt::format("\"{}\"", *(p.*member))) : std::nullopt;
         else if constexpr (std::is_same_v<T, bool>)
           return p.*member ? "true" : "false";
         else if constexpr (std::is_same_v<
@@ -151,6 +159,7 @@ const std::map<std::string, std::string>& default_rules() {
   static const std::map<std::string, std::string> rules{{"eta", "2/M (1/M: wormhole shrinks)"},
                                                         {"norm-rmax", "min(10 M, rmax/2)"},
                                                         {"ah-tmax", "none"},
+                                                        {"rah-taper", "quartic"},
                                                         {"levels", "1 + floor(log2(rmax/4M))"},
                                                         {"cfl", "0.5 (boxes: 0.25)"}};
   return rules;
@@ -192,6 +201,11 @@ void add_options(CLI::App& app, Params& p) {
             opt = app.add_flag(flag, p.*member, spec.help);
           } else if constexpr (std::is_same_v<T, std::string>) {
             opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
+          } else if constexpr (std::is_same_v<T, std::optional<std::string>>) {
+            auto& target = p.*member;
+            opt = app.add_option_function<std::string>(
+                         flag, [&target](const std::string& text) { target = text; }, spec.help)
+                      ->type_name("TEXT");
           } else {
             opt = number_option(app, flag, p.*member, spec.help);
           }

@@ -55,6 +55,7 @@ const Choices<ShiftProfile> profile_choices{{"auto", ShiftProfile::automatic},
                                             {"rational3", ShiftProfile::rational3},
                                             {"gauss", ShiftProfile::gauss},
                                             {"gauss3", ShiftProfile::gauss3}};
+const Choices<Taper> taper_choices{{"quartic", Taper::quartic}, {"step", Taper::step}};
 const Choices<ShiftNormal> normal_choices{{"conformal", ShiftNormal::conformal},
                                           {"unit", ShiftNormal::unit},
                                           {"smooth", ShiftNormal::smooth}};
@@ -157,6 +158,8 @@ void resolve_defaults(Params& p) {
   if (p.rahA != 0.0) {
     if (!p.rah_rcut)
       p.rah_rcut = 0.5 * p.rmax;
+    if (!p.rah_taper)
+      p.rah_taper = "quartic";
     // `auto` is written to config.toml as the profile and width it stands for, so that a
     // checkpoint or a sweep member made when auto meant another width is told apart (not
     // resumed with the new one); M is validated afterwards
@@ -222,6 +225,8 @@ std::vector<std::string> warnings(const Params& p) {
       idle.push_back("--rah-width " + num(p.rah_width));
     if (p.rah_rcut)
       idle.push_back("--rah-rcut " + num(*p.rah_rcut));
+    if (p.rah_taper)
+      idle.push_back("--rah-taper " + *p.rah_taper);
     if (p.rah_ramp != d.rah_ramp)
       idle.push_back("--rah-ramp " + num(p.rah_ramp));
     if (p.rah_normal != d.rah_normal)
@@ -284,10 +289,16 @@ void validate(const Params& p) {
   }
   if (!fd::valid_order(p.fd_order))
     throw ParamError("--fd-order", std::to_string(p.fd_order), "must be 2, 4, 6 or 8");
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.fd_order != 4)
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && !mesh::boxes_order(p.fd_order))
     throw ParamError("--fd-order", std::to_string(p.fd_order),
-                     "must be 4 with --grid boxes: the boxes' buffer zones are sized for the "
-                     "4th-order stencils");
+                     "must be 2, 4 or 6 with --grid boxes: the boxes' prolongation and "
+                     "restriction are 6th order");
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && mesh::boxes_order(p.fd_order)
+      && p.N < static_cast<int>(mesh::min_cells(p.fd_order)))
+    throw ParamError("--N", std::to_string(p.N),
+                     fmt::format("must be at least {} with --grid boxes at --fd-order {} (a "
+                                 "fine box's buffer and the transfer stencils)",
+                                 mesh::min_cells(p.fd_order), p.fd_order));
   if (p.grid == "sinh") {
     require_positive("--dr-inner", p.dr_inner);
     const double needed = p.dr_inner * sinh_reference_N;
@@ -376,6 +387,8 @@ void validate(const Params& p) {
   }
   (void)choice("--rah-profile", p.rah_profile, profile_choices);
   (void)choice("--rah-normal", p.rah_normal, normal_choices);
+  if (p.rah_taper)
+    (void)choice("--rah-taper", *p.rah_taper, taper_choices);
   require_positive("--rah-chi-smooth", p.rah_chi_smooth);
   require_finite("--rah-ramp", p.rah_ramp);
   if (p.rah_ramp < 0.0)
@@ -568,6 +581,7 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.ramp = p.rah_ramp;
   r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
+  r.horizon_shift.taper = choice("--rah-taper", p.rah_taper.value_or("quartic"), taper_choices);
   r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
   r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;

@@ -75,6 +75,9 @@ struct Params {
   /// beta_H is tapered to 0 between rah_rcut/2 and rah_rcut; unset: rmax/2 (resolve_defaults,
   /// with the horizon shift on)
   std::optional<double> rah_rcut;
+  /// quartic | step (HorizonShiftParams::Taper); unset: quartic when rahA != 0 (resolve_defaults),
+  /// so that config.toml records it and a run made with another taper is told apart
+  std::optional<std::string> rah_taper;
   std::string rah_profile = "auto";     ///< auto | rational | rational3 | gauss | gauss3
   std::string rah_normal = "conformal"; ///< conformal | unit | smooth
   /// chi_s of the smooth normal sqrt((chi + chi_s)/a)

@@ -23,6 +23,11 @@ inline constexpr std::array<int, 4> orders{2, 4, 6, 8};
 inline constexpr bool valid_order(int order) {
   return order == 2 || order == 4 || order == 6 || order == 8;
 }
+/// The widest reach of order `order`'s stencils (upwind and dissipation): order / 2 + 1, the
+/// run-time value of Order<p>::radius.
+inline constexpr std::size_t stencil_radius(int order) {
+  return static_cast<std::size_t>(order / 2 + 1);
+}
 
 /// An exact rational p / q (q > 0, lowest terms), for deriving weights at compile time.
 struct Rational {
@@ -199,6 +204,7 @@ struct Order {
   static_assert(valid_order(p), "finite-difference orders are 2, 4, 6 and 8");
   static constexpr int half = p / 2;
   static constexpr int radius = half + 1; ///< the widest reach: upwind and dissipation
+  static_assert(stencil_radius(p) == static_cast<std::size_t>(radius));
   static constexpr std::size_t n_centred = 2 * half + 1, n_wide = 2 * radius + 1;
 
   static constexpr auto d1_exact = fornberg<n_centred>(1, -half);

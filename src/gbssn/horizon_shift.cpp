@@ -10,7 +10,7 @@ std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& param
   std::vector<double> f(grid.n_total());
   for (std::size_t i = 0; i < f.size(); ++i)
     f[i] = shift_profile(params.profile, grid.r()[i] / params.width) // odd
-           * outer_taper(std::abs(grid.r()[i]) / params.r_cut);
+           * outer_taper(std::abs(grid.r()[i]) / params.r_cut, params.taper);
   return f;
 }
 

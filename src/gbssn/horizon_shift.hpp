@@ -27,10 +27,24 @@ enum class ShiftProfile {
   gauss3,    ///< (q^3/2) exp(3 (1 - q^2)/2): concentrated at r ~ w, f ~ r^3 at the origin
 };
 
-/// The outer taper of beta_H at s = |r| / r_cut: 1 for s <= 1/2, 0 for s >= 1, and in between
-/// the C-infinity step g(1 - u) / (g(1 - u) + g(u)), u = 2 s - 1, g(x) = exp(-1/x): every
-/// derivative is continuous, so that the taper costs no order at any finite-difference order.
-inline double outer_taper(double s) {
+/// How beta_H vanishes before the outer boundary (docs/horizon-shift-study.md, Sec. 7.1, 7.3).
+enum class Taper {
+  /// exp(-(2 s)^4): 0.94 at s = 1/4, 1/e at s = 1/2, 1.1e-7 at s = 1, 7e-112 at s = 2 (rmax
+  /// with the default r_cut = rmax/2). Its largest 4th and 6th derivatives are
+  /// 17 and 570 times smaller than the step's, so that coarse boxes resolve it.
+  quartic,
+  /// 1 for s <= 1/2, 0 for s >= 1, and in between the C-infinity step g(1 - u) / (g(1 - u) +
+  /// g(u)), u = 2 s - 1, g(x) = exp(-1/x): compact, but its 6th derivative reaches 3e8 / r_cut^6,
+  /// which boxes with rmax 128 do not resolve (Sec. 7.3).
+  step,
+};
+
+/// The outer taper of beta_H at s = |r| / r_cut.
+inline double outer_taper(double s, Taper taper = Taper::quartic) {
+  if (taper == Taper::quartic) {
+    const double x2 = 4.0 * s * s;
+    return std::exp(-x2 * x2);
+  }
   const double u = 2.0 * s - 1.0;
   if (u <= 0.0)
     return 1.0;
@@ -89,10 +103,11 @@ struct HorizonShiftParams {
   double h = 0.89;    ///< desired coordinate radius of the horizon
   double width = 1.0; ///< w
   double ramp = 0.0;  ///< T: the strength grows as A (1 - exp(-(t/T)^2)) (0: A from t = 0)
-  /// r_cut: f(r) is multiplied by outer_taper(r / r_cut), which falls smoothly from 1 at
-  /// r_cut/2 to 0 at r_cut, so that beta_H vanishes before the outer boundary, where the
-  /// boundary condition assumes the shift of the Gamma-driver alone (infinity: no taper).
+  /// r_cut: f(r) is multiplied by outer_taper(r / r_cut, taper), which falls smoothly to 0 by
+  /// r_cut, so that beta_H vanishes before the outer boundary, where the boundary condition
+  /// assumes the shift of the Gamma-driver alone (infinity: no taper).
   double r_cut = std::numeric_limits<double>::infinity();
+  Taper taper = Taper::quartic;
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
   double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth

@@ -104,11 +104,11 @@ void MeshStepper::initialise(std::vector<State>& u, double t) {
   }
   // Quadratic interpolation in time needs three time levels from the first step on: the level
   // before t is made by one RK4 step backwards, as Carpet's init_3_timelevels (Scott Hawley's
-  // algorithm) evolves to fill past time levels. Without it
-  // the first coarse step would interpolate linearly, an O(dt^2) error at the fine boundary
-  // that does not converge where it focuses at r = 0 (measured: the 3-level gauge pulse's
-  // self-convergence stalls). The backward step of a level > 0 keeps its ghosts from t; what
-  // that spoils stays within 12 points of its outer ghosts, away from the cells its child reads.
+  // algorithm) evolves to fill past time levels. Without it the first coarse step would
+  // interpolate linearly, an O(dt^2) error at the fine boundary that does not converge where it
+  // focuses at r = 0 (measured: the 3-level gauge pulse's self-convergence stalls). The
+  // backward step of a level > 0 keeps its ghosts from t; what that spoils stays within
+  // stages x stencil radius points of its outer ghosts, away from the cells its child reads.
   if (options_.time == TimeInterpolation::quadratic)
     for (std::size_t l = 0; l + 1 < layout_->levels(); ++l) {
       const double dt_l = level_dt(l, dt());

@@ -23,8 +23,8 @@
 //        2011, CAMCoS 6:1; Mongwane 2015, GRG 47:60): consistent, 4th order, no buffer;
 //      dense_output: every stage gets the coarse step's RK4 dense output at the stage time
 //        (accurate values, inconsistent with the stages);
-//      quadratic: ghosts and a buffer of buffer_cells + 3 = 12 points (stages x stencil
-//        radius, Schnetter, Hawley & Hawke 2004) are filled once per fine step by quadratic
+//      quadratic: ghosts and a buffer of stages x stencil radius points (12 at 4th order,
+//        16 at 6th; Schnetter, Hawley & Hawke 2004) are filled once per fine step by quadratic
 //        interpolation in time through three coarse time levels (Carpet's and BAM's default),
 //        2nd/3rd order in time.
 //  - Stepper: Berger-Oliger recursion (Berger & Oliger 1984): level l takes one RK4 step of dt_l
@@ -136,7 +136,7 @@ public:
   } ///< resume
   /// Fine interior cells (next to the outer ghosts) refilled from the parent every fine step.
   std::size_t buffer() const {
-    return options_.time == TimeInterpolation::quadratic ? buffer_cells : 0;
+    return options_.time == TimeInterpolation::quadratic ? buffer_cells(layout_->fd_order()) : 0;
   }
   /// The coarse cells [0, restricted_cells()) of a parent overwritten by restriction.
   long restricted_cells() const;

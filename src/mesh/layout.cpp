@@ -27,22 +27,25 @@ MeshLayout::MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t le
       throw bad("--N", std::to_string(n_cells),
                 "box-in-box refinement needs an even number of cells (each coarse cell holds "
                 "two fine cells)");
-    if (n_cells < min_cells)
+    if (!boxes_order(fd_order))
+      throw bad("--fd-order", std::to_string(fd_order),
+                "box-in-box refinement offers 2, 4 and 6: its prolongation and restriction are "
+                "6th order");
+    if (n_cells < min_cells(fd_order))
       throw bad("--N", std::to_string(n_cells),
-                "box-in-box refinement needs at least " + std::to_string(min_cells)
-                    + " cells per level (the fine level's buffer of " + std::to_string(buffer_cells)
+                "box-in-box refinement needs at least " + std::to_string(min_cells(fd_order))
+                    + " cells per level at --fd-order " + std::to_string(fd_order)
+                    + " (the fine level's buffer of " + std::to_string(buffer_cells(fd_order))
                     + " cells, the restriction and prolongation stencils)");
     // the levels' extents rmax / 2^l must stay representable and distinct
-    if (fd_order != 4)
-      throw bad("--fd-order", std::to_string(fd_order),
-                "box-in-box refinement needs 4: the buffer zones are sized for its stencils");
     if (levels > 60)
       throw bad("--levels", std::to_string(levels), "at most 60 levels");
   }
   grids_.reserve(levels);
   grids_.emplace_back(map, n_cells, fd_order);
   for (std::size_t l = 1; l < levels; ++l)
-    grids_.emplace_back(RadialMap::uniform(std::ldexp(map.rmax(), -static_cast<int>(l))), n_cells);
+    grids_.emplace_back(RadialMap::uniform(std::ldexp(map.rmax(), -static_cast<int>(l))), n_cells,
+                        fd_order);
 }
 
 } // namespace gbssn1d::mesh

@@ -7,6 +7,7 @@
 // grid, on any map (uniform or sinh).
 #pragma once
 
+#include "fd/stencils.hpp"
 #include "grid/grid.hpp"
 
 #include <cstddef>
@@ -17,28 +18,37 @@ namespace gbssn1d::mesh {
 /// Interior fine cells next to the ghosts that are refilled from the coarser level at every
 /// fine step when the stages are not filled one by one (TimeInterpolation::quadratic): the
 /// region the four RK4 stages contaminate from the outer ghosts, (stages - 1) x stencil radius
-/// = 3 x 3 = 9 cells; with the 3 ghosts the 4th-order stencils read that is stages x radius = 12
-/// points, the buffer width of Schnetter, Hawley & Hawke 2004 (CQG 21:1465, Sec. 2.3). Boxes
-/// difference at 4th order (other orders are refused there: their radius would need a wider
-/// buffer).
-inline constexpr std::size_t stencil_radius = 3;
-inline constexpr std::size_t buffer_cells = 3 * stencil_radius;
+/// (3 x 3 = 9 cells at 4th order, 3 x 4 = 12 at 6th); with the ghosts the stencils read that is
+/// stages x radius points, the buffer width of Schnetter, Hawley & Hawke 2004 (CQG 21:1465,
+/// Sec. 2.3).
+inline constexpr std::size_t buffer_cells(int fd_order) {
+  return 3 * fd::stencil_radius(fd_order);
+}
 
 /// Fewest cells per level with more than one level: the buffer, the restriction stencil's reach
 /// (a coarse cell is restricted from fine cells 2i-2 ... 2i+3) and one restricted cell.
-inline constexpr std::size_t min_cells = 14;
+inline constexpr std::size_t min_cells(int fd_order) {
+  return buffer_cells(fd_order) + 5;
+}
+
+/// Finite-difference orders boxes offer: 2, 4 and 6. The prolongation and restriction are
+/// 6-point Lagrange operators, 6th order (transfer.hpp); 8th order would need 8-point ones.
+inline constexpr bool boxes_order(int fd_order) {
+  return fd_order == 2 || fd_order == 4 || fd_order == 6;
+}
 
 class MeshLayout {
 public:
   /// `levels` levels of `n_cells` cells each on `map` (levels > 1: a uniform map, N even, at
   /// least min_cells). Throws std::invalid_argument naming the parameter and why.
-  /// `fd_order`: the grids' finite-difference order (only 4 with more than one level).
+  /// `fd_order`: every level's finite-difference order (2, 4 or 6 with more than one level).
   MeshLayout(const RadialMap& map, std::size_t n_cells, std::size_t levels, int fd_order = 4);
   /// L uniform levels on [0, rmax].
   MeshLayout(double rmax, std::size_t n_cells, std::size_t levels, int fd_order = 4)
       : MeshLayout(RadialMap::uniform(rmax), n_cells, levels, fd_order) {}
 
   std::size_t levels() const { return grids_.size(); }
+  int fd_order() const { return grids_.front().fd_order(); }
   std::size_t n_cells() const { return grids_.front().n_interior(); }
   const Grid& grid(std::size_t level) const { return grids_.at(level); }
   /// r up to which level l is evolved: rmax / 2^l.

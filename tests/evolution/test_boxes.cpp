@@ -338,3 +338,37 @@ TEST_CASE("a horizon stretched to 2 M on six boxes: RK4 stage values converge at
   CHECK(quadratic[1] < 3.0);             // the time interpolation's order shows at M/24
   CHECK(quadratic[2] > 3.0 * stages[2]); // and its error is larger
 }
+
+TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the untapered run's "
+          "errors, the step loses convergence") {
+  // six boxes to rmax 128 (finest r <= 4 M at M/12, M/16, M/24), h = 2 M with the default
+  // profile (rational, w = 6 M) and rcut = rmax/2: the taper lies on boxes 1 and 2, spacing
+  // 0.67 ... 2.7 M. RMS of H_L2_R over t in [10, 100] M. Measured when written (study doc
+  // Sec. 7.3): untapered 1.52e-5, 5.34e-6, 1.36e-6 (orders 3.64, 3.38); quartic the same to
+  // 3 digits; step 7.71e-5, 3.34e-5, 1.82e-5 (orders 2.91, 1.50).
+  auto errors = [](std::optional<std::string> taper, double r_cut) {
+    std::vector<double> e;
+    for (int n : {48, 64, 96}) {
+      Params p = boxes(6, 128.0, n);
+      p.rahA = 0.5;
+      p.rah0 = 2.0;
+      p.rah_rcut = r_cut;
+      p.rah_taper = taper;
+      p.tmax = 100.0;
+      p.dt_series = 0.5;
+      e.push_back(rms_in_time(series_of(p), &SeriesRow::H_L2_R, 10.0));
+    }
+    return e;
+  };
+  const auto none = errors(std::nullopt, 1e9);
+  const auto quartic = errors("quartic", 64.0);
+  const auto step = errors("step", 64.0);
+  const double step_order = std::log(step[1] / step[2]) / std::log(96.0 / 64.0);
+  INFO("untapered " << none[0] << " " << none[1] << " " << none[2] << "; quartic " << quartic[0]
+                    << " " << quartic[1] << " " << quartic[2] << "; step " << step[0] << " "
+                    << step[1] << " " << step[2] << " (order " << step_order << ")");
+  for (std::size_t k = 0; k < 3; ++k)
+    CHECK(quartic[k] == doctest::Approx(none[k]).epsilon(0.02));
+  CHECK(step[2] > 5.0 * none[2]);
+  CHECK(step_order < 2.5);
+}

@@ -51,8 +51,8 @@ struct Run {
   std::vector<State> u;
   double t = 0.0;
 
-  Run(double rmax, std::size_t n, std::size_t levels, StepperOptions options)
-      : layout(rmax, n, levels) {
+  Run(double rmax, std::size_t n, std::size_t levels, StepperOptions options, int fd_order = 4)
+      : layout(rmax, n, levels, fd_order) {
     std::vector<LevelRhs> functors;
     for (std::size_t l = 0; l < levels; ++l) {
       rhs.push_back(std::make_unique<GbssnRhs>(layout.grid(l), RhsParams{}));
@@ -93,11 +93,11 @@ constexpr double rmax = 8.0, tmax = 3.5, dt_sample = 0.25;
 /// Runs at N = n_list[k] to tmax, sampling every dt_sample; returns the RMS over samples,
 /// levels, cells and variables of u_N - R(u_2N) for each consecutive pair (self-convergence).
 std::vector<double> self_differences(const std::vector<std::size_t>& n_list, std::size_t levels,
-                                     StepperOptions options) {
+                                     StepperOptions options, int fd_order = 4) {
   std::vector<std::vector<std::vector<State>>> samples(n_list.size());
   std::size_t buffer = 0;
   for (std::size_t k = 0; k < n_list.size(); ++k) {
-    Run run(rmax, n_list[k], levels, options);
+    Run run(rmax, n_list[k], levels, options, fd_order);
     buffer = run.stepper->buffer();
     const double dt = run.stepper->dt();
     const long per_sample = std::lround(dt_sample / dt);
@@ -111,7 +111,7 @@ std::vector<double> self_differences(const std::vector<std::size_t>& n_list, std
   }
   std::vector<double> rms;
   for (std::size_t k = 0; k + 1 < n_list.size(); ++k) {
-    const MeshLayout a(rmax, n_list[k], levels), b(rmax, n_list[k + 1], levels);
+    const MeshLayout a(rmax, n_list[k], levels, fd_order), b(rmax, n_list[k + 1], levels, fd_order);
     double s = 0.0;
     std::size_t n = 0;
     for (std::size_t m = 0; m < samples[k].size(); ++m)
@@ -125,11 +125,12 @@ std::vector<double> self_differences(const std::vector<std::size_t>& n_list, std
 
 /// RMS over samples, cells and variables of the finest level minus a single uniform grid with
 /// the finest spacing (the same cell centres), over the finest level's valid cells.
-double single_grid_difference(std::size_t n, std::size_t levels, StepperOptions options) {
-  Run run(rmax, n, levels, options);
+double single_grid_difference(std::size_t n, std::size_t levels, StepperOptions options,
+                              int fd_order = 4) {
+  Run run(rmax, n, levels, options, fd_order);
   const std::size_t f = levels - 1, nf = n << f;
   StepperOptions one = options;
-  Run single(rmax, nf, 1, one);
+  Run single(rmax, nf, 1, one, fd_order);
   const double dt = run.stepper->dt(), dt_fine = run.stepper->level_dt(f, dt);
   const long fine_per_step = std::lround(dt / dt_fine);
   const long per_sample = std::lround(dt_sample / dt);
@@ -200,6 +201,26 @@ TEST_CASE("mesh layout: extents halve per level, bad N, levels and maps are refu
   CHECK_THROWS_WITH_AS(MeshLayout(RadialMap::sinh(100, 0.02, 400), 400, 2),
                        doctest::Contains("--grid"), std::invalid_argument);
   CHECK_NOTHROW(MeshLayout(RadialMap::sinh(100, 0.02, 400), 401, 1)); // one level: any grid
+}
+
+TEST_CASE("mesh layout: every level differences at the order asked; boxes offer 2, 4, 6") {
+  for (int order : {2, 4, 6}) {
+    const MeshLayout m(8.0, 32, 3, order);
+    CHECK(m.fd_order() == order);
+    for (std::size_t l = 0; l < m.levels(); ++l)
+      CHECK(m.grid(l).fd_order() == order);
+  }
+  CHECK(buffer_cells(4) == 9); // (stages - 1) x radius: 3 x 3
+  CHECK(buffer_cells(6) == 12);
+  CHECK_NOTHROW(MeshLayout(8.0, 14, 2, 4));
+  CHECK_THROWS_WITH_AS(MeshLayout(8.0, 16, 2, 6),
+                       doctest::Contains("needs at least 17 cells per level at --fd-order 6"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(MeshLayout(8.0, 32, 2, 8),
+                       doctest::Contains("--fd-order = 8 is invalid: box-in-box refinement offers "
+                                         "2, 4 and 6"),
+                       std::invalid_argument);
+  CHECK_NOTHROW(MeshLayout(8.0, 32, 1, 8)); // one level: any order
 }
 
 TEST_CASE("one level reproduces Boost.Odeint's runge_kutta4 with GbssnRhs bit for bit") {
@@ -325,30 +346,32 @@ TEST_CASE("fine boundary data are refilled before use: poisoned ghosts and buffe
           "nothing, and a step leaves them prolongated from the parent") {
   for (TimeInterpolation ti : {TimeInterpolation::rk_stages, TimeInterpolation::dense_output,
                                TimeInterpolation::quadratic})
-    for (bool sub : {true, false}) {
-      const StepperOptions opt{ti, sub, 0.25};
-      Run a(rmax, 32, 3, opt), b(rmax, 32, 3, opt);
-      const long n = 32, begin = n - static_cast<long>(a.stepper->buffer());
-      const double dt = a.stepper->dt();
-      for (int k = 0; k < 6; ++k) {
-        // after a step: ghosts and buffer equal the parent's prolongation
-        for (std::size_t l = 1; l < 3; ++l) {
-          State p = a.u[l];
-          prolong(a.u[l - 1], a.layout.grid(l - 1), p, a.layout.grid(l), begin, n + 3);
-          CHECK(p == a.u[l]);
-        }
-        for (std::size_t l = 1; l < 3; ++l)
-          for (const auto& entry : registry) {
-            auto f = field(b.u[l], b.layout.grid(l), entry.var);
-            for (long j = begin; j < n + 3; ++j)
-              f[static_cast<std::size_t>(j) + Grid::n_ghost] =
-                  std::numeric_limits<double>::quiet_NaN();
+    for (bool sub : {true, false})
+      for (int order : {4, 6}) {
+        const StepperOptions opt{ti, sub, 0.25};
+        Run a(rmax, 32, 3, opt, order), b(rmax, 32, 3, opt, order);
+        const long n = 32, end = n + static_cast<long>(Grid::n_ghost),
+                   begin = n - static_cast<long>(a.stepper->buffer());
+        const double dt = a.stepper->dt();
+        for (int k = 0; k < 6; ++k) {
+          // after a step: ghosts and buffer equal the parent's prolongation
+          for (std::size_t l = 1; l < 3; ++l) {
+            State p = a.u[l];
+            prolong(a.u[l - 1], a.layout.grid(l - 1), p, a.layout.grid(l), begin, end);
+            CHECK(p == a.u[l]);
           }
-        a.step(dt);
-        b.step(dt);
+          for (std::size_t l = 1; l < 3; ++l)
+            for (const auto& entry : registry) {
+              auto f = field(b.u[l], b.layout.grid(l), entry.var);
+              for (long j = begin; j < end; ++j)
+                f[static_cast<std::size_t>(j) + Grid::n_ghost] =
+                    std::numeric_limits<double>::quiet_NaN();
+            }
+          a.step(dt);
+          b.step(dt);
+        }
+        CHECK(a.u == b.u);
       }
-      CHECK(a.u == b.u);
-    }
 }
 
 // The stationary 1+log trumpet (equations document, Sec. 13) on four nested boxes: every
@@ -407,4 +430,24 @@ TEST_CASE("the 1+log trumpet on four boxes stays stationary at 4th order through
                                    << "; order " << p);
     CHECK(p >= 3.5);
   }
+}
+
+TEST_CASE("gauge pulse across refinement boundaries at --fd-order 6, RK4 stage values") {
+  for (std::size_t levels : {2u, 3u})
+    for (TimeInterpolation ti : {TimeInterpolation::rk_stages, TimeInterpolation::dense_output,
+                                 TimeInterpolation::quadratic}) {
+      const StepperOptions opt{ti, true, 0.25};
+      const auto d = self_differences({32, 64, 128, 256}, levels, opt, 6);
+      const double order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, d);
+      std::vector<double> refl;
+      for (std::size_t n : {32, 64, 128})
+        refl.push_back(single_grid_difference(n, levels, opt, 6));
+      const double refl_order = fit_order({1.0 / 32, 1.0 / 64, 1.0 / 128}, refl);
+      const auto o = pair_orders(d);
+      MESSAGE(label(levels, opt) << ", 6th order: self-differences " << d[0] << " " << d[1] << " "
+                                 << d[2] << ", pair orders " << o[0] << " " << o[1] << ", fitted "
+                                 << order << "; finest level minus single grid " << refl[0] << " "
+                                 << refl[1] << " " << refl[2] << ", order " << refl_order);
+      CHECK(order > 0.0);
+    }
 }
