@@ -203,7 +203,7 @@ TEST_CASE("mesh layout: extents halve per level, bad N, levels and maps are refu
   CHECK_NOTHROW(MeshLayout(RadialMap::sinh(100, 0.02, 400), 401, 1)); // one level: any grid
 }
 
-TEST_CASE("mesh layout: every level differences at the order asked; boxes offer 2, 4, 6") {
+TEST_CASE("mesh layout: every level differences at the order asked, and boxes offer 2, 4 and 6") {
   for (int order : {2, 4, 6}) {
     const MeshLayout m(8.0, 32, 3, order);
     CHECK(m.fd_order() == order);
