@@ -432,7 +432,9 @@ TEST_CASE("the 1+log trumpet on four boxes stays stationary at 4th order through
   }
 }
 
-TEST_CASE("gauge pulse across refinement boundaries at --fd-order 6, RK4 stage values") {
+TEST_CASE(
+    "gauge pulse across refinement boundaries at --fd-order 6: about 6th order with each time "
+    "interpolation") {
   for (std::size_t levels : {2u, 3u})
     for (TimeInterpolation ti : {TimeInterpolation::rk_stages, TimeInterpolation::dense_output,
                                  TimeInterpolation::quadratic}) {
