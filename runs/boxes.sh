@@ -12,6 +12,7 @@
 #   bash runs/boxes.sh speed     # the stretched 3-resolution study to 1000 M as one converge -j 2
 #   bash runs/boxes.sh order     # --fd-order 6 against 4 on the published grid, 6 boxes and 9 boxes
 #   bash runs/boxes.sh taper     # beta_H's outer taper (quartic, step, none) on coarse boxes
+#   bash runs/boxes.sh bursts    # wormhole data on boxes: H bursts against where the boxes end
 #
 # Output under out/boxes/: one folder per family, tables on stdout (also in out/boxes/*.txt),
 # figures *.png.
@@ -199,6 +200,36 @@ taper)
     echo "== the published grid (7 boxes, rmax 128), rcut 64, t in [10, 100] M"
     table "$out/taper-seven-standard" "$out"/taper-seven-h*/ --t0 10 --t1 100
   } | tee "$out/taper.txt"
+  ;;
+bursts)
+  # precollapsed wormhole data, standard gauge, 8 boxes, N = 96, to 1000 M, with the boxes ending
+  # at rmax/2^l for rmax = 1000 and 1400 M: when do H_L2_R's bursts reach the window, against
+  # t = (1/sqrt 2 + 1) R_b, the time for the collapse's pulse to reach a box's end R_b at the
+  # lapse's speed sqrt 2 and come back at speed 1
+  for rmax in 1000 1400; do
+    rm -rf "$out/bursts-rmax$rmax"
+    build/gbssn1d evolve --grid boxes --levels 8 --N 96 --rmax $rmax --tmax 1000 --dt-series 1 \
+      --dt-profiles 1000 --out "$out/bursts-rmax$rmax" >"$out/bursts-rmax$rmax.log" 2>&1 || true
+  done
+  $py - "$out" <<'PY' | tee "$out/bursts.txt"
+import math, os, sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import series
+out = sys.argv[1]
+for rmax in (1000, 1400):
+    s = series(os.path.join(out, f'bursts-rmax{rmax}', 'timeseries.dat'))
+    t, H, dM = s['t'], s['H_L2_R'], np.abs(s['M_ah_err'])
+    # local maxima of H (over +-40 M) above 1e-4 from 100 M on
+    peaks = [i for i in range(len(t)) if t[i] >= 100 and H[i] > 1e-4
+             and H[i] == H[max(0, i - 40):i + 41].max()]
+    ends = [rmax / 2 ** l for l in range(1, 8)]
+    print(f"rmax {rmax}: boxes end at " + ", ".join(f"{r:g}" for r in ends) + " M")
+    print("  predicted returns (1/sqrt 2 + 1) R_b: "
+          + ", ".join(f"{(1 / math.sqrt(2) + 1) * r:.0f}" for r in ends if (1 / math.sqrt(2) + 1) * r <= 1000))
+    print("  H_L2_R bursts (t, H): " + ", ".join(f"{t[i]:.0f} {H[i]:.1e}" for i in peaks))
+    print(f"  max |M_AH - M| over 0-100 M {dM[t < 100].max():.1e}, over 100-1000 M {dM[t >= 100].max():.1e}")
+PY
   ;;
 speed)
   # the stretched study on 9 boxes to rmax 1024, finest M/8, M/12, M/16, to 1000 M
