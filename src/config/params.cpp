@@ -212,6 +212,24 @@ std::vector<std::string> warnings(const Params& p) {
           "a larger --N",
           num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
+  // Boxes and wormhole data: the collapse's outgoing gauge pulse comes back from where the
+  // boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH that fall with N
+  // (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at 128, 1e-4 at 200).
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.id == "wormhole" && p.N < 200) {
+    const double back = 1.0 / std::sqrt(2.0) + 1.0;
+    for (int l = *p.levels - 1; l >= 1; --l) { // the box ends from the inside out
+      const double end = std::ldexp(p.rmax, -l);
+      if (end >= 50.0 * p.M && back * end <= p.tmax) {
+        w.push_back(fmt::format(
+            "wormhole data on boxes with --N {} < 200: the collapse's gauge pulse comes back from "
+            "where the boxes end (first from r = {:.4g} M at t ~ {:.0f} M), in bursts of H and "
+            "M_AH (6e-3 in M_AH at N = 96, 7e-4 at N = 128: docs/horizon-shift-study.md, Sec. 7); "
+            "use --N 200 or more, the sinh grid, or trumpet data",
+            p.N, end, back * end));
+        break;
+      }
+    }
+  }
   // The horizon-shift flags act only with a strength: given with --rahA 0 they change nothing,
   // which a user who forgot --rahA would not otherwise learn.
   if (p.rahA == 0.0) {

@@ -372,3 +372,26 @@ TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the unt
   CHECK(step[2] > 5.0 * none[2]);
   CHECK(step_order < 2.5);
 }
+
+TEST_CASE("wormhole data on boxes with N below 200 are warned about once the pulse can be back") {
+  auto burst_warnings = [](Params p) {
+    resolve_defaults(p);
+    validate(p);
+    int n = 0;
+    for (const auto& w : warnings(p))
+      n += w.find("comes back from where the boxes end") != std::string::npos;
+    return n;
+  };
+  Params p = boxes(8, 1000.0, 96);
+  p.id = "wormhole";
+  p.tmax = 300.0; // the box ending at 62.5 M sends it back by about 107 M
+  CHECK(burst_warnings(p) == 1);
+  p.tmax = 100.0;
+  CHECK(burst_warnings(p) == 0);
+  p.tmax = 300.0;
+  p.N = 200;
+  CHECK(burst_warnings(p) == 0);
+  p.N = 96;
+  p.id = "1log-trumpet";
+  CHECK(burst_warnings(p) == 0);
+}
