@@ -72,8 +72,8 @@ struct Params {
       evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
   /// T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
   double rah_ramp = evolution_defaults().rhs.horizon_shift.ramp;
-  /// beta_H is tapered to 0 between rah_rcut/2 and rah_rcut; unset: rmax/2 (resolve_defaults,
-  /// with the horizon shift on)
+  /// beta_H vanishes by rah_rcut (see rah_taper); unset: rmax/2 (resolve_defaults, with the
+  /// horizon shift on)
   std::optional<double> rah_rcut;
   /// quartic | step (HorizonShiftParams::Taper); unset: quartic when rahA != 0 (resolve_defaults),
   /// so that config.toml records it and a run made with another taper is told apart
