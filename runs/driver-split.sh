@@ -29,12 +29,8 @@ PY
 done
 common=(--id 1log-trumpet --rahA 0.5 --rah0 0.6 --rah-profile gauss --rah-width 1 --tmax 1000
   --dt-series 5 --dt-profiles 100)
-run() { # name, then evolve flags; at most $(nproc) at once
-  local name=$1
-  shift
-  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n; done
-  build/gbssn1d evolve "${common[@]}" --out "$out/$name" "$@" >"$out/$name.log" 2>&1 || true &
-}
+source runs/study-helpers.sh
+run() { evolve_run "$1" "${common[@]}" "${@:2}"; } # name, then the flags beyond the common ones
 for eta in 2 1 0.5; do
   run "split-eta$eta-delta0.02" --eta "$eta" --rah-hAH-file "$out/hAH-0.02.dat"
 done

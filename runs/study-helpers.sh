@@ -12,14 +12,20 @@ family() {
     >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
 }
 
-# `uniform_run NAME FLAGS...` (runs/boundary-reflections.sh, uniform-m16.sh) starts one evolve
-# on a uniform grid in the background, into $out/NAME (series every 0.5 M, no profiles), its
+# `evolve_run NAME FLAGS...` starts one `gbssn1d evolve` in the background, into $out/NAME, its
 # log in $out/NAME.log, at most $(nproc) at once; a run that stops is reported, the script goes
-# on. The caller waits (`wait`) before reading the results.
-uniform_run() {
+# on. The caller waits (`wait`) before reading the results. `uniform_run NAME FLAGS...`
+# (runs/boundary-reflections.sh, uniform-m16.sh) is the same on a uniform grid with a series
+# row every 0.5 M and no profiles.
+evolve_run() {
   local name=$1
   shift
   while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n; done
-  build/gbssn1d evolve --grid uniform --dt-series 0.5 --dt-profiles 1000 --out "$out/$name" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name stopped, see $out/$name.log)" &
+  build/gbssn1d evolve --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
+    echo "  ($name stopped, see $out/$name.log)" &
+}
+uniform_run() {
+  local name=$1
+  shift
+  evolve_run "$name" --grid uniform --dt-series 0.5 --dt-profiles 1000 "$@"
 }

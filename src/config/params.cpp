@@ -79,6 +79,15 @@ E choice(const std::string& flag, const std::string& name, const Choices<E>& cho
   throw ParamError(flag, name, "must be one of " + list);
 }
 
+/// The name of `value` among `choices` (each value has one).
+template <class E>
+std::string_view choice_name(const Choices<E>& choices, E value) {
+  for (const auto& [n, v] : choices)
+    if (v == value)
+      return n;
+  throw std::logic_error("a choice without a name");
+}
+
 std::string num(double v) {
   return fmt::format("{}", v);
 }
@@ -159,7 +168,7 @@ void resolve_defaults(Params& p) {
     if (!p.rah_rcut)
       p.rah_rcut = 0.5 * p.rmax;
     if (!p.rah_taper)
-      p.rah_taper = "quartic";
+      p.rah_taper = std::string(choice_name(taper_choices, HorizonShiftParams{}.taper));
     // `auto` is written to config.toml as the profile and width it stands for, so that a
     // checkpoint or a sweep member made when auto meant another width is told apart (not
     // resumed with the new one); M is validated afterwards
@@ -599,7 +608,8 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.ramp = p.rah_ramp;
   r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
-  r.horizon_shift.taper = choice("--rah-taper", p.rah_taper.value_or("quartic"), taper_choices);
+  if (p.rah_taper) // unset only without the horizon shift: HorizonShiftParams' default then
+    r.horizon_shift.taper = choice("--rah-taper", *p.rah_taper, taper_choices);
   r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
   r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;

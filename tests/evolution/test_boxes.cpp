@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <unistd.h>
 #include <vector>
 
@@ -41,6 +42,16 @@ std::vector<SeriesRow> series_of(const Params& p) {
   sim.on_series = [&](Simulation& s) { rows.push_back(s.series_row(s.composite_profiles())); };
   sim.run(nullptr);
   return rows;
+}
+
+/// How many of the run's warnings (after resolve_defaults and validate) hold `text`.
+int warnings_holding(Params p, const std::string& text) {
+  resolve_defaults(p);
+  validate(p);
+  int n = 0;
+  for (const auto& w : warnings(p))
+    n += w.find(text) != std::string::npos;
+  return n;
 }
 
 double rms_in_time(const std::vector<SeriesRow>& rows, double SeriesRow::*norm, double t0) {
@@ -269,14 +280,7 @@ TEST_CASE("the horizon of boxes is found on the finest box, as on a single fine 
 }
 
 TEST_CASE("a horizon or rah0 outside the finest box's inner part is warned about, once") {
-  auto box_warnings = [](Params p) {
-    resolve_defaults(p);
-    validate(p);
-    int n = 0;
-    for (const auto& w : warnings(p))
-      n += w.find("finest box") != std::string::npos;
-    return n;
-  };
+  auto box_warnings = [](const Params& p) { return warnings_holding(p, "finest box"); };
   Params p = boxes(7, 128.0, 32); // finest box r <= 2 M: inner part r <= 2 (1 - 12/32) = 1.25 M
   p.tmax = 1.0;
   CHECK(box_warnings(p) == 0);
@@ -374,13 +378,8 @@ TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the unt
 }
 
 TEST_CASE("wormhole data on boxes with N below 200 are warned about once the pulse can be back") {
-  auto burst_warnings = [](Params p) {
-    resolve_defaults(p);
-    validate(p);
-    int n = 0;
-    for (const auto& w : warnings(p))
-      n += w.find("comes back from where the boxes end") != std::string::npos;
-    return n;
+  auto burst_warnings = [](const Params& p) {
+    return warnings_holding(p, "comes back from where the boxes end");
   };
   Params p = boxes(8, 1000.0, 96);
   p.id = "wormhole";
