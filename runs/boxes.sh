@@ -206,10 +206,13 @@ bursts)
   # at rmax/2^l for rmax = 1000 and 1400 M: when do H_L2_R's bursts reach the window, against
   # t = (1/sqrt 2 + 1) R_b, the time for the collapse's pulse to reach a box's end R_b at the
   # lapse's speed sqrt 2 and come back at speed 1
-  for rmax in 1000 1400; do
+  # (and, as the reference with the outer boundary out of the way to 1000 M, the rmax 1000 boxes
+  # inside a ninth box to 2000 M)
+  for rl in 1000:8 1400:8 2000:9; do
+    rmax=${rl%:*}
     rm -rf "$out/bursts-rmax$rmax"
-    build/gbssn1d evolve --grid boxes --levels 8 --N 96 --rmax $rmax --tmax 1000 --dt-series 1 \
-      --dt-profiles 1000 --out "$out/bursts-rmax$rmax" >"$out/bursts-rmax$rmax.log" 2>&1 || true
+    build/gbssn1d evolve --grid boxes --levels "${rl#*:}" --N 96 --rmax $rmax --tmax 1000 \
+      --dt-series 1 --dt-profiles 1000 --out "$out/bursts-rmax$rmax" >"$out/bursts-rmax$rmax.log" 2>&1 || true
   done
   $py - "$out" <<'PY' | tee "$out/bursts.txt"
 import math, os, sys
@@ -217,13 +220,13 @@ import numpy as np
 sys.path.insert(0, 'plots')
 from gbssn1d_data import series
 out = sys.argv[1]
-for rmax in (1000, 1400):
+for rmax in (1000, 1400, 2000):
     s = series(os.path.join(out, f'bursts-rmax{rmax}', 'timeseries.dat'))
     t, H, dM = s['t'], s['H_L2_R'], np.abs(s['M_ah_err'])
     # local maxima of H (over +-40 M) above 1e-4 from 100 M on
     peaks = [i for i in range(len(t)) if t[i] >= 100 and H[i] > 1e-4
              and H[i] == H[max(0, i - 40):i + 41].max()]
-    ends = [rmax / 2 ** l for l in range(1, 8)]
+    ends = [rmax / 2 ** l for l in range(1, 9 if rmax == 2000 else 8)]
     print(f"rmax {rmax}: boxes end at " + ", ".join(f"{r:g}" for r in ends) + " M")
     print("  predicted returns (1/sqrt 2 + 1) R_b: "
           + ", ".join(f"{(1 / math.sqrt(2) + 1) * r:.0f}" for r in ends if (1 / math.sqrt(2) + 1) * r <= 1000))
