@@ -114,7 +114,10 @@ const std::vector<ParamSpec>& param_specs() {
       {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
        "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)"},
       {"driver-advection", &Params::driver_advection, "Numerics",
-       "stencil of beta_GD d_r Delta^r in B's driver: upwind-gd | upwind-full | centred"},
+       "stencil of beta_GD d_r Delta^r in B's driver: matched (Delta^r's own term minus beta_H "
+       "d_r Delta^r centred: stable at every spacing) | upwind-gd (published; with the horizon "
+       "shift it grows at the grid scale at a rate ~ |beta_H|/dr: a blow-up whose onset time "
+       "falls with the spacing) | upwind-full | centred"},
       {"delta-advection", &Params::delta_advection, "Numerics",
        "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
       {"ah-every", &Params::ah_every, "Horizon",

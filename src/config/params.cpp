@@ -66,6 +66,12 @@ const Choices<mesh::TimeInterpolation> time_interp_choices{
 const Choices<AdvectionStencil> stencil_choices{{"upwind-gd", AdvectionStencil::upwind_gd},
                                                 {"upwind-full", AdvectionStencil::upwind_full},
                                                 {"centred", AdvectionStencil::centred}};
+/// B's driver term also takes `matched` (gbssn/rhs.hpp).
+const Choices<AdvectionStencil> driver_stencil_choices{
+    {"matched", AdvectionStencil::matched},
+    {"upwind-gd", AdvectionStencil::upwind_gd},
+    {"upwind-full", AdvectionStencil::upwind_full},
+    {"centred", AdvectionStencil::centred}};
 
 /// The value `name` stands for; ParamError naming `flag` and the accepted names otherwise.
 template <class E>
@@ -420,7 +426,7 @@ void validate(const Params& p) {
   require_finite("--rah-ramp", p.rah_ramp);
   if (p.rah_ramp < 0.0)
     throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
-  (void)choice("--driver-advection", p.driver_advection, stencil_choices);
+  (void)choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   (void)choice("--delta-advection", p.delta_advection, stencil_choices);
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
@@ -616,7 +622,7 @@ RhsParams rhs_params(const Params& p) {
   resolve_automatic_profile(r.horizon_shift, p.M);
   if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
     r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
-  r.advection.driver = choice("--driver-advection", p.driver_advection, stencil_choices);
+  r.advection.driver = choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
   r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
   r.horizon_shift.t_min = p.ah_tmin;

@@ -82,8 +82,8 @@ struct Params {
   std::string rah_normal = "conformal"; ///< conformal | unit | smooth
   /// chi_s of the smooth normal sqrt((chi + chi_s)/a)
   double rah_chi_smooth = evolution_defaults().rhs.horizon_shift.chi_smooth;
-  std::string rah_hAH_file;                   ///< open loop: h_AH(t) from columns t, r_ah of a file
-  std::string driver_advection = "upwind-gd"; ///< beta_GD d_r Delta^r in B's driver
+  std::string rah_hAH_file;                 ///< open loop: h_AH(t) from columns t, r_ah of a file
+  std::string driver_advection = "matched"; ///< beta_GD d_r Delta^r in B's driver
   std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
   std::string ah_every = "substage";           ///< substage | step | n (every n steps)
   double ah_tmin =

@@ -12,11 +12,12 @@ namespace {
 /// An AdvectionStencil as 0/1 weights of the three stencils (branch-free, so that the point
 /// loop vectorises).
 struct StencilWeights {
-  double centred = 0.0, upwind_gd = 0.0, upwind_full = 0.0;
+  double centred = 0.0, upwind_gd = 0.0, upwind_full = 0.0, matched = 0.0;
   explicit StencilWeights(AdvectionStencil s)
       : centred(s == AdvectionStencil::centred ? 1.0 : 0.0),
         upwind_gd(s == AdvectionStencil::upwind_gd ? 1.0 : 0.0),
-        upwind_full(s == AdvectionStencil::upwind_full ? 1.0 : 0.0) {}
+        upwind_full(s == AdvectionStencil::upwind_full ? 1.0 : 0.0),
+        matched(s == AdvectionStencil::matched ? 1.0 : 0.0) {}
 };
 
 /// d_x Delta^r (times dx) by the weighted stencil of order p; `beta_gd`, `beta_full` give the
@@ -252,12 +253,17 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
       // The two beta d_r Delta^r terms, each with its stencil (AdvectionParams).
       const double* Delta = in[Var::Delta_r] + i;
       const double ko_Delta = k6[Var::Delta_r];
-      gd.adv_Delta_r =
-          gd.beta * d1_scale
-          * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
       p.adv[Var::Delta_r] =
           p.f[Var::beta] * d1_scale
           * delta_derivative<order>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
+      // B's driver term: with the `matched` stencil (E6)'s own term minus beta_H d_r Delta^r
+      // centred, so that B - Delta^r sees no lopsided stencil (AdvectionStencil::matched)
+      const double beta_H = p.f[Var::beta] - gd.beta;
+      gd.adv_Delta_r =
+          gd.beta * d1_scale
+              * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta)
+          + driver_w.matched
+                * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));
       Rhs rhs;
       if constexpr (with_horizon_shift) {
         using Variant = HorizonShiftParams::Variant;

@@ -27,12 +27,18 @@ enum class AdvectionStencil {
   upwind_gd,   ///< lopsided towards where beta_GD comes from
   upwind_full, ///< lopsided towards where the full shift beta_GD + beta_H comes from
   centred,     ///< centred, of the grid's order
+  /// B's driver only: Delta^r's own advection term of (E6) (its stencil, with the full shift)
+  /// minus beta_H d_r Delta^r centred. Then B - Delta^r carries no lopsided stencil, as with the
+  /// plain Gamma-driver, where the two terms are the same; a lopsided stencil of beta_GD in B's
+  /// driver alone grows at the grid scale at a rate ~ |beta_H| / dr (docs/hyperbolicity.py;
+  /// docs/horizon-shift-study.md, Sec. 12). Without the horizon shift it is upwind_full.
+  matched,
 };
 
 /// The differencing of the two beta d_r Delta^r terms: the one inside d_t Delta^r|beta_GD that
 /// drives B (G3)/(H2), and Delta^r's own advection in (E6).
 struct AdvectionParams {
-  AdvectionStencil driver = AdvectionStencil::upwind_gd;
+  AdvectionStencil driver = AdvectionStencil::matched;
   AdvectionStencil delta = AdvectionStencil::upwind_full;
 };
 

@@ -590,3 +590,38 @@ TEST_CASE("a tmax that lets the outer boundary reach the norm windows is warned 
   p.rmax = 120.0;
   CHECK(warnings(p).empty());
 }
+
+TEST_CASE("B's driver term under refinement: the published upwind-gd stencil blows up at a time "
+          "that falls with the spacing, the matched stencil (default) runs") {
+  // docs/horizon-shift-study.md Sec. 12: 1+log trumpet, sinh grid, stretch to 1.5 M. With a
+  // lopsided stencil of beta_GD in B's driver alone the grid-scale mode grows at a rate ~ 1/dr
+  // (docs/hyperbolicity.py): N = 3200 (M/640 at the puncture) is non-finite at t = 0.98 M.
+  auto stretched = [](int n, const std::string& stencil) {
+    Params p;
+    p.id = "1log-trumpet";
+    p.N = n;
+    p.rahA = 0.5;
+    p.rah0 = 1.5;
+    p.tmax = 1.5;
+    p.dt_series = 0.5;
+    p.driver_advection = stencil;
+    return p;
+  };
+  CHECK(Params{}.driver_advection == "matched");
+  double onset_fine = 0.0;
+  {
+    Simulation sim = simulation(stretched(3200, "upwind-gd"));
+    try {
+      sim.run(nullptr);
+      FAIL("the published stencil should have blown up by t = 1.5 M");
+    } catch (const NonFiniteError& e) {
+      onset_fine = e.t;
+      CHECK(e.r > 0.8); // outside the horizon, in the band the analysis predicts (0.6-2.9 M)
+      CHECK(e.r < 2.9);
+    }
+  }
+  CHECK(onset_fine > 0.5);
+  CHECK(onset_fine < 1.5);
+  Simulation sim = simulation(stretched(3200, "matched"));
+  CHECK_NOTHROW(sim.run(nullptr));
+}

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# The horizon shift under refinement (docs/horizon-shift-study.md, Sec. 12), every run made
+# afresh in out/refinement/<part>/ and summarised by plots/refinement_study.py.
+#   bash runs/refinement.sh onset      (~1 min on 2 cores) the published stencil of B's driver
+#       term (--driver-advection upwind-gd): when and where a stretch to 1.5M (1+log trumpet,
+#       A = 0.5) goes non-finite against N on the sinh grid (N = 800 ... 3200) and on uniform
+#       grids (rmax 200, M/16 ... M/64); the fitted slope of log t_onset against log N; the
+#       onset predicted by docs/hyperbolicity.py from the fields of the N = 800 (sinh) and M/16
+#       (uniform) runs, against the growth rate and radius measured in the sinh runs (the
+#       grid-scale part of B, its 6th difference, in the last profiles before the blow-up);
+#       the same runs with the default (matched) stencil.
+#   bash runs/refinement.sh converge   (~15 min on 2 cores) the defaults for h = 0.5, 0.6, 0.89,
+#       1.2, 1.5, 2M and the standard gauge on each data set: sinh N = 400 ... 3200 to 30M and
+#       N = 6400 to 12M; uniform M/16 ... M/128 (rmax 100M) to 20M. The RMS over time of
+#       H_L2_R, and its order between neighbouring resolutions.
+#   bash runs/refinement.sh            both
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+parts=("$@")
+[ ${#parts[@]} -eq 0 ] && parts=(onset converge)
+source runs/study-helpers.sh
+
+for part in "${parts[@]}"; do
+  out=out/refinement/$part
+  rm -rf "$out"
+  mkdir -p "$out"
+  case $part in
+  onset)
+    stretch=(--id 1log-trumpet --rahA 0.5 --rah0 1.5 --dt-series 0.05)
+    for st in upwind-gd matched; do
+      for n in 800 1200 1600 2400 3200; do
+        # fields every 0.1 M of the published stencil's runs: the measured growth rate
+        dtp=1000
+        [ "$st" = upwind-gd ] && dtp=0.1
+        evolve_run "sinh-$st-N$n" "${stretch[@]}" --N "$n" --tmax 6 --dt-profiles "$dtp" \
+          --driver-advection "$st"
+      done
+      for m in 16 32 64; do
+        evolve_run "uniform-$st-M$m" "${stretch[@]}" --grid uniform --rmax 200 --N $((200 * m)) \
+          --tmax 6 --dt-profiles 1000 --driver-advection "$st"
+      done
+    done
+    # the backgrounds of the predictions: fields every 0.25 M of runs that do not blow up
+    evolve_run background-sinh "${stretch[@]}" --N 800 --tmax 6 --dt-profiles 0.25 \
+      --driver-advection upwind-gd
+    evolve_run background-uniform "${stretch[@]}" --grid uniform --rmax 200 --N 3200 --tmax 6 \
+      --dt-profiles 0.25 --driver-advection upwind-gd
+    wait
+    {
+      echo "# sinh: N = 800 x 1/factor; uniform: M/16 x 1/factor"
+      echo "# sinh"
+      $py docs/hyperbolicity.py --profiles "$out/background-sinh/profiles.dat" \
+        --spacing-factor 0.6667 0.5 0.3333 0.25
+      echo "# uniform"
+      $py docs/hyperbolicity.py --profiles "$out/background-uniform/profiles.dat" \
+        --spacing-factor 0.5 0.25
+    } >"$out/predicted.txt"
+    $py plots/refinement_study.py onset "$out" | tee "$out/table.txt"
+    ;;
+  converge)
+    for id in 1log-trumpet maximal-trumpet wormhole; do
+      for h in 0 0.5 0.6 0.89 1.2 1.5 2; do
+        g=()
+        [ "$h" != 0 ] && g=(--rahA 0.5 --rah0 "$h")
+        for n in 400 800 1600 3200; do
+          evolve_run "$id-h$h-sinh-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 30 --dt-series 0.25 \
+            --dt-profiles 1000
+        done
+        for n in 400 800 1600 3200 6400; do
+          evolve_run "$id-h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
+            --dt-series 0.25 --dt-profiles 1000
+        done
+        for m in 16 32 64 128; do
+          uniform_run "$id-h$h-uniform-M$m" --id "$id" "${g[@]}" --rmax 100 --N $((100 * m)) \
+            --tmax 20 --dt-series 0.25
+        done
+      done
+    done
+    wait
+    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+    ;;
+  *)
+    echo "runs/refinement.sh: unknown part '$part' (onset, converge)" >&2
+    exit 2
+    ;;
+  esac
+done
