@@ -565,3 +565,37 @@ TEST_CASE("sweep: members that are the same run (rahA = 0, other rah0) are said 
   CHECK(log_text.str().find("--rah0 0.6 does nothing with --rahA 0") != std::string::npos);
   fs::remove_all(out);
 }
+
+TEST_CASE("sweep: a member whose constraints spike far above its neighbours' is flagged, alone") {
+  // B driven without the second derivatives of beta_H: H about 3000 times the others'
+  const fs::path out = scratch("sweep_spike");
+  std::string err;
+  REQUIRE(run("sweep -j 2 --out " + out.string()
+                  + " --sweep rah-variant=consistent,no-shift-second-derivatives,driver-full-shift"
+                    " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 10"
+                    " --dt-series 1 --rahA 0.5 --rah0 0.6",
+              &err)
+          == 0);
+  INFO(err);
+  CHECK(err.find("gbssn1d sweep: spike: rah-variant=no-shift-second-derivatives has max H_L2_R")
+        != std::string::npos);
+  CHECK(err.find("spike: rah-variant=consistent") == std::string::npos);
+  CHECK(err.find("spike: rah-variant=driver-full-shift") == std::string::npos);
+  const auto rows = summary_rows(out / "summary.dat");
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0].find("consistent ok - ") == 0);
+  CHECK(rows[1].find("no-shift-second-derivatives ok spike ") == 0);
+  CHECK(rows[1].find("along_rah-variant") != std::string::npos);
+  CHECK(rows[2].find("driver-full-shift ok - ") == 0);
+  // the flag column is read by name, as the plot scripts read it
+  const auto summary = gbssn1d::read_table(out / "summary.dat");
+  CHECK(summary.column("flag") == *summary.column("status") + 1);
+  // each member's warnings reach the terminal once, naming the members that gave them
+  CHECK(err.find("gbssn1d sweep: warning from 3 member(s) (rah-variant=consistent, "
+                 "rah-variant=no-shift-second-derivatives, rah-variant=driver-full-shift): "
+                 "--tmax 10 lets the outer boundary")
+        != std::string::npos);
+  const auto first = err.find("lets the outer boundary");
+  CHECK(err.find("lets the outer boundary", first + 1) == std::string::npos);
+  fs::remove_all(out);
+}
