@@ -397,8 +397,9 @@ int run_cli(int argc, char** argv) {
       "(H, M_r, G^r on the coordinate window; H, M_r on the areal window) at each pair of "
       "neighbouring members and each --fields difference at each triple, at the times where "
       "the coarse value is above round-off (1e-10 of its scale), the order of its RMS over "
-      "time must be at least --expect-order - 1.5, and at most 10% of those times may have a "
-      "lower order. The verdict is written into convergence.dat's header (a `verdict:` line "
+      "time must be at least --expect-order - 1.5, and for the norms so must the order of the "
+      "RMS over each tenth of those times (single times are reported, not judged; nor is "
+      "H_L2_int). The verdict is written into convergence.dat's header (a `verdict:` line "
       "and an `order` line per quantity and resolutions) and onto stderr, naming the "
       "quantity, the resolutions, the first time below and the lowest order.\nExit status: 0 "
       "completed and converges; 1 a failed write; 2 invalid input (nothing run); 3 a member "
@@ -436,7 +437,15 @@ int run_cli(int argc, char** argv) {
       "build summary.dat from the members in --out without running any; exit 0 if all "
       "finished, 3 if any blew up, failed or was invalid, 1 if some have not run yet");
   sweep_cmd->allow_extras();
-  sweep_cmd->footer("Every other flag is an evolve flag, common to all members.");
+  sweep_cmd->footer(
+      "Every other flag is an evolve flag, common to all members.\nOUT/summary.dat: a row per "
+      "member: its values, status (ok, invalid, blew-up, failed, interrupted, missing), flag "
+      "(spike: a finished member whose H_L2_R_max is more than 100 times the median of its "
+      "neighbours' along an axis, the axes of N excepted; named on stderr too), figures and a "
+      "reason. Each distinct `gbssn1d: warning:` of the members' logs is repeated on stderr "
+      "once, with the members that gave it.\nExit status: 0 every member finished (spikes "
+      "included); 1 a failed write, or with --collect members not run yet; 2 invalid input; 3 a "
+      "member blew up, failed or was invalid; 128 + n interrupted by signal n.");
 
   // resume: continue a run from its checkpoint
   std::string resume_dir;
