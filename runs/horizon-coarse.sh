@@ -35,7 +35,7 @@ family() { # family NAME "N list" [evolve flags]: one converge run, kept if alre
   fi
   rm -rf "${out:?}/$name"
   build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, see $out/$name.log)"
+    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
 }
 table() { $py plots/horizon_study.py table "$@"; }
 

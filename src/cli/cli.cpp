@@ -384,9 +384,28 @@ int run_cli(int argc, char** argv) {
                            "times of the Richardson-scaled H profiles (default: tmax)");
   add_number_option(*converge_cmd, "--order", converge_options.order,
                     "order used to scale the profiles");
+  double expect_order = 0.0;
+  CLI::Option* expect_order_opt = add_number_option(
+      *converge_cmd, "--expect-order", expect_order,
+      "the order the verdict expects (a study converges when its orders reach this minus 1.5); "
+      "recorded in convergence.dat");
+  expect_order_opt->default_str("--fd-order");
   converge_cmd->allow_extras();
-  converge_cmd->footer("Every other flag is an evolve flag (see `gbssn1d evolve --help`). Every "
-                       "member lives on the same map (uniform, or sinh fixed by --dr-inner).");
+  converge_cmd->footer(
+      "Every other flag is an evolve flag (see `gbssn1d evolve --help`). Every member lives on "
+      "the same map (uniform, or sinh fixed by --dr-inner).\nVerdict: for each constraint norm "
+      "(H, M_r, G^r on the coordinate window; H, M_r on the areal window) at each pair of "
+      "neighbouring members and each --fields difference at each triple, at the times where "
+      "the coarse value is above round-off (1e-10 of its scale), the order of its RMS over "
+      "time must be at least --expect-order - 1.5, and for the norms so must the order of the "
+      "RMS over each tenth of those times (single times are reported, not judged; nor is "
+      "H_L2_int). The verdict is written into convergence.dat's header (a `verdict:` line "
+      "and an `order` line per quantity and resolutions) and onto stderr, naming the "
+      "quantity, the resolutions, the first time below and the lowest order.\nExit status: 0 "
+      "completed and converges; 1 a failed write; 2 invalid input (nothing run); 3 a member "
+      "stopped (non-finite value, chi or alpha out of range, horizon finder failure); 4 "
+      "completed, but does not converge (the verdict); 128 + n interrupted by signal n (rerun "
+      "the command to resume).");
 
   // sweep: the Cartesian product of flag values
   SweepOptions sweep_options;
@@ -418,7 +437,15 @@ int run_cli(int argc, char** argv) {
       "build summary.dat from the members in --out without running any; exit 0 if all "
       "finished, 3 if any blew up, failed or was invalid, 1 if some have not run yet");
   sweep_cmd->allow_extras();
-  sweep_cmd->footer("Every other flag is an evolve flag, common to all members.");
+  sweep_cmd->footer(
+      "Every other flag is an evolve flag, common to all members.\nOUT/summary.dat: a row per "
+      "member: its values, status (ok, invalid, blew-up, failed, interrupted, missing), flag "
+      "(spike: a finished member whose H_L2_R_max is more than 100 times the median of its "
+      "neighbours' along an axis, the axes of N excepted; named on stderr too), figures and a "
+      "reason. Each distinct `gbssn1d: warning:` of the members' logs is repeated on stderr "
+      "once, with the members that gave it.\nExit status: 0 every member finished (spikes "
+      "included); 1 a failed write, or with --collect members not run yet; 2 invalid input; 3 a "
+      "member blew up, failed or was invalid; 128 + n interrupted by signal n.");
 
   // resume: continue a run from its checkpoint
   std::string resume_dir;
@@ -467,9 +494,16 @@ int run_cli(int argc, char** argv) {
     if (resume_cmd->parsed())
       return resume(resume_dir,
                     resume_tmax_opt->count() > 0 ? std::optional(resume_tmax) : std::nullopt);
-    if (converge_cmd->parsed())
+    if (converge_cmd->parsed()) {
+      if (expect_order_opt->count() > 0) {
+        if (!std::isfinite(expect_order) || expect_order <= 0.0 || expect_order > 30.0)
+          throw ParamError("--expect-order", fmt::format("{}", expect_order),
+                           "must be a number in (0, 30]");
+        converge_options.expect_order = expect_order;
+      }
       return converge(converge_options, N_list, factors, fields, scaled_times,
                       pass_through(*converge_cmd, {"N", "out", "force"}));
+    }
     if (sweep_cmd->parsed()) {
       if (!sweep_options.emit_tasks.empty() && sweep_jobs->count() > 0)
         throw ParamError("-j", std::to_string(sweep_options.jobs),

@@ -11,6 +11,7 @@
 #include "io/output.hpp"
 #include "study/orders.hpp"
 #include "study/parallel.hpp"
+#include "study/verdict.hpp"
 
 #include <fmt/format.h>
 
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <optional>
 
@@ -271,14 +273,20 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   // convergence.dat
   std::vector<std::string> cols{"t"};
   // the norms compared across members: column stem, order stem, value
+  // (judged: part of the verdict; scale: the quantity's size, 1/M^2 for H and M_r, 1/M for
+  // G^r, of which kRoundOffFloor is round-off)
   struct Norm {
     const char *column, *order;
     double SeriesRow::*value;
+    bool judged;
+    int length_power;
   };
-  const Norm norms[] = {
-      {"H_L2_ext", "H", &SeriesRow::H_L2_ext}, {"M_L2_ext", "M", &SeriesRow::M_L2_ext},
-      {"G_L2_ext", "G", &SeriesRow::G_L2_ext}, {"H_L2_R", "H_R", &SeriesRow::H_L2_R},
-      {"M_L2_R", "M_R", &SeriesRow::M_L2_R},   {"H_L2_int", "H_int", &SeriesRow::H_L2_int}};
+  const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
+                        {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2},
+                        {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1},
+                        {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2},
+                        {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2},
+                        {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2}};
   constexpr int n_norms = static_cast<int>(std::size(norms));
   for (const auto& c : norms)
     for (std::size_t k = 0; k < m; ++k)
@@ -290,8 +298,110 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     for (std::size_t k = 0; k + 2 < m; ++k)
       cols.push_back(
           fmt::format("p3_{}_{}_{}_{}", name, members[k].N, members[k + 1].N, members[k + 2].N));
+
+  // The verdict (study/verdict.hpp): every judged norm at each pair of neighbouring members and
+  // every field's differences at each triple, over the common times.
+  std::vector<OrderSeries> series;
+  for (const auto& c : norms) {
+    if (!c.judged)
+      continue;
+    for (std::size_t k = 0; k + 1 < m; ++k) {
+      OrderSeries s{c.column, {Nd(k), Nd(k + 1)}, {}, {}, {}};
+      for (std::size_t q = 0; q < n_times; ++q) {
+        s.coarse.push_back(records[k].rows[q].*c.value);
+        s.fine.push_back(records[k + 1].rows[q].*c.value);
+        s.floor.push_back(kRoundOffFloor * std::pow(base.M, c.length_power));
+      }
+      series.push_back(std::move(s));
+    }
+  }
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    for (std::size_t k = 0; k + 2 < m; ++k) {
+      OrderSeries s{options.fields[f], {Nd(k), Nd(k + 1), Nd(k + 2)}, {}, {}, {}, false};
+      const std::size_t off = f * radii.size();
+      const std::vector<double> zeros(off + radii.size(), 0.0);
+      for (std::size_t q = 0; q < n_times; ++q) {
+        const auto& a = records[k].field_samples[q];
+        const auto& b = records[k + 1].field_samples[q];
+        const auto& c = records[k + 2].field_samples[q];
+        s.coarse.push_back(rms_difference(a, b, off, radii.size()));
+        s.fine.push_back(rms_difference(b, c, off, radii.size()));
+        // the field's scale: the RMS of its coarsest member's values at the radii; at t = 0
+        // the members start from the same data and differ by the 6th-order interpolation
+        // onto the coarsest radii alone, which the three-level formula does not describe: not
+        // judged
+        s.floor.push_back(records.front().rows[q].t == 0.0
+                              ? std::numeric_limits<double>::infinity()
+                              : kRoundOffFloor * rms_difference(a, zeros, off, radii.size()));
+      }
+      series.push_back(std::move(s));
+    }
+  const Verdict verdict =
+      judge_convergence(series, options.expect_order.value_or(static_cast<double>(base.fd_order)));
+  const auto time_at = [&](std::size_t q) { return time_text(records.front().rows[q].t); };
+  const OrderJudgement* failure = verdict.failure();
+  std::string judged; // the rule's finding over the common times
+  // where one item's orders fall below the threshold: the first time, the lowest order
+  const auto dips = [&](const OrderJudgement& j) {
+    return j.below == 0
+               ? fmt::format("lowest order {} at t = {}", order_text(j.worst), time_at(j.worst_at))
+               : fmt::format("order {} at t = {} is the first below {}, lowest {} at "
+                             "t = {}",
+                             order_text(j.first_order), time_at(j.first_below),
+                             order_text(verdict.threshold), order_text(j.worst),
+                             time_at(j.worst_at));
+  };
+  const auto rms_text = [&](const OrderJudgement& j) {
+    std::string text = fmt::format("order of its RMS over time {}", order_text(j.p_rms));
+    if (j.windows_below > 0)
+      text +=
+          fmt::format(", over t = {} ... {} {} ({} of {} windows of the run below {})",
+                      time_at(j.window_begin), time_at(j.window_end), order_text(j.window_order),
+                      j.windows_below, j.windows, order_text(verdict.threshold));
+    return text;
+  };
+  if (failure) {
+    std::size_t more = 0;
+    for (const auto& i : verdict.items)
+      more += i.converges ? 0 : 1;
+    judged = fmt::format("does not converge: {} at {}: {}; {} (expected order {}){}",
+                         failure->quantity, resolutions_text(failure->N), dips(*failure),
+                         rms_text(*failure), verdict.design,
+                         more > 1 ? fmt::format(" (and {} more quantity/resolution sets; see the "
+                                                "order lines)",
+                                                more - 1)
+                                  : std::string());
+  } else if (const OrderJudgement* w = verdict.weakest()) {
+    judged = fmt::format("converges: every monitored order of an RMS over time (norms: also over "
+                         "each tenth of the run) at least {} (expected order {}); the lowest over "
+                         "time is {} ({} at {})",
+                         order_text(verdict.threshold), verdict.design, order_text(w->p_rms),
+                         w->quantity, resolutions_text(w->N));
+  } else {
+    judged = "converges at round-off: no monitored difference is above the round-off floor";
+  }
+  const std::string verdict_text =
+      signal != 0       ? "not judged: the study was interrupted"
+      : !failed.empty() ? fmt::format("does not converge: {} (over the common times up to t = "
+                                      "{}: {})",
+                                      failed, t_common, judged)
+                        : judged;
+  std::string order_lines = fmt::format(
+      "verdict: {}\nverdict rule: for each norm at each pair of neighbouring members, and each "
+      "field's differences at each triple, at the times where the coarse value is above "
+      "{:g} of its scale (1/M^2 for H and M_r, 1/M for G^r, the field's RMS for fields), the "
+      "order of the RMS over those times (for norms also of the RMS over each tenth of them) "
+      "must be at least {} (expected order {} - {}); H_L2_int (inside the horizon) is not judged, "
+      "nor are "
+      "field differences at t = 0 (the same data, interpolated)\n",
+      verdict_text, kRoundOffFloor, order_text(verdict.threshold), verdict.design, kOrderTolerance);
+  for (const auto& j : verdict.items)
+    order_lines += fmt::format("order {} {}: {}; {} of {} judged times below {}{}: {}\n",
+                               j.quantity, resolutions_text(j.N), rms_text(j), j.below, j.judged,
+                               order_text(verdict.threshold), j.judged > 0 ? ", " + dips(j) : "",
+                               j.converges ? "converges" : "does not converge");
   const std::string header =
-      base_config + status_line
+      base_config + status_line + order_lines
       + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the norms (X_L2_ext: "
                     "coordinate window, X_L2_R: areal window, H_L2_int: near the puncture); "
                     "p3_f_a_b_c solves |f_a - f_b|/|f_b - f_c| = (a^-p - b^-p)/(b^-p - c^-p) "
@@ -371,12 +481,19 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     return 128 + signal;
   }
   if (!failed.empty()) {
-    say("gbssn1d converge: N = {} {}; see {}/convergence.dat\n", fmt::join(options.N, ", "), ending,
-        options.out);
+    say("gbssn1d converge: N = {} {}; does not converge; see {}/convergence.dat\n",
+        fmt::join(options.N, ", "), ending, options.out);
     return 3;
   }
-  say("gbssn1d converge: N = {} done; norms and orders in {}/convergence.dat\n",
-      fmt::join(options.N, ", "), options.out);
+  if (failure) {
+    say("gbssn1d converge: N = {} completed at t = {}, but {}; norms, orders and the verdict in "
+        "{}/convergence.dat\n",
+        fmt::join(options.N, ", "), t_common, judged, options.out);
+    return 4;
+  }
+  say("gbssn1d converge: N = {} completed at t = {}; {}; norms, orders and the verdict in "
+      "{}/convergence.dat\n",
+      fmt::join(options.N, ", "), t_common, judged, options.out);
   return 0;
 }
 

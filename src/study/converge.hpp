@@ -5,6 +5,7 @@
 
 #include "config/params.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@ struct ConvergeOptions {
   std::vector<std::string> fields{"alpha", "chi", "K"}; ///< fields whose differences are compared
   std::vector<double> scaled_times; ///< times of the Richardson-scaled H profiles (default tmax)
   double order = 4.0;               ///< order assumed for the scaled profiles
+  /// The order the verdict expects (study/verdict.hpp); unset: the members' --fd-order.
+  std::optional<double> expect_order;
 };
 
 /// The members' parameters: `base` at each N (the grid's map does not depend on N, so every
@@ -25,7 +28,10 @@ struct ConvergeOptions {
 std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options);
 
 /// Runs the members and writes DIR/N<n>/ (each member's usual output), DIR/convergence.dat,
-/// DIR/scaled_H.dat and DIR/config.toml. Returns 0, or 3 if a member went non-finite.
+/// DIR/scaled_H.dat and DIR/config.toml, and judges the study (study/verdict.hpp): the verdict
+/// goes into convergence.dat's header and onto stderr. Returns 0 (completed, converges), 3 (a
+/// member stopped: non-finite, out of range), 4 (completed, but does not converge at the
+/// expected order), or 128 + n (interrupted by signal n).
 int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config);
 

@@ -397,6 +397,93 @@ MemberOutcome run_member(const fs::path& dir, const SweepMember& m, const std::s
   return o;
 }
 
+/// A member's H_L2_R_max far above its neighbours'.
+struct Spike {
+  std::size_t member = 0;
+  std::string axis; ///< the axis' flags, e.g. "rahA" or "rahA,rah0"
+  double median = 0.0, factor = 0.0;
+  std::size_t neighbours = 0;
+};
+
+/// The finished members whose H_L2_R_max exceeds kSpikeFactor times the median of their
+/// neighbours along some axis: the other finished members that differ from them in that
+/// axis' values only. Axes that vary N are skipped (there H falls with N by design). A member
+/// is reported once, along the axis with the largest factor.
+std::vector<Spike> find_spikes(const std::vector<SweepAxis>& axes,
+                               const std::vector<std::string>& resolution_axis,
+                               const std::vector<SweepMember>& members,
+                               const std::vector<std::string>& statuses,
+                               const std::vector<MemberResult>& results) {
+  auto usable = [&](std::size_t k) {
+    return statuses[k] == "ok" && std::isfinite(results[k].H_R_max) && results[k].H_R_max > 0.0;
+  };
+  std::map<std::size_t, Spike> found;
+  for (const auto& axis : axes) {
+    if (axis.flags == resolution_axis)
+      continue;
+    // the line of each member along this axis: the members with its values on every other axis
+    std::map<std::string, std::vector<std::size_t>> lines;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      std::string key;
+      for (const auto& [flag, value] : members[k].values)
+        if (std::find(axis.flags.begin(), axis.flags.end(), flag) == axis.flags.end())
+          key += flag + "=" + value + ";";
+      if (usable(k))
+        lines[key].push_back(k);
+    }
+    for (const auto& [key, ks] : lines)
+      for (std::size_t k : ks) {
+        std::vector<double> others;
+        for (std::size_t j : ks)
+          if (j != k)
+            others.push_back(results[j].H_R_max);
+        if (others.empty())
+          continue;
+        std::sort(others.begin(), others.end());
+        const std::size_t n = others.size();
+        const double median =
+            n % 2 == 1 ? others[n / 2] : std::sqrt(others[n / 2 - 1] * others[n / 2]);
+        const double factor = results[k].H_R_max / median;
+        if (factor > kSpikeFactor && (!found.count(k) || factor > found[k].factor))
+          found[k] = Spike{k, fmt::format("{}", fmt::join(axis.flags, ",")), median, factor, n};
+      }
+  }
+  std::vector<Spike> out;
+  for (const auto& [k, sp] : found)
+    out.push_back(sp);
+  return out;
+}
+
+/// Each distinct `gbssn1d: warning:` line of the members' logs, once, with the members that
+/// gave it.
+void report_warnings(const fs::path& dir, const std::vector<SweepMember>& members) {
+  const std::string prefix = "gbssn1d: warning: ";
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<std::string>> who;
+  for (const auto& m : members) {
+    std::ifstream log(dir / "logs" / (m.name + ".log"));
+    std::set<std::string> seen; // a member counts once per warning
+    for (std::string line; std::getline(log, line);) {
+      if (line.rfind(prefix, 0) != 0)
+        continue;
+      const std::string text = line.substr(prefix.size());
+      if (!seen.insert(text).second)
+        continue;
+      auto& list = who[text];
+      if (list.empty())
+        order.push_back(text);
+      list.push_back(m.name);
+    }
+  }
+  for (const auto& text : order) {
+    const auto& list = who[text];
+    const std::size_t shown = std::min<std::size_t>(list.size(), 6);
+    say("gbssn1d sweep: warning from {} member(s) ({}{}): {}\n", list.size(),
+        fmt::join(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
+        list.size() > shown ? fmt::format(" and {} more", list.size() - shown) : "", text);
+  }
+}
+
 /// DIR/summary.dat from the members' status files and outputs (nothing is run); members
 /// without a status are `invalid` if their flags do not validate, `missing` otherwise. Returns
 /// each member's status.
@@ -411,7 +498,7 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
       resolution_axis = axis.flags;
   }
   const bool with_resolutions = !resolution_axis.empty();
-  for (const char* c : {"status", "t_end", "r_ah_final", "M_ah_drift", "M_ah_err_max",
+  for (const char* c : {"status", "flag", "t_end", "r_ah_final", "M_ah_drift", "M_ah_err_max",
                         "H_L2_ext_max", "H_L2_R_max", "wall_s"})
     cols.emplace_back(c);
   if (with_resolutions)
@@ -457,6 +544,12 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
           orders[k] = order_fitted(N, E);
     }
   }
+  const std::vector<Spike> spikes = find_spikes(axes, resolution_axis, members, statuses, results);
+  for (const auto& sp : spikes)
+    reasons[sp.member] =
+        token(fmt::format("spike: H_L2_R_max {:.2e} is {:.0f} times the median "
+                          "{:.2e} of its neighbours along {}",
+                          results[sp.member].H_R_max, sp.factor, sp.median, sp.axis));
   std::string same;
   for (const auto& g : same_runs(members))
     same += "same run (rahA = 0: the horizon-shift flags do nothing): " + g + "\n";
@@ -466,23 +559,35 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
           + fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
                         "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
                         "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
-                        "order_H_final fitted over N for members that differ only in N\n",
-                        members.size(), fmt::join(options.sweeps, " ")),
+                        "order_H_final fitted over N for members that differ only in N\n"
+                        "flag: spike for a finished member whose H_L2_R_max is more than {:g} "
+                        "times the median of its neighbours along an axis (the finished "
+                        "members that differ from it in that axis' values only; not along an "
+                        "axis of N), '-' otherwise; the reason says along which axis\n",
+                        members.size(), fmt::join(options.sweeps, " "), kSpikeFactor),
       cols);
   for (std::size_t k = 0; k < members.size(); ++k) {
     std::string line;
     for (const auto& [flag, value] : members[k].values)
       line += value + " ";
     const MemberResult& res = results[k];
-    line +=
-        fmt::format("{} {:.6g} {:.10e} {:.6e} {:.6e} {:.6e} {:.6e} {:.3f}", statuses[k], res.t_end,
-                    res.r_ah, res.M_ah_drift, res.M_ah_err, res.H_max, res.H_R_max, walls[k]);
+    const bool spiked =
+        std::any_of(spikes.begin(), spikes.end(), [&](const Spike& sp) { return sp.member == k; });
+    line += fmt::format("{} {} {:.6g} {:.10e} {:.6e} {:.6e} {:.6e} {:.6e} {:.3f}", statuses[k],
+                        spiked ? "spike" : "-", res.t_end, res.r_ah, res.M_ah_drift, res.M_ah_err,
+                        res.H_max, res.H_R_max, walls[k]);
     if (with_resolutions)
       line += fmt::format(" {:.4f}", orders[k]);
     line += " " + reasons[k] + "\n";
     summary.write(line.data(), line.size());
   }
   summary.flush(); // checked: a failed write throws OutputError
+  for (const auto& sp : spikes)
+    say("gbssn1d sweep: spike: {} has max H_L2_R = {:.2e}, {:.0f} times the median {:.2e} of its "
+        "{} neighbour(s) along {}; flagged in summary.dat\n",
+        members[sp.member].name, results[sp.member].H_R_max, sp.factor, sp.median, sp.neighbours,
+        sp.axis);
+  report_warnings(dir, members);
   return statuses;
 }
 

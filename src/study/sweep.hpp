@@ -31,6 +31,10 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
                                        const std::vector<std::string>& evolve_args,
                                        const std::string& out);
 
+/// A finished member whose H_L2_R_max exceeds this many times the median of its neighbours
+/// along an axis is flagged `spike` in summary.dat (and named on stderr).
+inline constexpr double kSpikeFactor = 100.0;
+
 struct SweepOptions {
   std::vector<std::string> sweeps; ///< the --sweep arguments
   int jobs = 1;

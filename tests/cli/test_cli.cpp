@@ -428,7 +428,8 @@ TEST_CASE("numbers are decimal on every path: 032 is 32 in flags, config files, 
   CHECK(header_N(sweep / "N=060") == 60);
   CHECK(header_N(sweep / "N=0100") == 100);
   const fs::path conv = scratch("octal_converge");
-  REQUIRE(run("converge --N 032,048,064 --tmax 0 --out " + conv.string()).status == 0);
+  const int status = run("converge --N 032,048,064 --tmax 0 --out " + conv.string()).status;
+  REQUIRE((status == 0 || status == 4)); // completed (converging or not, at M/1.6)
   CHECK(header_N(conv / "N32") == 32);
   CHECK(header_N(conv / "N64") == 64);
   for (const auto& d : {flag, cfg, file, sweep, conv})
@@ -581,10 +582,13 @@ TEST_CASE("converge: samples saved with a member's checkpoint are reused only fo
           "and radii (a rerun with another coarsest member gives a fresh run's numbers)") {
   const fs::path a = scratch("converge_a"), fresh = scratch("converge_fresh");
   const std::string flags = " --grid uniform --rmax 20 --tmax 3 --checkpoint-every 1 ";
-  REQUIRE(run("converge --N 32,48,64" + flags + "--out " + a.string()).status == 0);
+  // (grids this coarse need not converge: 4, completed but not converging, is a completed run)
+  const int first = run("converge --N 32,48,64" + flags + "--out " + a.string()).status;
+  REQUIRE((first == 0 || first == 4));
   // members N48 and N64 have checkpoints and samples at the radii of N32's grid
-  REQUIRE(run("converge --N 40,48,64 --force" + flags + "--out " + a.string()).status == 0);
-  REQUIRE(run("converge --N 40,48,64" + flags + "--out " + fresh.string()).status == 0);
+  const int rerun = run("converge --N 40,48,64 --force" + flags + "--out " + a.string()).status;
+  REQUIRE((rerun == 0 || rerun == 4));
+  REQUIRE(run("converge --N 40,48,64" + flags + "--out " + fresh.string()).status == rerun);
   CHECK(without_out(a / "convergence.dat") == without_out(fresh / "convergence.dat"));
   fs::remove_all(a);
   fs::remove_all(fresh);

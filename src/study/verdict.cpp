@@ -1,0 +1,126 @@
+#include "study/verdict.hpp"
+
+#include "study/orders.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace gbssn1d {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+} // namespace
+
+double order_at(const std::vector<double>& N, double coarse, double fine) {
+  if (!std::isfinite(fine))
+    return -inf; // the finer member's value is not a number: nothing converges
+  if (fine == 0.0)
+    return coarse > 0.0 ? inf : std::numeric_limits<double>::quiet_NaN();
+  if (N.size() == 2)
+    return order_two_level(coarse, fine, N[0], N[1]);
+  const double p = order_three_level(coarse, fine, N[0], N[1], N[2]);
+  if (!std::isnan(p))
+    return p;
+  // no order in (0, 30]: the ratio of the differences lies beyond one end of the bracket
+  return coarse / fine >= three_level_ratio(30.0, N[0], N[1], N[2]) ? inf : -inf;
+}
+
+Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_order) {
+  Verdict v;
+  v.design = design_order;
+  v.threshold = design_order - kOrderTolerance;
+  for (const auto& s : series) {
+    OrderJudgement j;
+    j.quantity = s.quantity;
+    j.N = s.N;
+    j.worst = inf;
+    std::vector<std::size_t> times; // the judged times
+    for (std::size_t t = 0; t < s.coarse.size(); ++t) {
+      const double c = s.coarse[t], f = s.fine[t];
+      if (!std::isfinite(c) || !(c > s.floor[t]))
+        continue; // round-off (or no value): not judged
+      times.push_back(t);
+      const double p = order_at(s.N, c, f);
+      if (p < j.worst) {
+        j.worst = p;
+        j.worst_at = t;
+      }
+      if (p < v.threshold && j.below++ == 0) {
+        j.first_below = t;
+        j.first_order = p;
+      }
+    }
+    j.judged = times.size();
+    // the order of the RMS over the judged times in [begin, end)
+    auto rms_order = [&](std::size_t begin, std::size_t end) {
+      double sum_coarse = 0.0, sum_fine = 0.0;
+      for (std::size_t q = begin; q < end; ++q) {
+        sum_coarse += s.coarse[times[q]] * s.coarse[times[q]];
+        sum_fine += s.fine[times[q]] * s.fine[times[q]];
+      }
+      const double n = static_cast<double>(end - begin);
+      return order_at(s.N, std::sqrt(sum_coarse / n), std::sqrt(sum_fine / n));
+    };
+    if (j.judged == 0) {
+      j.p_rms = std::numeric_limits<double>::quiet_NaN();
+      j.worst = std::numeric_limits<double>::quiet_NaN();
+    } else {
+      j.p_rms = rms_order(0, j.judged);
+      // consecutive windows of (about) a tenth of the judged times each
+      j.windows = s.windowed ? std::min<std::size_t>(kWindows, j.judged) : 0;
+      for (std::size_t w = 0; w < j.windows; ++w) {
+        const std::size_t begin = w * j.judged / j.windows, end = (w + 1) * j.judged / j.windows;
+        const double p = rms_order(begin, end);
+        if (p < v.threshold && j.windows_below++ == 0) {
+          j.window_begin = times[begin];
+          j.window_end = times[end - 1];
+          j.window_order = p;
+        }
+      }
+      j.converges = !(j.p_rms < v.threshold) && j.windows_below == 0;
+    }
+    v.items.push_back(std::move(j));
+  }
+  return v;
+}
+
+bool Verdict::converges() const {
+  return failure() == nullptr;
+}
+
+const OrderJudgement* Verdict::failure() const {
+  for (const auto& j : items)
+    if (!j.converges)
+      return &j;
+  return nullptr;
+}
+
+const OrderJudgement* Verdict::weakest() const {
+  const OrderJudgement* w = nullptr;
+  for (const auto& j : items)
+    if (j.converges && j.judged > 0 && (!w || j.p_rms < w->p_rms))
+      w = &j;
+  return w;
+}
+
+std::string resolutions_text(const std::vector<double>& N) {
+  if (N.size() == 2)
+    return fmt::format("N = {} and {}", N[0], N[1]);
+  return fmt::format("N = {}, {} and {}", N[0], N[1], N[2]);
+}
+
+std::string order_text(double p) {
+  if (std::isnan(p))
+    return "-";
+  if (p == -inf)
+    return "< 0";
+  if (p == inf)
+    return "inf";
+  return fmt::format("{:.2f}", p);
+}
+
+} // namespace gbssn1d
