@@ -58,7 +58,7 @@ thesis)
   # 7 boxes to 128 M with 48, 64 and 96 points across each box (N = 24, 32, 48 cells on r >= 0):
   # finest spacing M/12, M/16, M/24
   boxes=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 10)
-  published=(--rah-profile rational --rah-width 1 --rah-normal unit)
+  published=(--rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd)
   for id in 1log-trumpet maximal-trumpet; do
     family "thesis-$id-standard" 24,32,48 "${boxes[@]}" --id $id
     family "thesis-$id-stretch" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89

@@ -21,7 +21,8 @@ mkdir -p "$out"
 common=(--rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
 grid=(--grid uniform) # the cost stage sets a sinh grid for its sinh families
 # the published method: f = r/(1+r^2), the unit normal sqrt(chi/a)
-published=(--rah-profile rational --rah-width 1 --rah-normal unit)
+pub_profile=(--rah-profile rational --rah-width 1)
+published=("${pub_profile[@]}" --rah-normal unit --driver-advection upwind-gd)
 
 family() { # family NAME "N list" [evolve flags]: one converge run, kept if already complete
   local name=$1 Ns=$2
@@ -70,26 +71,30 @@ mechanism)
   family a-open-loop $coarse "${s[@]}" "${published[@]}" \
     --rah-hAH-file "$out/fine-stretch-published/horizon.dat"
   # (b) the normal: kinked at the puncture (unit) or smooth
-  family b-smooth-0.01 $coarse "${s[@]}" "${published[@]}" --rah-normal smooth --rah-chi-smooth 0.01
-  family b-smooth-0.1 $coarse "${s[@]}" "${published[@]}" --rah-normal smooth --rah-chi-smooth 0.1
-  family b-smooth-0.3 $coarse "${s[@]}" "${published[@]}" --rah-normal smooth --rah-chi-smooth 0.3
-  family b-conformal $coarse "${s[@]}" "${published[@]}" --rah-normal conformal
-  family b-conformal-A0.2 $coarse --id $id --rahA 0.2 --rah0 0.89 "${published[@]}" --rah-normal conformal
+  family b-smooth-0.01 $coarse "${s[@]}" "${pub_profile[@]}" --driver-advection upwind-gd --rah-normal smooth --rah-chi-smooth 0.01
+  family b-smooth-0.1 $coarse "${s[@]}" "${pub_profile[@]}" --driver-advection upwind-gd --rah-normal smooth --rah-chi-smooth 0.1
+  family b-smooth-0.3 $coarse "${s[@]}" "${pub_profile[@]}" --driver-advection upwind-gd --rah-normal smooth --rah-chi-smooth 0.3
+  family b-conformal $coarse "${s[@]}" "${pub_profile[@]}" --driver-advection upwind-gd --rah-normal conformal
+  family b-conformal-A0.2 $coarse --id $id --rahA 0.2 --rah0 0.89 "${pub_profile[@]}" --driver-advection upwind-gd --rah-normal conformal
   # (c) profiles and widths (conformal normal)
   for pw in rational:2 rational:3 rational3:1 gauss:1 gauss:2 gauss3:1; do
     family "c-${pw%%:*}-w${pw#*:}" $coarse "${s[@]}" --rah-normal conformal \
       --rah-profile "${pw%%:*}" --rah-width "${pw#*:}"
   done
   # (d) the advection stencils, published form and h = 2 (where the published form blows up)
-  family d-driver-centred $coarse "${s[@]}" "${published[@]}" --driver-advection centred
-  family d-driver-upwind-full $coarse "${s[@]}" "${published[@]}" --driver-advection upwind-full
-  family d-delta-centred $coarse "${s[@]}" "${published[@]}" --delta-advection centred
-  family d-conformal-driver-centred $coarse "${s[@]}" "${published[@]}" --rah-normal conformal \
+  family d-driver-centred $coarse "${s[@]}" "${pub_profile[@]}" --rah-normal unit \
     --driver-advection centred
-  for adv in upwind-gd upwind-full centred; do
-    family "d-h2-$adv" $coarse --id $id --rahA 0.5 --rah0 2 "${published[@]}" --driver-advection $adv
+  family d-driver-upwind-full $coarse "${s[@]}" "${pub_profile[@]}" --rah-normal unit \
+    --driver-advection upwind-full
+  family d-delta-centred $coarse "${s[@]}" "${published[@]}" --delta-advection centred
+  family d-conformal-driver-centred $coarse "${s[@]}" "${pub_profile[@]}" --rah-normal conformal \
+    --driver-advection centred
+  for adv in upwind-gd upwind-full centred matched; do
+    family "d-h2-$adv" $coarse --id $id --rahA 0.5 --rah0 2 "${pub_profile[@]}" --rah-normal unit \
+      --driver-advection $adv
   done
-  family d-h2-conformal $coarse --id $id --rahA 0.5 --rah0 2 "${published[@]}" --rah-normal conformal
+  family d-h2-conformal $coarse --id $id --rahA 0.5 --rah0 2 "${pub_profile[@]}" \
+    --rah-normal conformal --driver-advection upwind-gd
   # (e) dissipation and time step (published form)
   family e-ko0 $coarse "${s[@]}" "${published[@]}" --ko-sigma 0
   family e-ko0.3 $coarse "${s[@]}" "${published[@]}" --ko-sigma 0.3

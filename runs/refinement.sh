@@ -10,16 +10,23 @@
 #       grid-scale part of B, its 6th difference, in the last profiles before the blow-up);
 #       the same runs with the default (matched) stencil.
 #   bash runs/refinement.sh converge   (~15 min on 2 cores) the defaults for h = 0.5, 0.6, 0.89,
-#       1.2, 1.5, 2M and the standard gauge on each data set: sinh N = 400 ... 3200 to 30M and
-#       N = 6400 to 12M; uniform M/16 ... M/128 (rmax 100M) to 20M. The RMS over time of
-#       H_L2_R, and its order between neighbouring resolutions.
-#   bash runs/refinement.sh            both
+#       1.2, 1.5, 2M and the standard gauge on each data set, sinh N = 400 ... 3200 to 30M and
+#       N = 400 ... 6400 to 12M: the RMS over time of H_L2_R and its order between neighbouring
+#       resolutions.
+#   bash runs/refinement.sh uniform    (~10 min on 2 cores) the same on uniform grids, M/16 ...
+#       M/128 (rmax 100M) to 20M.
+#   bash runs/refinement.sh published  (~5 min on 2 cores) the study's answer revisited: the
+#       published form (unit normal, rational profile w = 1, upwind-gd driver stencil) on uniform
+#       grids (rmax 200) at M/8, M/16, M/32, M/64 to 40M, 1+log trumpet stretched to 0.89M and
+#       1.5M (A = 0.5), with each suspect switched off: the normal's kink (conformal normal),
+#       the driver stencil (matched), both. The RMS over time of H_L2_R and its orders.
+#   bash runs/refinement.sh            onset, converge, uniform and published
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
 parts=("$@")
-[ ${#parts[@]} -eq 0 ] && parts=(onset converge)
+[ ${#parts[@]} -eq 0 ] && parts=(onset converge uniform published)
 source runs/study-helpers.sh
 
 for part in "${parts[@]}"; do
@@ -72,9 +79,34 @@ for part in "${parts[@]}"; do
           evolve_run "$id-h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
             --dt-series 0.25 --dt-profiles 1000
         done
+      done
+    done
+    wait
+    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+    ;;
+  uniform)
+    for id in 1log-trumpet maximal-trumpet wormhole; do
+      for h in 0 0.5 0.6 0.89 1.2 1.5 2; do
+        g=()
+        [ "$h" != 0 ] && g=(--rahA 0.5 --rah0 "$h")
         for m in 16 32 64 128; do
-          uniform_run "$id-h$h-uniform-M$m" --id "$id" "${g[@]}" --rmax 100 --N $((100 * m)) \
-            --tmax 20 --dt-series 0.25
+          evolve_run "$id-h$h-uniform-M$m" --id "$id" "${g[@]}" --grid uniform --rmax 100 \
+            --N $((100 * m)) --tmax 20 --dt-series 0.25 --dt-profiles 1000
+        done
+      done
+    done
+    wait
+    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+    ;;
+  published)
+    for h in 0.89 1.5; do
+      for v in published:unit:upwind-gd no-kink:conformal:upwind-gd matched:unit:matched \
+        neither:conformal:matched; do
+        IFS=: read -r name normal stencil <<<"$v"
+        for m in 8 16 32 64; do
+          uniform_run "h$h-$name-M$m" --id 1log-trumpet --rahA 0.5 --rah0 "$h" --rmax 200 \
+            --N $((200 * m)) --tmax 40 --rah-profile rational --rah-width 1 --rah-normal "$normal" \
+            --driver-advection "$stencil"
         done
       done
     done
@@ -82,7 +114,7 @@ for part in "${parts[@]}"; do
     $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
     ;;
   *)
-    echo "runs/refinement.sh: unknown part '$part' (onset, converge)" >&2
+    echo "runs/refinement.sh: unknown part '$part' (onset, converge, uniform, published)" >&2
     exit 2
     ;;
   esac
