@@ -44,10 +44,15 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
 double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
                      double Rmax) {
   const std::size_t n = values.size();
-  // the outer sheet: outside the smallest areal radius (a wormhole's throat; the innermost
-  // point of a trumpet), so that the other sheet's points with the same R do not count
-  const std::size_t throat =
-      static_cast<std::size_t>(std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());
+  // the outer sheet: outside the outermost minimum of the areal radius (a wormhole's throat;
+  // the innermost point of a trumpet), found walking in from the outer boundary, so that the
+  // other sheet's points with the same R do not count. Not the global minimum: where chi sits
+  // on its floor in the innermost cells of a collapsing wormhole, R = r sqrt(b / chi) dips
+  // below the throat's there at spacings finer than about M/90, and the points between that
+  // dip and the throat (on the other sheet, near the puncture) would count.
+  std::size_t throat = n > 0 ? n - 1 : 0;
+  while (throat > 0 && R_areal[throat - 1] <= R_areal[throat])
+    --throat;
   double sum = 0.0, width = 0.0;
   for (std::size_t k = throat; k < n; ++k) {
     if (!(R_areal[k] >= Rmin && R_areal[k] <= Rmax))

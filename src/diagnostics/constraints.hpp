@@ -21,8 +21,8 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid);
 /// Returns 0 when no point lies in the range.
 double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax);
 
-/// L2 norm over the interior points of the outer sheet (outside the smallest areal radius:
-/// a wormhole's throat) whose areal radius lies in [Rmin, Rmax], weighted by the areal width
+/// L2 norm over the interior points of the outer sheet (outside the outermost minimum of the
+/// areal radius: a wormhole's throat) whose areal radius lies in [Rmin, Rmax], weighted by the areal width
 /// |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the same place in
 /// every gauge, so norms of runs with different shifts compare. Returns 0 when no point lies in
 /// the window.

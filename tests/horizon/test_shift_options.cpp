@@ -399,6 +399,11 @@ TEST_CASE("areal-radius norms: weights |dR|, select by R, and the interior windo
   std::vector<double> Rw{9.0, 6.0, 4.0, 3.0, 2.0, 3.0, 4.0, 6.0, 9.0};
   std::vector<double> fw{50.0, 50.0, 50.0, 50.0, 1.0, 1.0, 1.0, 1.0, 1.0};
   CHECK(l2_norm_areal(fw, Rw, 2.5, 12.0) == doctest::Approx(1.0));
+  // ... also when the innermost cell's R dips below the throat's (chi on its floor near a
+  // collapsing wormhole's puncture): the outermost minimum is the throat, not the global one
+  std::vector<double> Rd{1.5, 4.7, 4.5, 3.0, 2.0, 3.0, 4.0, 6.0, 9.0};
+  std::vector<double> fd{0.5, 50.0, 50.0, 50.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  CHECK(l2_norm_areal(fd, Rd, 2.5, 12.0) == doctest::Approx(1.0));
 
   // interior: from the innermost point out to R = Rint, dr-weighted
   Simulation sim = simulation(trumpet(200, 20.0, 0.0));
