@@ -312,6 +312,47 @@ def check():
     return 1 if failures else 0
 
 
+def grid_mode(system, vals, dtheta=1e-3, **kw):
+    """(h x growth rate, group velocity) of the fastest-growing eigenvalue at theta = pi: the
+    grid-scale mode. The group velocity -d Im(lambda)/dk is taken by following that eigenvalue
+    to theta = pi - dtheta."""
+    ev = np.linalg.eigvals(system.discrete(vals, np.pi, **kw))
+    lam = ev[np.argmax(ev.real)]
+    ev2 = np.linalg.eigvals(system.discrete(vals, np.pi - dtheta, **kw))
+    lam2 = ev2[np.argmin(np.abs(ev2 - lam))]
+    return lam.real, (lam2.imag - lam.imag) / dtheta
+
+
+def predict_onset_rays(system, blocks, spacing, rmin=0.3, rmax=4.0, rays=40, dt=0.02, **kw):
+    """The grid-scale mode followed along rays dr/dt = its group velocity, from rays starting
+    at rmin ... rmax at t = 0, its amplitude growing at rate / spacing(r); the first ray to
+    grow AMPLIFICATION e-folds gives (t_onset, r_onset). The fields at time t are the last
+    block at or before t."""
+    times = [t for t, _ in blocks]
+
+    def fields_at(t):
+        return blocks[max(0, np.searchsorted(times, t, side='right') - 1)][1]
+
+    def vals_at(f, rr):
+        j = min(np.searchsorted(f['r'], rr), len(f['r']) - 1)
+        return (f['chi'][j], f['a'][j], f['b'][j], f['alpha'][j], f['beta_GD'][j],
+                f['beta_H'][j] * system.normal_inverse(f, j))
+
+    r = np.linspace(rmin, rmax, rays)
+    amp = np.zeros(rays)
+    t = 0.0
+    while t < times[-1]:
+        f = fields_at(t)
+        for i in range(rays):
+            g, vg = grid_mode(system, vals_at(f, r[i]), **kw)
+            amp[i] += max(g, 0.0) / spacing(r[i]) * dt
+            r[i] = max(r[i] + vg * dt, 0.0)
+        t += dt
+        if amp.max() >= AMPLIFICATION:
+            return t, r[np.argmax(amp)]
+    return None, None
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     ap.add_argument('--check', action='store_true', help='self-checks and predictions')
@@ -338,11 +379,14 @@ def main():
     r = blocks[0][1]['r']
     widths = np.gradient(r)
     kw = dict(driver=args.driver_advection, delta=args.delta_advection, ko_sigma=args.ko_sigma)
-    print('# spacing_factor t_onset r_max_rate rate_at_onset   (e-folds to blow-up: '
-          f'{AMPLIFICATION:.1f}; "-" none predicted)')
+    print('# spacing_factor t_onset r_max_rate rate_at_onset t_onset_ray r_onset_ray   (e-folds '
+          f'to blow-up: {AMPLIFICATION:.1f}; "-" none predicted)')
     for s in args.spacing_factor:
-        t_on, r_on, rate = predict_onset(system, blocks, lambda rr: np.interp(rr, r, widths) * s, **kw)
-        print(f'{s:g} ' + (f'{t_on:.4g} {r_on:.4g} {rate:.4g}' if t_on is not None else '- - -'))
+        spacing = lambda rr: np.interp(rr, r, widths) * s  # noqa: E731
+        t_on, r_on, rate = predict_onset(system, blocks, spacing, **kw)
+        t_ray, r_ray = predict_onset_rays(system, blocks, spacing, **kw)
+        fmt = lambda *v: ' '.join('-' if x is None else f'{x:.4g}' for x in v)  # noqa: E731
+        print(f'{s:g} ' + fmt(t_on, r_on, rate, t_ray, r_ray))
 
 
 if __name__ == '__main__':

@@ -95,10 +95,10 @@ def converge(out):
     print('|---|---|---|---|')
     worst = []
     for fam in families:
-        runs = sorted(glob.glob(os.path.join(out, fam + '-[NM]*')), key=lambda p: int(re.findall(r'\d+$', p)[0]))
-        runs = [r for r in runs if os.path.isdir(r)]
+        runs = [p for p in glob.glob(os.path.join(out, fam + '-[NM]*')) if os.path.isdir(p)]
+        runs.sort(key=lambda p: int(re.findall(r'\d+$', p)[0]))
         vals = [rms_H(r) for r in runs]
-        std = re.sub(r'-h[0-9.]+-', '-h0-', fam)
+        std = re.sub(r'(^|-)h[0-9.]+-', r'\1h0-', fam)
         std_vals = [rms_H(os.path.join(out, std + '-' + os.path.basename(r).split('-')[-1])) for r in runs]
         text = ', '.join('stopped' if v is None else f'{v:.3g}' for v in vals)
         orders = []

@@ -21,6 +21,8 @@
 #       1.5M (A = 0.5), with each suspect switched off: the normal's kink (conformal normal),
 #       the driver stencil (matched), both. The RMS over time of H_L2_R and its orders.
 #   bash runs/refinement.sh            onset, converge, uniform and published
+# IDS="wormhole" bash runs/refinement.sh converge  reruns one data set's families of converge or
+#       uniform (out/refinement/<part>/<id>/), keeping the others' folders.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
@@ -31,7 +33,8 @@ source runs/study-helpers.sh
 
 for part in "${parts[@]}"; do
   out=out/refinement/$part
-  rm -rf "$out"
+  # converge and uniform remove only the data sets they rerun (IDS)
+  case $part in converge | uniform) ;; *) rm -rf "$out" ;; esac
   mkdir -p "$out"
   case $part in
   onset)
@@ -66,37 +69,37 @@ for part in "${parts[@]}"; do
     } >"$out/predicted.txt"
     $py plots/refinement_study.py onset "$out" | tee "$out/table.txt"
     ;;
-  converge)
-    for id in 1log-trumpet maximal-trumpet wormhole; do
+  converge | uniform)
+    # ${IDS:-...}: the data sets to (re)run; each has its own folder out/refinement/<part>/<id>
+    for id in ${IDS:-1log-trumpet maximal-trumpet wormhole}; do
+      rm -rf "${out:?}/$id"
+      mkdir -p "$out/$id"
       for h in 0 0.5 0.6 0.89 1.2 1.5 2; do
         g=()
         [ "$h" != 0 ] && g=(--rahA 0.5 --rah0 "$h")
-        for n in 400 800 1600 3200; do
-          evolve_run "$id-h$h-sinh-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 30 --dt-series 0.25 \
-            --dt-profiles 1000
-        done
-        for n in 400 800 1600 3200 6400; do
-          evolve_run "$id-h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
-            --dt-series 0.25 --dt-profiles 1000
-        done
+        if [ "$part" = converge ]; then
+          for n in 400 800 1600 3200; do
+            evolve_run "$id/h$h-sinh-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 30 \
+              --dt-series 0.25 --dt-profiles 1000
+          done
+          for n in 400 800 1600 3200 6400; do
+            evolve_run "$id/h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
+              --dt-series 0.25 --dt-profiles 1000
+          done
+        else
+          for m in 16 32 64 128; do
+            evolve_run "$id/h$h-uniform-M$m" --id "$id" "${g[@]}" --grid uniform --rmax 100 \
+              --N $((100 * m)) --tmax 20 --dt-series 0.25 --dt-profiles 1000
+          done
+        fi
       done
     done
     wait
-    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
-    ;;
-  uniform)
     for id in 1log-trumpet maximal-trumpet wormhole; do
-      for h in 0 0.5 0.6 0.89 1.2 1.5 2; do
-        g=()
-        [ "$h" != 0 ] && g=(--rahA 0.5 --rah0 "$h")
-        for m in 16 32 64 128; do
-          evolve_run "$id-h$h-uniform-M$m" --id "$id" "${g[@]}" --grid uniform --rmax 100 \
-            --N $((100 * m)) --tmax 20 --dt-series 0.25 --dt-profiles 1000
-        done
-      done
-    done
-    wait
-    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+      [ -d "$out/$id" ] || continue
+      echo "## $id"
+      $py plots/refinement_study.py converge "$out/$id"
+    done | tee "$out/table.txt"
     ;;
   published)
     for h in 0.89 1.5; do
