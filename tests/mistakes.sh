@@ -7,7 +7,7 @@
 #     need (the last column of the table below: the ctest names, as `ctest -N` prints them, of
 #     the fastest tests known to catch it) and run only those tests; at least one of them must
 #     fail. Stops at the first mistake that is not caught, naming it, with exit status 1.
-#     Mostly recompiling: about 25 minutes of processor time (29 minutes measured on 2 shared,
+#     Mostly recompiling: about 28 minutes of processor time (29 minutes measured on 2 shared,
 #     busy cores), of which the 6 mistakes in widely included headers take two thirds.
 #   --full  (by hand, 35-60 minutes on 2 cores: the whole suite per mistake) rebuild everything and run the WHOLE suite
 #     for every mistake, list every test that catches it, and report where the named tests
