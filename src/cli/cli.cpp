@@ -20,6 +20,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -235,6 +236,23 @@ void refuse_repeated_flags(const std::vector<std::string>& args) {
   }
 }
 
+/// Refuses empty values: `--flag=` (which a parser would complete with the next argument, so
+/// that the next flag became the value and was lost) and an empty argument (`--flag ''`).
+void refuse_empty_values(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 2 && a.rfind("--", 0) == 0 && a.back() == '=')
+      throw ParamError(a.substr(0, a.size() - 1),
+                       "is given an empty value: put the value after '=', or leave the flag out");
+    if (a.empty()) {
+      const bool after_flag = i > 0 && args[i - 1].rfind("-", 0) == 0;
+      throw ParamError(after_flag ? args[i - 1] : std::string("argument"),
+                       after_flag ? "is given an empty value: give a value, or leave the flag out"
+                                  : "an empty argument is not a value of any flag");
+    }
+  }
+}
+
 /// The evolve flags given to converge/sweep; refuses those the study sets itself.
 std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std::string>& own) {
   std::vector<std::string> extras = cmd.remaining();
@@ -323,6 +341,12 @@ int help_or_version(CLI::App& app, const CLI::Error& e) {
 } // namespace
 
 int run_cli(int argc, char** argv) {
+  // Standard streams closed by the caller (`2>&-`) are reopened on /dev/null before anything
+  // is opened: otherwise the first file opened takes descriptor 0, 1 or 2, and console
+  // messages would land inside it (timeseries.dat).
+  for (int fd = 0; fd <= 2; ++fd)
+    if (::fcntl(fd, F_GETFD) == -1 && errno == EBADF)
+      (void)::open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY); // takes the lowest free: fd
   // A file-size limit then fails the write (EFBIG, reported by the checked flush) instead of
   // killing the process.
   std::signal(SIGXFSZ, SIG_IGN);
@@ -465,6 +489,7 @@ int run_cli(int argc, char** argv) {
       throw ParamError("subcommand", fmt::format("'{}' is not a subcommand: use evolve, resume, "
                                                  "converge or sweep (gbssn1d --help)",
                                                  printable(args.front())));
+    refuse_empty_values(args);
     refuse_repeated_flags(args);
     // evolve reads --config here; converge and sweep pass it on to their members, whose own
     // flags may then override the file's values once

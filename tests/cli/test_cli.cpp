@@ -618,6 +618,26 @@ TEST_CASE("SIGHUP, SIGUSR1 and SIGUSR2 stop a run resumably, as SIGTERM does") {
   }
 }
 
+// Closed standard streams (`2>&-`, `>&-`, `<&-`) are reopened on /dev/null at start-up, so
+// that no file the run opens takes descriptor 0-2 and console lines never land in data files.
+TEST_CASE("closed standard streams: the run completes and its files hold data only") {
+  const fs::path out = scratch("closed_streams");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --id 1log-trumpet --N 200 --tmax 2 --dt-profiles 1 --out "
+                          + out.string() + " <&- >&- 2>&-'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 0);
+  for (const char* file : {"timeseries.dat", "profiles.dat", "horizon.dat", "config.toml"}) {
+    const std::string text = slurp(out / file);
+    INFO(file);
+    CHECK(!text.empty());
+    CHECK(text.find("gbssn1d:") == std::string::npos); // no console line inside
+  }
+  CHECK(slurp(out / "timeseries.dat").find("# end: completed at t = 2") != std::string::npos);
+  fs::remove_all(out);
+}
+
 // The reader of stderr going away (a pager quit, `| head`) must neither kill nor fail a run or a
 // sweep: SIGPIPE is ignored and console messages are best effort; the files say how it ended.
 TEST_CASE("a closed stderr pipe stops neither a run nor a sweep: exit 0, complete files") {
