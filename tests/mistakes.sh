@@ -88,6 +88,10 @@ mistakes=(
   "converge samples reused for other radii|src/study/converge.cpp|    samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;|converge: samples saved with a member's checkpoint are reused only for the same fields and radii (a rerun with another coarsest member gives a fresh run's numbers)"
   "boxes: fine levels differenced at 4th order whatever --fd-order|src/mesh/layout.cpp|                        fd_order);|                        4);|mesh layout: every level differences at the order asked, and boxes offer 2, 4 and 6"
   "beta_H's quartic taper only quadratic|src/gbssn/horizon_shift.hpp|    return std::exp(-x2 * x2);|    return std::exp(-x2);|beta_H is tapered to zero before the outer boundary: quartic (default) and step"
+  "B's matched driver term without its beta_H correction (B driven by the full shift)|src/gbssn/rhs.cpp|                * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));|                * (p.adv[Var::Delta_r]);|B's driver term: the matched and centred stencils discretise one equation (B agrees to truncation error, falling with N), unlike B driven by the full shift"
+  "the published driver stencil as the default again|src/config/params.hpp|  std::string driver_advection = \"matched\";|  std::string driver_advection = \"upwind-gd\";|B's driver term under refinement: the published upwind-gd stencil blows up at a time that falls with the spacing, the matched stencil (default) runs"
+  "the areal window's outer sheet from the global minimum of R|src/diagnostics/constraints.cpp|  while (throat > 0 && R_areal[throat - 1] <= R_areal[throat])\n    --throat;|  throat = static_cast<std::size_t>(std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());|areal-radius norms: weights the areal widths, select by R, only the outer sheet, and the interior window"
+  "empty flag values accepted again|src/cli/cli.cpp|    refuse_empty_values(args);\n|    (void)refuse_empty_values;\n|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
