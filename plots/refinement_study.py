@@ -91,8 +91,9 @@ def rms_H(run):
 def converge(out):
     families = sorted({re.sub(r'-N\d+$|-M\d+$', '', os.path.basename(p))
                        for p in glob.glob(os.path.join(out, '*')) if os.path.isdir(p)})
-    print('| family | RMS over time of H_L2_R, coarse to fine | orders | standard gauge |')
-    print('|---|---|---|---|')
+    print('| family | RMS over time of H_L2_R, coarse to fine | orders | lowest above 10 x floor '
+          '| standard gauge (its finest: the floor) |')
+    print('|---|---|---|---|---|')
     worst = []
     for fam in families:
         runs = [p for p in glob.glob(os.path.join(out, fam + '-[NM]*')) if os.path.isdir(p)]
@@ -105,13 +106,21 @@ def converge(out):
         for (a, b) in zip(vals, vals[1:]):
             orders.append('-' if a is None or b is None or b <= 0 else f'{math.log2(a / b):.2f}')
         stdtext = ', '.join('-' if v is None else f'{v:.3g}' for v in std_vals)
-        print(f'| {fam} | {text} | {", ".join(orders)} | {stdtext} |')
-        for o in orders:
-            if o != '-':
-                worst.append((float(o), fam))
+        # the round-off floor: the standard gauge's value at the family's finest resolution;
+        # a pair is judged while its finer member stays above 10 x that floor
+        floor = std_vals[-1] if std_vals and std_vals[-1] is not None else 0.0
+        judged = [float(o) for o, b in zip(orders, vals[1:]) if o != '-' and b > 10 * floor]
+        verdict = f'{min(judged):.2f}' if judged else '-'
+        stopped = sum(v is None for v in vals)
+        print(f'| {fam} | {text} | {", ".join(orders)} | {verdict} | {stdtext} |')
+        if stopped:
+            print(f'  ({stopped} member(s) of {fam} stopped)')
+        for o in judged:
+            worst.append((o, fam))
     if worst:
         low = sorted(worst)[:5]
-        print('\nlowest orders: ' + '; '.join(f'{o:.2f} ({f})' for o, f in low))
+        print('\nlowest judged orders (finer member above 10 x the floor): '
+              + '; '.join(f'{o:.2f} ({f})' for o, f in low))
 
 
 if __name__ == '__main__':
