@@ -655,14 +655,14 @@ TEST_CASE("B's driver term: the matched and centred stencils discretise one equa
       m = std::max(m, std::abs(x[i] - y[i]));
     return m;
   };
-  const double d400 = max_diff(B_at_4M(400, "matched", "consistent"),
-                               B_at_4M(400, "centred", "consistent"));
-  const double d800 = max_diff(B_at_4M(800, "matched", "consistent"),
-                               B_at_4M(800, "centred", "consistent"));
+  const double d400 =
+      max_diff(B_at_4M(400, "matched", "consistent"), B_at_4M(400, "centred", "consistent"));
+  const double d800 =
+      max_diff(B_at_4M(800, "matched", "consistent"), B_at_4M(800, "centred", "consistent"));
   // measured: 6.1e-7 and 9.4e-8 (max |B| = 0.0125); the full shift's driver differs by 7e-3
   CHECK(d400 < 2e-6);
   CHECK(d800 < d400 / 4.0);
-  const double full = max_diff(B_at_4M(400, "matched", "consistent"),
-                               B_at_4M(400, "matched", "driver-full-shift"));
+  const double full =
+      max_diff(B_at_4M(400, "matched", "consistent"), B_at_4M(400, "matched", "driver-full-shift"));
   CHECK(full > 1e-3);
 }
