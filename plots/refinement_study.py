@@ -103,8 +103,11 @@ def converge(out):
         std_vals = [rms_H(os.path.join(out, std + '-' + os.path.basename(r).split('-')[-1])) for r in runs]
         text = ', '.join('stopped' if v is None else f'{v:.3g}' for v in vals)
         orders = []
-        for (a, b) in zip(vals, vals[1:]):
-            orders.append('-' if a is None or b is None or b <= 0 else f'{math.log2(a / b):.2f}')
+        # the resolutions from the names (N or M/spacing): orders for any ratio, not only 2
+        res = [int(re.findall(r'\d+$', r)[0]) for r in runs]
+        for (a, b, na, nb) in zip(vals, vals[1:], res, res[1:]):
+            orders.append('-' if a is None or b is None or b <= 0
+                          else f'{math.log(a / b) / math.log(nb / na):.2f}')
         stdtext = ', '.join('-' if v is None else f'{v:.3g}' for v in std_vals)
         # the round-off floor: the standard gauge's value at the family's finest resolution;
         # a pair is judged while its finer member stays above 10 x that floor

@@ -20,7 +20,11 @@
 #       grids (rmax 200) at M/8, M/16, M/32, M/64 to 40M, 1+log trumpet stretched to 0.89M and
 #       1.5M (A = 0.5), with each suspect switched off: the normal's kink (conformal normal),
 #       the driver stencil (matched), both. The RMS over time of H_L2_R and its orders.
-#   bash runs/refinement.sh            onset, converge, uniform and published
+#   bash runs/refinement.sh boxes      (~2 min) the published grid (7 boxes, rmax 128M; finest
+#       spacing M/16 ... M/64 for N = 32 ... 128) to 40M, 1+log trumpet: the standard gauge,
+#       h = 0.89 in the published form, h = 1.5 with the default, unit and conformal normals
+#       (the last two with the published profile), each with the upwind-gd and matched stencils.
+#   bash runs/refinement.sh            onset, converge, uniform, published and boxes
 # IDS="wormhole" bash runs/refinement.sh converge  reruns one data set's families of converge or
 #       uniform (out/refinement/<part>/<id>/), keeping the others' folders.
 set -euo pipefail
@@ -28,7 +32,7 @@ cd "$(dirname "$0")/.."
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
 parts=("$@")
-[ ${#parts[@]} -eq 0 ] && parts=(onset converge uniform published)
+[ ${#parts[@]} -eq 0 ] && parts=(onset converge uniform published boxes)
 source runs/study-helpers.sh
 
 for part in "${parts[@]}"; do
@@ -116,8 +120,28 @@ for part in "${parts[@]}"; do
     wait
     $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
     ;;
+  boxes)
+    grid=(--id 1log-trumpet --grid boxes --levels 7 --rmax 128 --tmax 40 --dt-series 0.25
+      --dt-profiles 1000)
+    pub=(--rah-profile rational --rah-width 1)
+    for n in 32 48 64 96 128; do
+      evolve_run "h0-std-N$n" "${grid[@]}" --N "$n"
+      for st in upwind-gd matched; do
+        evolve_run "h0.89-unit-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 0.89 "${pub[@]}" \
+          --rah-normal unit --driver-advection "$st"
+        evolve_run "h1.5-default-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 \
+          --driver-advection "$st"
+        for normal in unit conformal; do
+          evolve_run "h1.5-$normal-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 "${pub[@]}" \
+            --rah-normal "$normal" --driver-advection "$st"
+        done
+      done
+    done
+    wait
+    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+    ;;
   *)
-    echo "runs/refinement.sh: unknown part '$part' (onset, converge, uniform, published)" >&2
+    echo "runs/refinement.sh: unknown part '$part' (onset, converge, uniform, published, boxes)" >&2
     exit 2
     ;;
   esac
