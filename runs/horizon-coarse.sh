@@ -65,7 +65,8 @@ mechanism)
   # (a) open loop: h_AH(t) of a fine closed-loop run, the same function at every resolution
   if [ ! -f "$out/fine-stretch-published/horizon.dat" ]; then
     rm -rf "$out/fine-stretch-published"
-    build/gbssn1d evolve "${common[@]}" "${grid[@]}" --N 6400 --dt-series 0.25 "${s[@]}" "${published[@]}" \
+    build/gbssn1d evolve --rmax 200 --tmax 100 --dt-series 0.25 --dt-profiles 100 "${grid[@]}" \
+      --N 6400 "${s[@]}" "${published[@]}" \
       --out "$out/fine-stretch-published" 2>/dev/null
   fi
   family a-open-loop $coarse "${s[@]}" "${published[@]}" \
