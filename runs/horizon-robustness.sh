@@ -29,10 +29,12 @@ build/gbssn1d sweep -j "$(nproc)" --out "$out/wormhole-eta1-default-grid" "${shr
   "${run[@]}" --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
 for s in uniform default-grid wormhole-eta1-uniform wormhole-eta1-default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
-  # columns by name from the header line (the last '#' line); N is a column of the uniform
-  # sweep only, rah-ramp of the default-grid sweep only
-  awk '/^#/ { n = split(substr($0, 3), names, " "); split("", c)
-              for (i = 1; i <= n; i++) c[names[i]] = i; next }
+  # columns by name from the header line (the '#' line that names a status column; the other
+  # '#' lines describe the sweep); N is a column of the uniform sweep only, rah-ramp of the
+  # default-grid sweep only
+  awk '/^#/ { if (!hdr && $0 ~ / status /) { n = split(substr($0, 3), names, " "); hdr = 1
+                for (i = 1; i <= n; i++) c[names[i]] = i }
+              next }
        !printed++ { print "id rahA rah0 N ramp status t_end r_ah_final |r_ah/h-1| M_ah_err_max H_L2_R_max wall_s" }
        { h = $c["rah0"]; r = $c["r_ah_final"]
          id = ("id" in c) ? $(c["id"]) : "wormhole(eta=1)"
