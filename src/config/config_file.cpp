@@ -280,6 +280,11 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
         throw ParamError("--config", path,
                          fmt::format("key '{}' must be true or false, not '{}'", key,
                                      printable(item.inputs.front())));
+      // Writing into an existing folder is asked for on the command line only: a recorded
+      // `force = true` (a config.toml of a run made with --force) must not let a rerun with
+      // that file overwrite a finished run.
+      if (key == "force")
+        continue;
       // "--key=" with an empty value would take the next argument as its value: pass the
       // empty value as a separate argument
       if (item.inputs.front().empty()) {
