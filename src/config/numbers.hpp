@@ -67,6 +67,22 @@ template <class T>
 T parse_number(const std::string& flag, const std::string& text) {
   if (const auto value = parse_decimal<T>(text))
     return *value;
+  if constexpr (std::is_floating_point_v<T>) {
+    // a well-formed number too small for a double (1e-400) is not "not finite": say so
+    T tiny{};
+    const char* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, tiny, std::chars_format::general);
+    if (r.ec == std::errc::result_out_of_range && r.ptr == end && !text.empty()
+        && text.find_first_not_of("0123456789.eE+-") == std::string::npos) {
+      const auto e = text.find_first_of("eE");
+      const bool negative_exponent =
+          e != std::string::npos && e + 1 < text.size() && text[e + 1] == '-';
+      if (negative_exponent)
+        throw ParamError(flag, printable(text),
+                         "is too small in magnitude for a double (below about 2e-308): give 0 "
+                         "or a larger value");
+    }
+  }
   throw ParamError(flag, text.empty() ? std::string("''") : printable(text),
                    std::string("must be ") + number_kind<T>());
 }
