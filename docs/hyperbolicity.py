@@ -365,6 +365,9 @@ def main():
     ap.add_argument('--normal', default='conformal', choices=['conformal', 'unit'])
     ap.add_argument('--advective-shift', action='store_true')
     ap.add_argument('--ko-sigma', type=float, default=0.1)
+    ap.add_argument('--continuum', action='store_true',
+                    help="with --profiles: the continuum speeds on the run's fields (largest "
+                    "imaginary part, condition number of the eigenvectors) instead of the onset")
     ap.add_argument('--spacing-factor', type=float, nargs='+', default=[1.0],
                     help="predict for grids whose spacings are these multiples of the profile "
                     "run's (e.g. 0.5: twice the N)")
@@ -379,6 +382,23 @@ def main():
     r = blocks[0][1]['r']
     widths = np.gradient(r)
     kw = dict(driver=args.driver_advection, delta=args.delta_advection, ko_sigma=args.ko_sigma)
+    if args.continuum:
+        print('# t max|Im speed| cond(eigenvectors) over 1M <= r <= 1.8M, largest cond over '
+              '0.3M <= r <= 4M and its r')
+        for t, f in blocks:
+            conds, imag = [], 0.0
+            for j, rr in enumerate(f['r']):
+                if not 0.3 <= rr <= 4.0:
+                    continue
+                vals = (f['chi'][j], f['a'][j], f['b'][j], f['alpha'][j], f['beta_GD'][j],
+                        f['beta_H'][j] * system.normal_inverse(f, j))
+                ev, V = np.linalg.eig(system.continuum(vals))
+                imag = max(imag, float(np.max(np.abs(ev.imag))))
+                conds.append((np.linalg.cond(V), rr))
+            band = [c for c, rr in conds if 1.0 <= rr <= 1.8]
+            worst = max(conds)
+            print(f'{t:g} {imag:.2e} {min(band):.3g}-{max(band):.3g} {worst[0]:.3g} {worst[1]:.3g}')
+        return
     print('# spacing_factor t_onset r_max_rate rate_at_onset t_onset_ray r_onset_ray   (e-folds '
           f'to blow-up: {AMPLIFICATION:.1f}; "-" none predicted)')
     for s in args.spacing_factor:

@@ -71,6 +71,9 @@ for part in "${parts[@]}"; do
       $py docs/hyperbolicity.py --profiles "$out/background-uniform/profiles.dat" \
         --spacing-factor 0.5 0.25
     } >"$out/predicted.txt"
+    # the continuum speeds on the same fields (real? eigenvectors complete?)
+    $py docs/hyperbolicity.py --profiles "$out/background-sinh/profiles.dat" --continuum \
+      >"$out/continuum.txt"
     $py plots/refinement_study.py onset "$out" | tee "$out/table.txt"
     ;;
   converge | uniform)
