@@ -37,6 +37,23 @@ namespace {
 
 int run_and_report(Simulation& sim, Output& out, const Params& p);
 
+/// A run with --rah-hAH-file keeps a copy of the file as read at its start in its folder, and a
+/// resume continues with that copy: the file named by the flag may have been edited since, or a
+/// relative path may name another file from another folder.
+const char* const prescribed_horizon_copy = "rah-hAH-file.dat";
+
+/// The bytes of --rah-hAH-file when it is in use (rahA != 0), nothing otherwise.
+std::optional<std::string> prescribed_horizon_content(const Params& p) {
+  if (p.rah_hAH_file.empty() || p.rahA == 0.0)
+    return std::nullopt;
+  std::ifstream in(p.rah_hAH_file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof())
+    throw ParamError("--rah-hAH-file", printable(p.rah_hAH_file), "cannot be read");
+  return text.str();
+}
+
 int evolve(Params p, bool print_config) {
   resolve_defaults(p);
   validate(p);
@@ -54,9 +71,13 @@ int evolve(Params p, bool print_config) {
   Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
   const std::filesystem::path dir(p.out);
+  // the content of --rah-hAH-file as it was read (before the folder is made)
+  const std::optional<std::string> hAH_content = prescribed_horizon_content(p);
   create_output_dir("--out", dir);
   const std::string config = config_text(p);
   write_file_atomically(dir / "config.toml", header_text("") + config);
+  if (hAH_content)
+    write_file_atomically(dir / prescribed_horizon_copy, *hAH_content);
   Output out(dir, config + sim.run_facts());
   sim.checkpoint_config = config;
   return run_and_report(sim, out, p);
@@ -164,7 +185,26 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
                      fmt::format("is before the last output at t = {}: resuming would cut "
                                  "the output written after it",
                                  written.t_last));
-  Simulation sim(evolution_config(p));
+  // the h_AH file as the run read it at its start (its copy), whatever the flag's path names now
+  Params run_params = p;
+  if (const std::filesystem::path copy = dir / prescribed_horizon_copy;
+      !p.rah_hAH_file.empty() && p.rahA != 0.0 && fs::is_regular_file(copy)) {
+    std::optional<std::string> now;
+    try {
+      now = prescribed_horizon_content(p);
+    } catch (const ParamError&) {
+    }
+    std::ifstream in(copy, std::ios::binary);
+    std::ostringstream kept;
+    kept << in.rdbuf();
+    if (!now || *now != kept.str())
+      say("gbssn1d: note: --rah-hAH-file {} is not what the run read at its start (edited, "
+          "missing, or another file from this folder); it continues with the copy it took then, "
+          "{}\n",
+          printable(p.rah_hAH_file), copy.string());
+    run_params.rah_hAH_file = copy.string();
+  }
+  Simulation sim(evolution_config(run_params));
   try {
     sim.restore(c);
     Output::check_resumable(dir, c.marks);

@@ -336,6 +336,47 @@ std::string without_out(const fs::path& file) {
 
 } // namespace
 
+TEST_CASE("resume with --rah-hAH-file continues with the copy the run took at its start, "
+          "whatever the flag's path names now") {
+  const fs::path whole = scratch("hAH_whole"), parts = scratch("hAH_parts");
+  const fs::path file = scratch("hAH_file.dat"), other = scratch("hAH_other.dat");
+  auto write = [](const fs::path& f, double slope) {
+    std::ofstream out(f);
+    out << "# t r_ah\n";
+    for (int k = 0; k <= 24; ++k)
+      out << 0.5 * k << " " << 0.8304 + slope * 0.5 * k << "\n";
+  };
+  write(file, 0.002);
+  write(other, 0.002); // the uninterrupted run's input: the same content, another file
+  const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 200 --rmax 50 --rahA 0.5 "
+                            "--rah0 0.89 --dt-series 0.5 --dt-profiles 5 --checkpoint-every 2 "
+                            "--rah-hAH-file ";
+  REQUIRE(run(flags + other.string() + " --tmax 10 --out " + whole.string()).status == 0);
+  REQUIRE(run(flags + file.string() + " --tmax 5 --out " + parts.string()).status == 0);
+  CHECK(slurp(parts / "rah-hAH-file.dat") == slurp(file)); // the run's own copy
+  write(file, 0.02); // the file is edited after the run started
+  const Result r = run("resume " + parts.string() + " --tmax 10");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("note: --rah-hAH-file") != std::string::npos);
+  // continued with the content it started with: the same numbers as the uninterrupted run
+  for (const char* f : {"timeseries.dat", "horizon.dat"}) {
+    auto data = [](const std::string& text) {
+      std::string rows;
+      std::istringstream in(text);
+      for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#')
+          rows += line + "\n";
+      return rows;
+    };
+    CHECK(data(slurp(whole / f)) == data(slurp(parts / f)));
+  }
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  fs::remove(file);
+  fs::remove(other);
+}
+
 TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an uninterrupted one") {
   const fs::path whole = scratch("whole"), parts = scratch("parts");
   // substage searches, held searches every 4 steps, and the midstep-update variant (whose
