@@ -73,6 +73,11 @@ int evolve(Params p, bool print_config) {
   const std::filesystem::path dir(p.out);
   // the content of --rah-hAH-file as it was read (before the folder is made)
   const std::optional<std::string> hAH_content = prescribed_horizon_content(p);
+  if (const int signal = stop_signal(); signal != 0) {
+    say("gbssn1d: interrupted by {} before the run started; nothing was written\n",
+        signal_name(signal));
+    return 128 + signal;
+  }
   create_output_dir("--out", dir);
   const std::string config = config_text(p);
   write_file_atomically(dir / "config.toml", header_text("") + config);
@@ -103,9 +108,8 @@ int run_and_report(Simulation& sim, Output& out, const Params& p) {
     return stopped("error: ", e.what(), "output up to then kept in " + p.out, 3);
   } catch (const Interrupted& e) {
     return stopped("", e.what(),
-                   fmt::format("output up to then and a checkpoint kept in {}; resume with: "
-                               "gbssn1d resume {}",
-                               p.out, p.out),
+                   fmt::format("output up to then and a checkpoint kept in {}; resume with: {}",
+                               p.out, resume_command(p.out)),
                    128 + e.signal);
   } catch (const OutputError& e) {
     say("gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
@@ -147,6 +151,7 @@ SeriesEnd series_end(const std::filesystem::path& file) {
 int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
+  check_path("DIR", dir);
   if (!fs::is_regular_file(dir / "config.toml"))
     throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
   if (!fs::is_regular_file(dir / "checkpoint.bin"))
@@ -175,9 +180,9 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   // output beyond the new end.
   const SeriesEnd written = series_end(dir / "timeseries.dat");
   if (written.completed && (!tmax || p.tmax <= written.t_last)) {
-    say("gbssn1d: {} is complete at t = {}; nothing to do (`gbssn1d resume {} --tmax T` "
-        "continues it to a later T)\n",
-        dir_name, written.t_last, dir_name);
+    say("gbssn1d: {} is complete at t = {}; nothing to do (`{} --tmax T` continues it to a "
+        "later T)\n",
+        dir_name, written.t_last, resume_command(dir_name));
     return 0;
   }
   if (p.tmax < written.t_last)
@@ -213,7 +218,11 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   } catch (const OutputError& e) {
     throw ParamError("DIR", dir_name, e.what());
   }
-  // every check is done: only now is any file changed
+  // every check is done: only now is any file changed (unless a stop signal came meanwhile)
+  if (const int signal = stop_signal(); signal != 0) {
+    say("gbssn1d: interrupted by {} before resuming; nothing was changed\n", signal_name(signal));
+    return 128 + signal;
+  }
   sim.show_progress = true;
   sim.checkpoint_config = config;
   write_file_atomically(dir / "config.toml", header_text("") + config);
@@ -332,13 +341,20 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   if (!times.empty())
     for (const auto& t : split_list("--scaled-times", times))
       options.scaled_times.push_back(list_number<double>("--scaled-times", times, t));
-  if (!std::isfinite(options.order) || options.order <= 0.0)
-    throw ParamError("--order", fmt::format("{}", options.order), "must be a finite number > 0");
+  if (!std::isfinite(options.order) || options.order <= 0.0 || options.order > 30.0)
+    throw ParamError("--order", fmt::format("{}", options.order),
+                     "must be a number in (0, 30] (H is scaled by (N/N_0)^order)");
   check_jobs(options.jobs);
   Params base = parse_evolve_args(evolve_args);
   base.N = options.N.front(); // the first member; each member sets its own
   base.out = options.out;
   resolve_defaults(base);
+  for (const double t : options.scaled_times)
+    if (t < 0.0 || t > base.tmax)
+      throw ParamError("--scaled-times", printable(times),
+                       fmt::format("{} is outside the run's [0, tmax = {}]", t, base.tmax));
+  check_path("--out", options.out);
+  bool continuing = false;
   // A converge folder of other inputs: say which, so that nobody takes --force lightly (with
   // --force the members rerun; a member resumes only from a checkpoint of its own inputs).
   if (const auto old = std::filesystem::path(options.out) / "config.toml";
@@ -352,10 +368,16 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
                        fmt::format("holds a converge study of other inputs ({}); use another "
                                    "--out, or --force to rerun into it",
                                    fmt::join(diff, ", ")));
+    // the same study (an interrupted one, as its message says): its members continue from
+    // their checkpoints, each checked against its own inputs
+    continuing = true;
+    say("gbssn1d converge: {} holds this study (same inputs): members continue from their "
+        "checkpoints\n",
+        options.out);
   }
   validate_output_dir([&] {
     Params o = base;
-    o.force = options.force;
+    o.force = options.force || continuing;
     return o;
   }());
   converge_members(base, options); // validates every member before anything is written
@@ -380,7 +402,9 @@ int help_or_version(CLI::App& app, const CLI::Error& e) {
 
 } // namespace
 
-int run_cli(int argc, char** argv) {
+namespace {
+
+int run_command_line(int argc, char** argv) {
   // Standard streams closed by the caller (`2>&-`) are reopened on /dev/null before anything
   // is opened: otherwise the first file opened takes descriptor 0, 1 or 2, and console
   // messages would land inside it (timeseries.dat).
@@ -393,6 +417,11 @@ int run_cli(int argc, char** argv) {
   // A closed pipe or terminal gives EPIPE on a write instead of killing the process: console
   // messages are best effort (core/console.hpp), files report their write errors.
   std::signal(SIGPIPE, SIG_IGN);
+  // A stop signal is a request from the first instant: before any file is created (a run
+  // killed in its first milliseconds left a folder holding only config.toml.tmp).
+  install_stop_handlers();
+  if (argc > 0 && argv[0] != nullptr && std::string(argv[0]).find('/') != std::string::npos)
+    invoked_as() = argv[0];
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
                "black hole",
                "gbssn1d"};
@@ -489,7 +518,7 @@ int run_cli(int argc, char** argv) {
       ->required();
   add_number_option(*sweep_cmd, "--progress-every", sweep_options.progress_every,
                     "seconds between progress lines (k of n done, running members) while "
-                    "members run; 0: none");
+                    "members run, at most 86400; 0: none");
   CLI::Option* sweep_emit = sweep_cmd->add_option(
       "--emit-tasks", sweep_options.emit_tasks,
       "write one command line per valid member (for GNU parallel or a Slurm array) and exit; "
@@ -501,17 +530,21 @@ int run_cli(int argc, char** argv) {
   CLI::Option* sweep_collect = sweep_cmd->add_flag(
       "--collect", sweep_options.collect,
       "build summary.dat from the members in --out without running any; exit 0 if all "
-      "finished, 3 if any blew up, failed or was invalid, 1 if some have not run yet");
+      "finished, 1 if some have not run yet, else 3 if any blew up, failed or was invalid");
   sweep_cmd->allow_extras();
   sweep_cmd->footer(
       "Every other flag is an evolve flag, common to all members.\nOUT/summary.dat: a row per "
-      "member: its values, status (ok, invalid, blew-up, failed, interrupted, missing), flag "
+      "member: its values, status (ok, invalid, blew-up, failed, interrupted, missing; a rerun "
+      "of the sweep, or a requeued task line, runs the failed, interrupted and missing members "
+      "again, from their checkpoints where they have one, and wall_s is a member's total), flag "
       "(spike: a finished member whose H_L2_R_max is more than 100 times the median of its "
       "neighbours' along an axis, the axes of N excepted; named on stderr too), figures and a "
       "reason. Each distinct `gbssn1d: warning:` of the members' logs is repeated on stderr "
       "once, with the members that gave it.\nExit status: 0 every member finished (spikes "
       "included); 1 a failed write, or with --collect members not run yet; 2 invalid input; 3 a "
-      "member blew up, failed or was invalid; 128 + n interrupted by signal n.");
+      "member blew up, failed or was invalid; 128 + n interrupted by signal n.\nA member runs "
+      "in one process at a time (OUT/logs/NAME.lock): a line started while it runs is refused. "
+      "At most 10000 members.");
 
   // resume: continue a run from its checkpoint
   std::string resume_dir;
@@ -588,9 +621,10 @@ int run_cli(int argc, char** argv) {
       if (sweep_member->count() > 0 && sweep_emit->count() > 0)
         throw ParamError("--member", sweep_options.member, "not with --emit-tasks");
       check_jobs(sweep_options.jobs);
-      if (!std::isfinite(sweep_options.progress_every) || sweep_options.progress_every < 0.0)
+      if (!std::isfinite(sweep_options.progress_every) || sweep_options.progress_every < 0.0
+          || sweep_options.progress_every > 86400.0)
         throw ParamError("--progress-every", fmt::format("{}", sweep_options.progress_every),
-                         "must be a finite number >= 0");
+                         "must be a number of seconds in [0, 86400] (0: no progress lines)");
       const auto evolve_args = pass_through(*sweep_cmd, {"out", "force"});
       parse_evolve_args(evolve_args); // common flags must parse before anything runs
       return run_sweep(sweep_options, evolve_args);
@@ -598,11 +632,36 @@ int run_cli(int argc, char** argv) {
   } catch (const ParamError& e) {
     say("gbssn1d: error: {}\n", e.what());
     return 2;
+  }
+  return 0;
+}
+
+} // namespace
+
+int run_cli(int argc, char** argv) {
+  // The one place where every failure becomes a message and an exit status: nothing
+  // escapes as an abort, and no library's text ("filesystem error: ...") reaches the user.
+  try {
+    return run_command_line(argc, argv);
+  } catch (const ParamError& e) {
+    say("gbssn1d: error: {}\n", e.what());
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    say("gbssn1d: error: {}{}\n",
+        e.path1().empty() ? std::string() : printable(e.path1().string()) + ": ",
+        e.code().message());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    say("gbssn1d: error: out of memory (a smaller --N, fewer members at once with -j, or "
+        "fewer members)\n");
+    return 1;
   } catch (const std::exception& e) {
     say("gbssn1d: error: {}\n", e.what());
     return 1;
+  } catch (...) {
+    say("gbssn1d: error: an unknown failure\n");
+    return 1;
   }
-  return 0;
 }
 
 } // namespace gbssn1d

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
@@ -40,7 +42,8 @@ const std::vector<ParamSpec>& param_specs() {
        "radial grid: uniform | sinh | boxes (box-in-box mesh refinement: --levels boxes, box l "
        "covering r <= rmax/2^l with --N cells, Berger-Oliger subcycling)"},
       {"levels", &Params::levels, "Grid",
-       "--grid boxes: number of boxes (refinement levels); default 1 + floor(log2(rmax/4M))"},
+       "--grid boxes: number of boxes (refinement levels); default max(2, 1 + "
+       "floor(log2(rmax/4M)))"},
       {"time-interp", &Params::time_interp, "Grid",
        "--grid boxes: a fine box's boundary in time: rk-stages (RK4 stage values of the coarse "
        "step, 4th order) | dense (RK4 dense output) | quadratic (three coarse time levels with "
@@ -143,9 +146,9 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
       [&](auto member) -> std::optional<std::string> {
         using T = std::decay_t<decltype(p.*member)>;
         if constexpr (std::is_same_v<T, std::string>)
-          return fmt::format("\"{}\"", p.*member);
+          return toml_string(p.*member);
         else if constexpr (std::is_same_v<T, std::optional<std::string>>)
-          return p.*member ? std::optional(fmt::format("\"{}\"", *(p.*member))) : std::nullopt;
+          return p.*member ? std::optional(toml_string(*(p.*member))) : std::nullopt;
         else if constexpr (std::is_same_v<T, bool>)
           return p.*member ? "true" : "false";
         else if constexpr (std::is_same_v<
@@ -159,12 +162,13 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
 
 /// The rule a flag's unset value stands for, shown by --help as its default.
 const std::map<std::string, std::string>& default_rules() {
-  static const std::map<std::string, std::string> rules{{"eta", "2/M (1/M: wormhole shrinks)"},
-                                                        {"norm-rmax", "min(10 M, rmax/2)"},
-                                                        {"ah-tmax", "none"},
-                                                        {"rah-taper", "quartic"},
-                                                        {"levels", "1 + floor(log2(rmax/4M))"},
-                                                        {"cfl", "0.5 (boxes: 0.25)"}};
+  static const std::map<std::string, std::string> rules{
+      {"eta", "2/M (1/M: wormhole shrinks)"},
+      {"norm-rmax", "min(10 M, rmax/2)"},
+      {"ah-tmax", "none"},
+      {"rah-taper", "quartic"},
+      {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
+      {"cfl", "0.5 (boxes: 0.25)"}};
   return rules;
 }
 
@@ -230,6 +234,118 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& 
   return number_option(app, names, target, help);
 }
 
+/// A string as a TOML basic string: quoted, with '"', '\' and control characters escaped, so
+/// that read_config_text() gives it back exactly (a newline or '#' in an --out included).
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+    case '"':
+      out += "\\\"";
+      break;
+    case '\\':
+      out += "\\\\";
+      break;
+    case '\n':
+      out += "\\n";
+      break;
+    case '\t':
+      out += "\\t";
+      break;
+    case '\r':
+      out += "\\r";
+      break;
+    default:
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+        out += fmt::format("\\u{:04X}", static_cast<unsigned char>(c));
+      else
+        out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::vector<std::pair<std::string, std::string>> read_config_text(const std::string& text,
+                                                                  const std::string& path) {
+  std::vector<std::pair<std::string, std::string>> items;
+  std::map<std::string, std::size_t> first_line;
+  std::istringstream in(text);
+  std::size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    auto fail = [&](const std::string& why) {
+      throw ParamError("--config", path, fmt::format("line {}: {}", number, why));
+    };
+    std::size_t k = line.find_first_not_of(" \t\r");
+    if (k == std::string::npos || line[k] == '#')
+      continue;
+    if (line[k] == '[')
+      fail(fmt::format("'{}': sections are not read; write every key at the top level",
+                       printable(line.substr(k))));
+    const std::size_t key_end = line.find_first_not_of(
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-", k);
+    const std::string key = line.substr(k, key_end == std::string::npos ? key_end : key_end - k);
+    k = key_end == std::string::npos ? line.size() : line.find_first_not_of(" \t", key_end);
+    if (key.empty() || k == std::string::npos || line[k] != '=')
+      fail(fmt::format("'{}' is not a `key = value` line", printable(line)));
+    k = line.find_first_not_of(" \t", k + 1);
+    if (k == std::string::npos)
+      fail(fmt::format("key '{}' has no value", key));
+    std::string value;
+    if (line[k] == '"') { // a basic string, with escapes
+      bool closed = false;
+      for (++k; k < line.size() && !closed; ++k) {
+        const char c = line[k];
+        if (c == '"') {
+          closed = true;
+        } else if (c != '\\') {
+          value += c;
+        } else if (++k >= line.size()) {
+          break;
+        } else if (const char e = line[k]; e == 'u' && k + 4 < line.size()) {
+          unsigned code = 0;
+          const auto [ptr, ec] =
+              std::from_chars(line.data() + k + 1, line.data() + k + 5, code, 16);
+          if (ec != std::errc() || ptr != line.data() + k + 5 || code > 0x7f)
+            fail(fmt::format("key '{}': \\u escapes above 007F are not read", key));
+          value += static_cast<char>(code);
+          k += 4;
+        } else {
+          const std::map<char, char> escapes{
+              {'"', '"'}, {'\\', '\\'}, {'n', '\n'}, {'t', '\t'}, {'r', '\r'}};
+          const auto it = escapes.find(e);
+          if (it == escapes.end())
+            fail(fmt::format("key '{}': unknown escape '\\{}' in its string", key,
+                             printable(std::string(1, e))));
+          value += it->second;
+        }
+      }
+      if (!closed)
+        fail(fmt::format("key '{}': its string has no closing '\"'", key));
+    } else if (line[k] == '\'') { // a literal string: no escapes
+      const std::size_t end = line.find('\'', k + 1);
+      if (end == std::string::npos)
+        fail(fmt::format("key '{}': its string has no closing \"'\"", key));
+      value = line.substr(k + 1, end - k - 1);
+      k = end + 1;
+    } else { // a bare value: one word (a number, true or false), up to white space or '#'
+      const std::size_t end = line.find_first_of(" \t\r#", k);
+      value = line.substr(k, end == std::string::npos ? std::string::npos : end - k);
+      if (value.find_first_of("[{\"',") != std::string::npos)
+        fail(fmt::format("key '{}' needs exactly one value, not '{}'", key,
+                         printable(line.substr(k))));
+      k = end == std::string::npos ? line.size() : end;
+    }
+    if (const std::size_t rest = line.find_first_not_of(" \t\r", k);
+        rest != std::string::npos && line[rest] != '#')
+      fail(fmt::format("key '{}': '{}' after its value", key, printable(line.substr(rest))));
+    if (const auto [it, fresh] = first_line.emplace(key, number); !fresh)
+      fail(fmt::format("key '{}' is given again (first on line {})", key, it->second));
+    items.emplace_back(key, value);
+  }
+  return items;
+}
+
 std::string config_text(const Params& p) {
   std::string text;
   for (const auto& spec : param_specs())
@@ -257,29 +373,22 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
       rest.push_back(args[k]);
       continue;
     }
-    if (!std::filesystem::is_regular_file(path))
-      throw ParamError("--config", path, "no such file");
-    std::vector<CLI::ConfigItem> items;
-    try {
-      items = CLI::ConfigTOML().from_file(path);
-    } catch (const CLI::Error& e) {
-      throw ParamError("--config", path, std::string("cannot be parsed: ") + e.what());
-    }
-    for (const auto& item : items) {
-      const std::string key = item.fullname();
-      const bool known = std::any_of(param_specs().begin(), param_specs().end(),
+    check_input_file("--config", path);
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (!file && !file.eof())
+      throw ParamError("--config", path, "cannot be read");
+    for (const auto& [key, value] : read_config_text(text.str(), path)) {
+      const auto spec = std::find_if(param_specs().begin(), param_specs().end(),
                                      [&](const ParamSpec& s) { return key == s.name; });
-      if (!known)
+      if (spec == param_specs().end())
         throw ParamError("--config", path, fmt::format("unknown key '{}'", printable(key)));
-      if (item.inputs.size() != 1)
-        throw ParamError("--config", path, fmt::format("key '{}' needs exactly one value", key));
-      const auto& spec = *std::find_if(param_specs().begin(), param_specs().end(),
-                                       [&](const ParamSpec& s) { return key == s.name; });
-      if (std::holds_alternative<bool Params::*>(spec.member) && item.inputs.front() != "true"
-          && item.inputs.front() != "false")
-        throw ParamError("--config", path,
-                         fmt::format("key '{}' must be true or false, not '{}'", key,
-                                     printable(item.inputs.front())));
+      if (std::holds_alternative<bool Params::*>(spec->member) && value != "true"
+          && value != "false")
+        throw ParamError(
+            "--config", path,
+            fmt::format("key '{}' must be true or false, not '{}'", key, printable(value)));
       // Writing into an existing folder is asked for on the command line only: a recorded
       // `force = true` (a config.toml of a run made with --force) must not let a rerun with
       // that file overwrite a finished run.
@@ -287,11 +396,11 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
         continue;
       // "--key=" with an empty value would take the next argument as its value: pass the
       // empty value as a separate argument
-      if (item.inputs.front().empty()) {
+      if (value.empty()) {
         from_file.push_back("--" + key);
         from_file.push_back("");
       } else {
-        from_file.push_back(fmt::format("--{}={}", key, item.inputs.front()));
+        from_file.push_back(fmt::format("--{}={}", key, value));
       }
     }
   }

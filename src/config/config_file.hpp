@@ -6,6 +6,7 @@
 #include "config/params.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI {
@@ -42,6 +43,17 @@ config_differences(const std::string& old_text, const std::string& new_text,
 /// command line's own, so that flags override the file. Throws ParamError for a missing file,
 /// a key that names no parameter or a bad boolean.
 std::vector<std::string> expand_config(const std::vector<std::string>& args);
+
+/// A string as a TOML basic string ("...", with '"', '\\' and control characters escaped), as
+/// config_text() writes string values; read_config_text() reads it back exactly.
+std::string toml_string(const std::string& s);
+
+/// The `key = value` items of a configuration file's text, in order: comments ('#') and blank
+/// lines skipped; values bare (numbers, true/false) or quoted ("..." with escapes, '...'
+/// literal). Throws ParamError (--config, `path`, the line) for a section, a key given twice, a
+/// line that is not `key = value`, an array or an unclosed string. Keys are not checked here.
+std::vector<std::pair<std::string, std::string>> read_config_text(const std::string& text,
+                                                                  const std::string& path);
 
 /// Parameters from evolve flags (`--config` files expanded), e.g. a sweep member's arguments.
 /// Throws ParamError or CLI::ParseError. Does not resolve defaults or validate.

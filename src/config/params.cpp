@@ -158,6 +158,9 @@ mesh::StepperOptions stepper_options(const Params& p) {
 } // namespace
 
 void resolve_defaults(Params& p) {
+  // a number of steps in its one spelling (05 and 5 are the same run, as 0.25 and 0.250 are)
+  if (const auto n = parse_decimal<long>(p.ah_every))
+    p.ah_every = std::to_string(*n);
   if (p.grid == "boxes" && !p.levels)
     p.levels = levels_rule(p.rmax, p.M);
   // M and rmax are validated afterwards: a bad M gives a non-finite eta
@@ -527,6 +530,7 @@ void validate_output_dir(const Params& p) {
   namespace fs = std::filesystem;
   if (p.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
+  check_path("--out", p.out);
   std::error_code ec;
   const fs::path dir(p.out);
   if (fs::exists(dir, ec)) {
@@ -546,7 +550,58 @@ void validate_output_dir(const Params& p) {
     throw ParamError("--out", p.out, "cannot be created: parent directory is not writable");
 }
 
+namespace {
+
+/// A path for a message: at most 120 bytes of it, non-printable bytes escaped.
+std::string shown_path(const std::string& path) {
+  return path.size() <= 120
+             ? printable(path)
+             : fmt::format("{}... ({} bytes)", printable(path.substr(0, 100)), path.size());
+}
+
+} // namespace
+
+void check_path(const std::string& flag, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string text = path.string();
+  if (text.size() > 4095)
+    throw ParamError(flag, shown_path(text), "is longer than 4095 bytes, the system's limit");
+  for (const auto& part : path)
+    if (part.string().size() > 255)
+      throw ParamError(
+          flag, shown_path(text),
+          fmt::format("has a name of {} bytes; the system's limit is 255", part.string().size()));
+  std::error_code ec;
+  (void)fs::status(path, ec);
+  if (!ec || ec == std::errc::no_such_file_or_directory)
+    return;
+  if (ec == std::errc::too_many_symbolic_link_levels)
+    throw ParamError(flag, shown_path(text), "leads into a loop of symbolic links");
+  if (ec == std::errc::not_a_directory)
+    throw ParamError(flag, shown_path(text), "has a part that is a file, not a folder");
+  if (ec == std::errc::permission_denied)
+    throw ParamError(flag, shown_path(text), "cannot be reached: permission denied");
+  throw ParamError(flag, shown_path(text), "cannot be used: " + ec.message());
+}
+
+void check_input_file(const std::string& flag, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  check_path(flag, path);
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st))
+    throw ParamError(flag, shown_path(path.string()), "no such file");
+  if (fs::is_directory(st))
+    throw ParamError(flag, shown_path(path.string()), "is a folder, not a file");
+  if (!fs::is_regular_file(st))
+    throw ParamError(flag, shown_path(path.string()),
+                     "is not a regular file (a FIFO, device or socket): give a file");
+  if (::access(path.c_str(), R_OK) != 0)
+    throw ParamError(flag, shown_path(path.string()), "cannot be read: permission denied");
+}
+
 void create_output_dir(const std::string& flag, const std::filesystem::path& dir) {
+  check_path(flag, dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)

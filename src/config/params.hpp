@@ -139,6 +139,15 @@ std::vector<std::string> warnings(const Params& p);
 /// --force; not writable). Creates nothing.
 void validate_output_dir(const Params& p);
 
+/// Refuses (ParamError naming `flag`) a path the file system cannot take: a name in it longer
+/// than 255 bytes or the whole longer than 4095, a loop of symbolic links, a part that is not a
+/// folder, a folder it cannot search. A path that does not exist yet is fine.
+void check_path(const std::string& flag, const std::filesystem::path& path);
+
+/// check_path(), and the path names a regular file that can be read: not missing, not a
+/// folder, a FIFO or a device.
+void check_input_file(const std::string& flag, const std::filesystem::path& path);
+
 /// create_directories(dir), or ParamError naming `flag` and the reason (no filesystem_error
 /// text leaks out).
 void create_output_dir(const std::string& flag, const std::filesystem::path& dir);

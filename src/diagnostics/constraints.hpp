@@ -22,10 +22,10 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid);
 double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax);
 
 /// L2 norm over the interior points of the outer sheet (outside the outermost minimum of the
-/// areal radius: a wormhole's throat) whose areal radius lies in [Rmin, Rmax], weighted by the areal width
-/// |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the same place in
-/// every gauge, so norms of runs with different shifts compare. Returns 0 when no point lies in
-/// the window.
+/// areal radius: a wormhole's throat) whose areal radius lies in [Rmin, Rmax], weighted by the
+/// areal width |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the same
+/// place in every gauge, so norms of runs with different shifts compare. Returns 0 when no point
+/// lies in the window.
 double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
                      double Rmax);
 

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
 
@@ -122,7 +123,7 @@ DataFile::DataFile(const std::filesystem::path& path, const std::string& paramet
   write(head.data(), head.size());
   write(body.data(), body.size());
   header_size_ = head.size();
-  flush();
+  flush_buffer(); // (not flush(): the file is not at its path until renamed)
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec)
@@ -142,10 +143,23 @@ DataFile::~DataFile() {
     std::fclose(file_);
 }
 
-void DataFile::flush() {
+void DataFile::flush_buffer() {
   if (std::fflush(file_) != 0 || std::ferror(file_))
     throw OutputError(fmt::format("cannot write {}: {}", path_.string(),
                                   errno != 0 ? std::strerror(errno) : "write error"));
+}
+
+void DataFile::flush() {
+  flush_buffer();
+  // Writes into a file whose folder was removed or replaced succeed and vanish: the file must
+  // still be the one at its path.
+  struct stat open_file {
+  }, at_path{};
+  if (::fstat(::fileno(file_), &open_file) != 0 || ::stat(path_.c_str(), &at_path) != 0
+      || open_file.st_ino != at_path.st_ino || open_file.st_dev != at_path.st_dev)
+    throw OutputError(fmt::format("{} was removed or replaced during the run (its folder "
+                                  "deleted or moved?): nothing more can be kept",
+                                  path_.string()));
 }
 
 namespace {

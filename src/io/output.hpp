@@ -69,13 +69,15 @@ public:
     write(text.data(), text.size());
   }
   void write(const char* data, std::size_t size) { std::fwrite(data, 1, size, file_); }
-  /// Flushes and throws OutputError if any write since the last check failed.
+  /// Writes the buffer out (a failed write throws OutputError) and checks that the file is
+  /// still the one at its path (a removed or replaced folder throws OutputError).
   void flush();
   /// Bytes written so far (after a flush), and the header's length.
   std::uint64_t size();
   std::uint64_t header_size() const { return header_size_; }
 
 private:
+  void flush_buffer();
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
   std::uint64_t header_size_ = 0;

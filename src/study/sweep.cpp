@@ -18,6 +18,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <csignal>
+#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -27,6 +28,7 @@
 #include <set>
 #include <spawn.h>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -47,18 +49,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-std::string shell_quote(const std::string& s) {
-  if (!s.empty()
-      && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                             "0123456789-_=.,/:+")
-             == std::string::npos)
-    return s;
-  std::string q = "'";
-  for (char c : s)
-    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 /// Runs the executable with `args`, stdout and stderr into `log`; returns the exit status
 /// (-1 if it could not start, 128 + n if signal n ended it). A SIGTERM/SIGINT sent to the
 /// sweep is passed on to the member, which then stops like an interrupted evolve.
@@ -73,7 +63,7 @@ int spawn_and_wait(const std::string& exe, const std::vector<std::string>& args,
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+                                   O_WRONLY | O_CREAT | O_APPEND, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   pid_t pid;
   const int rc = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
@@ -97,16 +87,27 @@ int spawn_and_wait(const std::string& exe, const std::vector<std::string>& args,
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-/// A member's status file, "status wall reason": read back on a rerun of the sweep; a
-/// missing, empty or broken file, or an interrupted member, counts as not done.
-bool member_done(const fs::path& status_file) {
-  std::ifstream in(status_file);
-  std::string status;
+/// A member's status file, "status wall reason", as a rerun of the sweep reads it back.
+struct RecordedStatus {
+  std::string status, reason;
   double wall = 0.0;
-  std::string reason;
-  if (!(in >> status >> wall >> reason))
-    return false;
-  return status == "ok" || status == "invalid" || status == "blew-up" || status == "failed";
+};
+std::optional<RecordedStatus> recorded_status(const fs::path& status_file) {
+  std::ifstream in(status_file);
+  RecordedStatus r;
+  if (!(in >> r.status >> r.wall >> r.reason))
+    return std::nullopt;
+  return r;
+}
+
+/// Whether a member is done for good: finished (ok), or ended by its inputs (invalid, blew-up),
+/// which a rerun would only repeat. A member that failed (a write error, killed by a signal of
+/// its own such as the kernel's out-of-memory SIGKILL) or was interrupted is not: a rerun of
+/// the sweep, or its requeued task line, runs it again, from its checkpoint where it has one.
+/// A missing, empty or broken status file counts as not done.
+bool member_done(const fs::path& status_file) {
+  const auto r = recorded_status(status_file);
+  return r && (r->status == "ok" || r->status == "invalid" || r->status == "blew-up");
 }
 
 std::string last_line(const fs::path& file) {
@@ -214,6 +215,12 @@ SweepAxis parse_sweep_axis(const std::string& text) {
       throw ParamError(
           "--sweep", text,
           fmt::format("'{}' must give {} value(s) joined by ':'", point, axis.flags.size()));
+    for (const auto& v : values)
+      if (v.find_first_of(" \t") != std::string::npos)
+        throw ParamError("--sweep", printable(text),
+                         fmt::format("the value '{}' holds white space (a value is one word: "
+                                     "summary.dat's columns are separated by spaces)",
+                                     printable(v)));
     axis.values.push_back(values);
   }
   return axis;
@@ -260,6 +267,12 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
     return printable(s);
   };
   for (const auto& m : members) {
+    // the folder, and logs/NAME.inputs, .status, .lock, .log: each a name of at most 255 bytes
+    if (m.name.size() + std::string(".inputs").size() > 255)
+      throw ParamError("--sweep", values_text(m),
+                       fmt::format("gives a member folder name of {} bytes; with its log files' "
+                                   "suffixes the system's limit of 255 is passed (shorter values)",
+                                   m.name.size()));
     if (const auto [it, fresh] = by_name.emplace(m.name, &m); !fresh)
       throw ParamError("--sweep", values_text(m),
                        fmt::format("gives the member folder '{}' of '{}' again", printable(m.name),
@@ -363,6 +376,28 @@ struct MemberOutcome {
 MemberOutcome run_member(const fs::path& dir, const SweepMember& m, const std::string& exe,
                          const std::function<void()>& on_start = {}) {
   MemberOutcome o;
+  // one process at a time runs a member (a task line started twice, or two sweeps of one
+  // folder): the lock is released when this process ends, however it ends
+  const fs::path lock_file = dir / "logs" / (m.name + ".lock");
+  const int lock = ::open(lock_file.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (lock < 0)
+    throw OutputError(
+        fmt::format("cannot create {}: {}", lock_file.string(), std::strerror(errno)));
+  if (::flock(lock, LOCK_EX | LOCK_NB) != 0) {
+    ::close(lock);
+    o.status = "busy";
+    o.reason = fmt::format("another process runs this member (it holds {})", lock_file.string());
+    return o; // its status file is the other process's
+  }
+  struct Unlock {
+    int fd;
+    ~Unlock() { ::close(fd); }
+  } unlock{lock};
+  // the time an earlier, unfinished attempt took counts: wall_s is the member's total
+  const double earlier_wall = [&] {
+    const auto r = recorded_status(dir / "logs" / (m.name + ".status"));
+    return r && std::isfinite(r->wall) && r->wall > 0.0 ? r->wall : 0.0;
+  }();
   write_file_atomically(dir / "logs" / (m.name + ".inputs"), m.inputs);
   // Invalid values are caught here, before a subprocess is started.
   if (const auto why = invalid_reason(m)) {
@@ -380,7 +415,8 @@ MemberOutcome run_member(const fs::path& dir, const SweepMember& m, const std::s
     const std::vector<std::string> args =
         resumable ? std::vector<std::string>{"resume", member_dir.string()} : m.args;
     const int rc = spawn_and_wait(exe, args, log);
-    o.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    o.wall = earlier_wall
+             + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rc > 128 && stop_signal() != 0) {
       o.status = "interrupted";
       o.reason = "interrupted by " + signal_name(rc - 128);
@@ -591,12 +627,58 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
   return statuses;
 }
 
+/// The sweep's axes in their order (OUT/logs/axes): member folders are named in that order,
+/// so a rerun, --member or --collect with the axes in another order would find none of them.
+std::string axis_order_text(const std::vector<SweepAxis>& axes) {
+  std::string text;
+  for (const auto& axis : axes)
+    text += fmt::format("{}\n", fmt::join(axis.flags, ","));
+  return text;
+}
+
+void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
+  const fs::path file = fs::path(out) / "logs" / "axes";
+  create_output_dir("--out", file.parent_path());
+  if (!fs::exists(file))
+    write_file_atomically(file, axis_order_text(axes));
+}
+
+/// Refuses axes in another order than the folder's sweep (or other axes), naming its order.
+void check_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
+  std::ifstream in(fs::path(out) / "logs" / "axes");
+  if (!in)
+    return; // a new sweep, or one from before the axes were recorded
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string now = axis_order_text(axes);
+  if (text.str() == now)
+    return;
+  std::vector<std::string> before, given;
+  std::istringstream a(text.str()), b(now);
+  for (std::string line; std::getline(a, line);)
+    before.push_back(line);
+  for (std::string line; std::getline(b, line);)
+    given.push_back(line);
+  auto sorted = [](std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  throw ParamError(
+      "--sweep", fmt::format("{}", fmt::join(given, " ")),
+      sorted(before) == sorted(given)
+          ? fmt::format("gives the axes of the sweep in {} in another order: give them as it "
+                        "did, {} (member folders are named in that order)",
+                        printable(out), fmt::join(before, " then "))
+          : fmt::format("{} holds a sweep over other flags ({}): use another --out", printable(out),
+                        fmt::join(before, " then ")));
+}
+
 /// `sweep ... --member NAME`: that member alone, as an emitted task line runs it (checked
 /// against the inputs of what its folder holds, resumed from its checkpoint, its log and status
 /// in DIR/logs/). Exit status: 0 finished, 3 blew up or failed, 2 invalid, 128 + signal when
 /// interrupted; a member finished earlier is not rerun and gives its recorded status.
-int run_one_member(const SweepOptions& options, const std::vector<SweepMember>& members,
-                   const std::string& exe) {
+int run_one_member(const SweepOptions& options, const std::vector<SweepAxis>& axes,
+                   const std::vector<SweepMember>& members, const std::string& exe) {
   const auto it = std::find_if(members.begin(), members.end(),
                                [&](const SweepMember& m) { return m.name == options.member; });
   if (it == members.end())
@@ -615,8 +697,11 @@ int run_one_member(const SweepOptions& options, const std::vector<SweepMember>& 
     say("gbssn1d sweep: {} finished earlier: {}\n", m.name, o.status);
   } else {
     create_output_dir("--out", dir / "logs");
+    record_axis_order(options.out, axes);
     install_stop_handlers();
     o = run_member(dir, m, exe);
+    if (o.status == "busy")
+      throw ParamError("--member", printable(m.name), o.reason + "; nothing was run");
     say("gbssn1d sweep: {} {} ({:.1f} s){}\n", m.name, o.status, o.wall,
         o.status == "ok" ? "" : ": " + o.reason);
   }
@@ -629,8 +714,8 @@ int run_one_member(const SweepOptions& options, const std::vector<SweepMember>& 
   return 3;
 }
 
-/// The exit status for a set of member statuses: 0 if all finished, 3 if any blew up, failed or
-/// was invalid (what a direct sweep returns), 1 if the only gaps are members that have not run.
+/// The exit status for a set of member statuses: 0 if all finished, 1 if some have not run yet
+/// (--collect before every line ran), else 3 if any blew up, failed or was invalid.
 int exit_status(const std::vector<std::string>& statuses, std::size_t n) {
   std::map<std::string, std::size_t> count;
   for (const auto& s : statuses)
@@ -643,8 +728,8 @@ int exit_status(const std::vector<std::string>& statuses, std::size_t n) {
       parts.push_back(fmt::format("{} {}", k, status));
   say("gbssn1d sweep: {} of {} members did not complete ({}; see summary.dat)\n", n - count["ok"],
       n, fmt::join(parts, ", "));
-  const bool only_missing = count["missing"] + count["ok"] == n;
-  return only_missing ? 1 : 3;
+  // members not run yet: the study is not complete, whatever the others did (collect again)
+  return count["missing"] > 0 ? 1 : 3;
 }
 
 } // namespace
@@ -664,6 +749,22 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
   if (options.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
+  check_path("--out", options.out);
+  {
+    double count = 1.0;
+    std::vector<std::string> sizes;
+    for (const auto& axis : axes) {
+      count *= static_cast<double>(axis.values.size());
+      sizes.push_back(
+          fmt::format("{} ({} values)", fmt::join(axis.flags, ","), axis.values.size()));
+    }
+    if (count > static_cast<double>(kMembersMax))
+      throw ParamError("--sweep", fmt::format("{}", fmt::join(sizes, " x ")),
+                       fmt::format("gives {:.0f} members, more than {}: split it into sweeps "
+                                   "of fewer values (each into its own --out)",
+                                   count, kMembersMax));
+  }
+  check_axis_order(options.out, axes);
   const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
   if (options.member.empty() && !options.collect)
     for (const auto& g : same_runs(members))
@@ -696,7 +797,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
 
   const fs::path dir(options.out);
   if (!options.member.empty() && !options.collect && options.emit_tasks.empty())
-    return run_one_member(options, members, exe);
+    return run_one_member(options, axes, members, exe);
   if (options.collect) {
     check_earlier_inputs(dir, all_of(members), options.out);
     const auto statuses = write_summary(dir, options, axes, members);
@@ -727,6 +828,21 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       lines += '\n';
       ++emitted;
     }
+    check_path("--emit-tasks", options.emit_tasks);
+    if (abs_out.find_first_of("\n\r") != std::string::npos)
+      throw ParamError("--out", printable(options.out),
+                       "holds a line break, which would split its task lines");
+    // an existing file is not overwritten unless it holds these very lines (a rerun of the
+    // same emit); a device or FIFO (/dev/stdout into a pipe) is written to as it is
+    if (fs::is_regular_file(options.emit_tasks)) {
+      std::ifstream old(options.emit_tasks, std::ios::binary);
+      std::ostringstream text;
+      text << old.rdbuf();
+      if (text.str() != lines)
+        throw ParamError("--emit-tasks", printable(options.emit_tasks),
+                         "exists and holds something else: nothing was written (name a new "
+                         "file, or remove this one)");
+    }
     std::ofstream tasks(options.emit_tasks);
     if (!tasks)
       throw ParamError("--emit-tasks", options.emit_tasks, "cannot be written");
@@ -735,6 +851,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     if (!tasks)
       throw OutputError(fmt::format("--emit-tasks {}: the command lines could not be written",
                                     options.emit_tasks));
+    record_axis_order(options.out, axes); // (the folder is made once the lines are written)
     say("gbssn1d sweep: {} member command lines written to {} (of {} members); then "
         "`gbssn1d sweep ... --collect` with the same flags builds summary.dat\n",
         emitted, options.emit_tasks, members.size());
@@ -745,6 +862,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   // anything there was run with the inputs it would run with now.
   check_earlier_inputs(dir, all_of(members), options.out);
   create_output_dir("--out", dir / "logs");
+  record_axis_order(options.out, axes);
   install_stop_handlers();
   std::mutex mutex;
   std::size_t finished = 0; // members done in this run (under `mutex`)

@@ -2,6 +2,7 @@
 // `evolve` subprocess in its own directory named by its values; a summary table; resumable.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
 /// A finished member whose H_L2_R_max exceeds this many times the median of its neighbours
 /// along an axis is flagged `spike` in summary.dat (and named on stderr).
 inline constexpr double kSpikeFactor = 100.0;
+
+/// Most members a sweep takes (a product of value lists grows fast: 100 x 100 x 100 would be
+/// a million processes); more is refused before anything is made.
+inline constexpr std::size_t kMembersMax = 10000;
 
 struct SweepOptions {
   std::vector<std::string> sweeps; ///< the --sweep arguments

@@ -1,6 +1,8 @@
 // The command line as a user meets it: the real executable, bad input refused with one line
 // naming the parameter and nothing written, and config files that repeat a run exactly.
 #include "../test_support.hpp"
+#include "config/config_file.hpp"
+#include "config/params.hpp"
 
 #include <doctest/doctest.h>
 
@@ -20,6 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using gbssn1d::ParamError;
+using gbssn1d::read_config_text;
+using gbssn1d::toml_string;
 using gbssn1d::testing::scratch;
 
 struct Result {
@@ -705,7 +710,7 @@ TEST_CASE("converge interrupted: exit 130, and its files and message say they ar
   const fs::path out = scratch("converge_sigint");
   const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
                           + " converge --N 800,1000,1200 -j 3 --grid uniform --rmax 100"
-                            " --id 1log-trumpet --tmax 500 --out "
+                            " --id 1log-trumpet --tmax 200 --out "
                           + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
                           + out.string()
                           + "/N1200/horizon.dat ]; do sleep 0.05; done; sleep 0.3; kill -INT $p;"
@@ -722,6 +727,102 @@ TEST_CASE("converge interrupted: exit 130, and its files and message say they ar
     CHECK(text.find("# status: interrupted by SIGINT") != std::string::npos);
     CHECK(text.substr(text.rfind("# end:")).find("# end: interrupted by SIGINT") == 0);
   }
+  // "rerun the same command to resume", as its files say: the same command continues the
+  // study, its members from their checkpoints, to the end
+  CHECK(err.find("rerun the same command") != std::string::npos);
+  const Result again = run("converge --N 800,1000,1200 -j 3 --grid uniform --rmax 100"
+                           " --id 1log-trumpet --tmax 200 --out "
+                           + out.string());
+  INFO(again.err);
+  CHECK((again.status == 0 || again.status == 4));
+  CHECK(again.err.find("members continue from their checkpoints") != std::string::npos);
+  CHECK(again.err.find("resumes at t =") != std::string::npos);
+  const std::string text = slurp(out / "convergence.dat");
+  CHECK(text.substr(text.rfind("# end:")).find("# end: completed at t = 200") == 0);
   fs::remove_all(out);
   fs::remove(out.string() + ".err");
+}
+
+TEST_CASE("config files read back every string exactly: '#', quotes, backslashes, newlines") {
+  for (const std::string value :
+       {"a#b", "q\"b", "back\\slash", "nl\nx", "tab\tx", "sq'x", "ctl\x01x", "trailing "}) {
+    INFO(value);
+    CHECK(read_config_text("out = " + toml_string(value) + "  # a comment\n", "f").at(0).second
+          == value);
+    // through a run's config.toml: --print-config of it gives the same text back
+    const fs::path dir = scratch("cfg_strings");
+    fs::create_directories(dir);
+    const fs::path cfg = dir / "config.toml";
+    std::ofstream(cfg) << "out = " << toml_string(value) << "\n";
+    const Result r = run("evolve --config " + cfg.string() + " --print-config");
+    CHECK(r.status == 0);
+    CHECK(r.out.find("out = " + toml_string(value) + "\n") != std::string::npos);
+    fs::remove_all(dir);
+  }
+  // what the reader refuses, naming the line
+  for (const auto& [text, why] : std::vector<std::pair<std::string, std::string>>{
+           {"[evolve]\nN = 1\n", "line 1: '[evolve]': sections are not read"},
+           {"N = 1\nN = 2\n", "line 2: key 'N' is given again (first on line 1)"},
+           {"out = \"abc\n", "line 1: key 'out': its string has no closing"},
+           {"out = \"a\\qb\"\n", "unknown escape"},
+           {"N = 1 2\n", "'2' after its value"},
+           {"N = [1, 2]\n", "needs exactly one value"}}) {
+    INFO(text);
+    try {
+      (void)read_config_text(text, "f");
+      FAIL("not refused");
+    } catch (const ParamError& e) {
+      CHECK(std::string(e.what()).find(why) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("the output folder removed during a run: the run stops with exit 1 and says why") {
+  const fs::path out = scratch("removed_during");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --id 1log-trumpet --grid uniform --N 1600 --rmax 200"
+                            " --tmax 2000 --out "
+                          + out.string() + " 2>" + out.string()
+                          + ".err & p=$!; for i in $(seq "
+                            "1200); do [ -s "
+                          + out.string()
+                          + "/horizon.dat ] && break; sleep 0.05; "
+                            "done; rm -rf "
+                          + out.string() + "; wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 1);
+  const std::string err = slurp(out.string() + ".err");
+  CHECK(err.find("was removed or replaced during the run") != std::string::npos);
+  CHECK(err.find("reached t =") == std::string::npos);
+  fs::remove(out.string() + ".err");
+  fs::remove_all(out);
+}
+
+TEST_CASE("the resume hint is a command that works as pasted: the program as invoked, quoted") {
+  const fs::path out = scratch("hint dir");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+                            " --tmax 2000 --out \""
+                          + out.string() + "\" 2>\"" + out.string()
+                          + ".err\" & p=$!; for i in $(seq 1200); do [ -s \"" + out.string()
+                          + "/horizon.dat\" ] && break; sleep 0.05; done; kill -TERM $p; "
+                            "wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 143);
+  const std::string err = slurp(out.string() + ".err");
+  const std::string hint = std::string(GBSSN1D_EXECUTABLE) + " resume '" + out.string() + "'";
+  CHECK(err.find("resume with: " + hint) != std::string::npos);
+  // pasted into a shell, it finds the program and the run: asked for an end before the
+  // checkpoint (so that it is quick), it names the checkpoint
+  const fs::path hint_err = scratch("hint.err");
+  const int resumed =
+      std::system((hint + " --tmax 0.001 >/dev/null 2>" + hint_err.string()).c_str());
+  CHECK(WIFEXITED(resumed));
+  CHECK(WEXITSTATUS(resumed) == 2);
+  CHECK(slurp(hint_err).find("is before the checkpoint at t =") != std::string::npos);
+  fs::remove(hint_err);
+  fs::remove(out.string() + ".err");
+  fs::remove_all(out);
 }

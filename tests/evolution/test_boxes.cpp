@@ -173,6 +173,9 @@ TEST_CASE("a box run resumed from a checkpoint is bit-identical on every level")
     resumed.run(nullptr);
     for (std::size_t l = 0; l < 6; ++l)
       CHECK(resumed.level_states()[l] == whole.level_states()[l]);
+    // and so are its counts of RHS evaluations (every level's, with its subcycling factor)
+    CHECK(resumed.evaluations() == whole.evaluations());
+    CHECK(resumed.point_evaluations() == whole.point_evaluations());
     // a checkpoint of other levels is refused
     Simulation other = simulation(boxes(5, 64.0, 20));
     CHECK_THROWS_AS(other.restore(read), CheckpointError);

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -597,5 +599,102 @@ TEST_CASE("sweep: a member whose constraints spike far above its neighbours' is 
         != std::string::npos);
   const auto first = err.find("lets the outer boundary");
   CHECK(err.find("lets the outer boundary", first + 1) == std::string::npos);
+  fs::remove_all(out);
+}
+
+namespace {
+
+/// The pid of a running `gbssn1d evolve` whose command line holds `text`, or 0.
+pid_t evolve_process_with(const std::string& text) {
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    std::string cmdline = slurp(e.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (cmdline.find(" evolve ") != std::string::npos && cmdline.find(text) != std::string::npos)
+      return static_cast<pid_t>(std::stol(name));
+  }
+  return 0;
+}
+
+std::string recorded_status(const fs::path& status_file) {
+  std::ifstream in(status_file);
+  std::string status;
+  in >> status;
+  return status;
+}
+
+} // namespace
+
+TEST_CASE("sweep: a failed or killed member runs again from its checkpoint, a blown-up one does "
+          "not, and one process at a time runs a member") {
+  // one member runs for a few seconds with checkpoints, the other blows up
+  const std::string flags = " --sweep rah-variant=consistent,delta-rhs-from-gd"
+                            " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 1500"
+                            " --dt-series 1 --dt-profiles 500 --rahA 0.5 --rah0 0.6"
+                            " --checkpoint-every 5";
+  const fs::path out = scratch("sweep_killed");
+  const std::string good = "rah-variant=consistent", bad = "rah-variant=delta-rhs-from-gd";
+  // the sweep in the background; its good member's evolve is killed on its own (SIGKILL, as
+  // the kernel's out-of-memory killer does) once it has written a checkpoint
+  const fs::path done_flag = scratch("sweep_killed_rc");
+  const std::string cmd = "(" + std::string(GBSSN1D_EXECUTABLE) + " sweep -j 2 --out "
+                          + out.string() + flags + " >/dev/null 2>&1; echo $? > "
+                          + done_flag.string() + ") &";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const fs::path checkpoint = out / good / "checkpoint.bin";
+  for (int k = 0; k < 2000 && !fs::exists(checkpoint); ++k)
+    ::usleep(10000);
+  REQUIRE(fs::exists(checkpoint));
+  const pid_t child = evolve_process_with((out / good).string());
+  REQUIRE(child > 0);
+  REQUIRE(::kill(child, SIGKILL) == 0);
+  for (int k = 0; k < 3000 && !(fs::exists(done_flag) && fs::file_size(done_flag) > 0); ++k)
+    ::usleep(10000);
+  REQUIRE(fs::exists(done_flag));
+  CHECK(slurp(done_flag) == "3\n"); // a member failed
+  CHECK(recorded_status(out / "logs" / (good + ".status")) == "failed");
+  CHECK(slurp(out / "logs" / (good + ".status")).find("killed_by") != std::string::npos);
+  CHECK(recorded_status(out / "logs" / (bad + ".status")) == "blew-up");
+  double wall_before = 0.0;
+  {
+    std::ifstream in(out / "logs" / (good + ".status"));
+    std::string status;
+    in >> status >> wall_before;
+  }
+  const auto bad_stamp = fs::last_write_time(out / bad / "timeseries.dat");
+
+  // while a process holds a member's lock, its line is refused and runs nothing
+  {
+    const fs::path lock = out / "logs" / (good + ".lock");
+    const int fd = ::open(lock.c_str(), O_WRONLY | O_CREAT, 0644);
+    REQUIRE(fd >= 0);
+    REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+    std::string err;
+    CHECK(run("sweep --out " + out.string() + flags + " --member " + good, &err) == 2);
+    CHECK(err.find("another process runs this member") != std::string::npos);
+    CHECK(recorded_status(out / "logs" / (good + ".status")) == "failed");
+    ::close(fd);
+  }
+
+  // the rerun runs the failed member again, resuming from its checkpoint, and leaves the
+  // blown-up one alone (rerunning it would blow up again)
+  CHECK(run("sweep -j 2 --out " + out.string() + flags) == 3);
+  CHECK(recorded_status(out / "logs" / (good + ".status")) == "ok");
+  CHECK(slurp(out / "logs" / (good + ".log")).find("resuming") != std::string::npos);
+  CHECK(fs::last_write_time(out / bad / "timeseries.dat") == bad_stamp);
+  double wall_after = 0.0;
+  {
+    std::ifstream in(out / "logs" / (good + ".status"));
+    std::string status;
+    in >> status >> wall_after;
+  }
+  CHECK(wall_after > wall_before); // the member's total over both attempts
+  // the finished member is not run a third time
+  const auto good_stamp = fs::last_write_time(out / good / "timeseries.dat");
+  CHECK(run("sweep -j 2 --out " + out.string() + flags) == 3);
+  CHECK(fs::last_write_time(out / good / "timeseries.dat") == good_stamp);
+  fs::remove(done_flag);
   fs::remove_all(out);
 }
