@@ -147,10 +147,14 @@ SeriesEnd series_end(const std::filesystem::path& file) {
 int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
-  if (!fs::is_regular_file(dir / "config.toml"))
-    throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
-  if (!fs::is_regular_file(dir / "checkpoint.bin"))
-    throw ParamError("DIR", dir_name,
+  // the non-throwing forms: a path too long or a symlink loop is refused, naming DIR
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / "config.toml", ec))
+    throw ParamError("DIR", printable(dir_name),
+                     ec ? "cannot be read: " + ec.message()
+                        : std::string("has no config.toml (not a gbssn1d output directory)"));
+  if (!fs::is_regular_file(dir / "checkpoint.bin", ec))
+    throw ParamError("DIR", printable(dir_name),
                      "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
                      "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
   Params p = parse_evolve_args({"--config", (dir / "config.toml").string()});
@@ -188,7 +192,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   // the h_AH file as the run read it at its start (its copy), whatever the flag's path names now
   Params run_params = p;
   if (const std::filesystem::path copy = dir / prescribed_horizon_copy;
-      !p.rah_hAH_file.empty() && p.rahA != 0.0 && fs::is_regular_file(copy)) {
+      !p.rah_hAH_file.empty() && p.rahA != 0.0 && fs::is_regular_file(copy, ec)) {
     std::optional<std::string> now;
     try {
       now = prescribed_horizon_content(p);
@@ -341,8 +345,9 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   resolve_defaults(base);
   // A converge folder of other inputs: say which, so that nobody takes --force lightly (with
   // --force the members rerun; a member resumes only from a checkpoint of its own inputs).
+  std::error_code ec; // a path that cannot be examined is refused by validate_output_dir
   if (const auto old = std::filesystem::path(options.out) / "config.toml";
-      !options.force && std::filesystem::is_regular_file(old)) {
+      !options.force && std::filesystem::is_regular_file(old, ec)) {
     std::ifstream in(old);
     std::stringstream text;
     text << in.rdbuf();

@@ -257,8 +257,11 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
       rest.push_back(args[k]);
       continue;
     }
-    if (!std::filesystem::is_regular_file(path))
-      throw ParamError("--config", path, "no such file");
+    // the non-throwing form: a path too long or a symlink loop is refused, not an abort
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw ParamError("--config", printable(path),
+                       ec ? "cannot be read: " + ec.message() : std::string("no such file"));
     std::vector<CLI::ConfigItem> items;
     try {
       items = CLI::ConfigTOML().from_file(path);

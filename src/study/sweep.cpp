@@ -173,8 +173,9 @@ std::string member_inputs(const SweepMember& m) {
 /// it started, or (for a member folder without one) the member's config.toml; empty if nothing
 /// of it is there.
 std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
+  std::error_code ec; // a path that cannot be examined holds nothing (its creation is refused)
   for (const fs::path& file : {dir / "logs" / (m.name + ".inputs"), dir / m.name / "config.toml"})
-    if (fs::is_regular_file(file)) {
+    if (fs::is_regular_file(file, ec)) {
       std::ifstream in(file);
       std::stringstream s;
       s << in.rdbuf();

@@ -159,6 +159,12 @@ TEST_CASE("hostile inputs: each refused cleanly, naming its flag, nothing writte
       std::ofstream(dir / w[0]) << w[1];
       continue;
     }
+    if (line.rfind("@link ", 0) == 0) { // @link NAME TARGET (a symbolic link; NAME NAME: a loop)
+      const auto w = words(line.substr(6));
+      REQUIRE(w.size() == 2);
+      fs::create_symlink(w[1], dir / w[0]);
+      continue;
+    }
     const auto bar1 = line.find(" | "), bar2 = line.find(" | ", bar1 + 3);
     REQUIRE_MESSAGE(bar2 != std::string::npos, "malformed row: " << line);
     const int expected = std::stoi(line.substr(0, bar1));
