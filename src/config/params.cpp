@@ -438,6 +438,7 @@ void validate(const Params& p) {
                        "must be >= --ah-tmin (leave it out for no limit)");
   }
   require_positive("--ah-tol", p.ah_tol);
+  require_recordable_path("--rah-hAH-file", p.rah_hAH_file);
   constexpr std::array<std::string_view, 7> variants{
       "consistent",        "no-shift-derivatives", "no-shift-second-derivatives",
       "delta-rhs-from-gd", "driver-full-shift",    "midstep-update",
@@ -523,10 +524,25 @@ void validate(const Params& p) {
                      "is a single-grid study variant (its searches count one grid's RHS calls)");
 }
 
+void require_recordable_path(const std::string& flag, const std::string& text) {
+  const auto bad = std::find_if(text.begin(), text.end(),
+                                [](unsigned char c) { return c == '#' || c < 0x20 || c == 0x7f; });
+  if (bad == text.end())
+    return;
+  throw ParamError(flag, printable(text),
+                   *bad == '#' ? std::string("holds '#', which starts a comment in config.toml: "
+                                             "the run could not be repeated or resumed from its "
+                                             "record (choose a name without '#')")
+                               : fmt::format("holds a control character ({}): a path must be one "
+                                             "line of text that config.toml can record",
+                                             printable(std::string(1, *bad))));
+}
+
 void validate_output_dir(const Params& p) {
   namespace fs = std::filesystem;
   if (p.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
+  require_recordable_path("--out", p.out);
   std::error_code ec;
   const fs::path dir(p.out);
   if (fs::exists(dir, ec)) {

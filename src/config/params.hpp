@@ -135,8 +135,13 @@ void validate(const Params& p);
 /// Valid but known-bad combinations, each a sentence for stderr (the run goes ahead).
 std::vector<std::string> warnings(const Params& p);
 
+/// Throws ParamError naming `flag` if the path `text` cannot be recorded in config.toml and read
+/// back as the same path (a config file's '#' starts a comment wherever it stands, and a value
+/// is one line): a path holding '#' or a control character.
+void require_recordable_path(const std::string& flag, const std::string& text);
+
 /// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
-/// --force; not writable). Creates nothing.
+/// --force; not writable; not recordable in config.toml). Creates nothing.
 void validate_output_dir(const Params& p);
 
 /// create_directories(dir), or ParamError naming `flag` and the reason (no filesystem_error

@@ -665,6 +665,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
   }
   if (options.out.empty())
     throw ParamError("--out", "''", "an output directory is required");
+  require_recordable_path("--out", options.out); // each member records its folder
   const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
   if (options.member.empty() && !options.collect)
     for (const auto& g : same_runs(members))
