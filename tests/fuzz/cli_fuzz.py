@@ -664,7 +664,7 @@ LEAKS = ("terminate called", "std::", "filesystem error", "basic_string", "bad_a
          "core dumped", "CLI::", "boost::", "Aborted")
 # exit status 1 is a failed write (or `sweep --collect` with members not run yet)
 WRITE_FAILURE = re.compile(r"cannot write|could not be written|cannot replace|is incomplete|"
-                           r"standard output|did not complete")
+                           r"for writing|standard output|did not complete")
 NAMES_A_FLAG = re.compile(r"(--[A-Za-z][\w-]*|-j\b|\bDIR\b|subcommand|argument)")
 ALLOWED = {"evolve": {0, 1, 2, 3}, "resume": {0, 1, 2, 3}, "converge": {0, 1, 2, 3, 4},
            "sweep": {0, 1, 2, 3}, None: {0, 1, 2}}
@@ -807,9 +807,15 @@ def out_dir(case):
 
 def may_change_done(case, status):
     """Whether the input asks to write into the finished run: --force with --out done (or a
-    folder inside it), resume done with a --tmax after its end."""
+    folder inside it), resume done with a --tmax after its end, --emit-tasks naming a file in
+    it (an output file named by the user is written, as `-o FILE` is)."""
     args = case.args
     sub = subcommand(args)
+    for k, a in enumerate(args):
+        target = a[len("--emit-tasks="):] if a.startswith("--emit-tasks=") else (
+            args[k + 1] if a == "--emit-tasks" and k + 1 < len(args) else None)
+        if sub == "sweep" and target and os.path.normpath(target).split(os.sep)[0] == DONE:
+            return True
     out = out_dir(case)
     target_done = out is not None and os.path.normpath(out).split(os.sep)[0] == DONE
     if sub == "resume":
@@ -1043,6 +1049,9 @@ def main():
             state["stopped"] = True
             return  # the budget is spent: no new inputs (a found failure still shrinks)
         state["runs"] += 1
+        if state["runs"] % 1000 == 0:
+            print(f"cli fuzz: {state['runs']} inputs, {time.monotonic() - start:.0f} s",
+                  flush=True)
         found, (status, err) = check(exe, templates, case)
         key = f"{subcommand(case.args)}:{status}"
         state["statuses"][key] = state["statuses"].get(key, 0) + 1
