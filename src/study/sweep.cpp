@@ -711,6 +711,14 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     // into the sweep's folder, from whatever folder the scheduler starts it in. Invalid
     // members are not emitted; --collect marks them.
     check_earlier_inputs(dir, all_of(members), options.out);
+    {
+      // the folder every line runs its member into must be able to be one: refused here, not
+      // by each task on the cluster (a sweep's folder may hold members already: a rerun)
+      Params o;
+      o.out = options.out;
+      o.force = true;
+      validate_output_dir(o);
+    }
     const std::string cwd = fs::current_path().string();
     const std::string abs_out = fs::absolute(options.out).lexically_normal().string();
     std::string lines;
