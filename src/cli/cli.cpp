@@ -357,8 +357,9 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   bool continuing = false;
   // A converge folder of other inputs: say which, so that nobody takes --force lightly (with
   // --force the members rerun; a member resumes only from a checkpoint of its own inputs).
+  std::error_code ec; // a path that cannot be examined is refused by validate_output_dir
   if (const auto old = std::filesystem::path(options.out) / "config.toml";
-      !options.force && std::filesystem::is_regular_file(old)) {
+      !options.force && std::filesystem::is_regular_file(old, ec)) {
     std::ifstream in(old);
     std::stringstream text;
     text << in.rdbuf();

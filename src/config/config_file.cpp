@@ -465,7 +465,22 @@ Params parse_evolve_args(const std::vector<std::string>& args) {
   Params p;
   add_options(app, p);
   std::reverse(expanded.begin(), expanded.end());
-  app.parse(expanded);
+  try {
+    app.parse(expanded);
+  } catch (const CLI::ParseError& e) {
+    // converge and sweep pass their other flags on to evolve: one that evolve does not know, or
+    // a value it cannot take, is invalid input (exit status 2) naming it, as in evolve itself
+    for (const auto& a : args)
+      if (a.size() > 2 && a.rfind("--", 0) == 0) {
+        const std::string name = a.substr(2, a.find('=') - 2);
+        if (!is_parameter_name(name) && name != "config")
+          throw ParamError("--" + printable(name),
+                           "is not an evolve flag (`gbssn1d evolve --help` lists them)");
+      }
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    throw ParamError("argument", printable(what));
+  }
   return p;
 }
 

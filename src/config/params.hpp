@@ -136,7 +136,7 @@ void validate(const Params& p);
 std::vector<std::string> warnings(const Params& p);
 
 /// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
-/// --force; not writable). Creates nothing.
+/// --force; not writable; a path the file system cannot take). Creates nothing.
 void validate_output_dir(const Params& p);
 
 /// Refuses (ParamError naming `flag`) a path the file system cannot take: a name in it longer

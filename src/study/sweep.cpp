@@ -174,8 +174,9 @@ std::string member_inputs(const SweepMember& m) {
 /// it started, or (for a member folder without one) the member's config.toml; empty if nothing
 /// of it is there.
 std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
+  std::error_code ec; // a path that cannot be examined holds nothing (its creation is refused)
   for (const fs::path& file : {dir / "logs" / (m.name + ".inputs"), dir / m.name / "config.toml"})
-    if (fs::is_regular_file(file)) {
+    if (fs::is_regular_file(file, ec)) {
       std::ifstream in(file);
       std::stringstream s;
       s << in.rdbuf();
@@ -810,6 +811,14 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     // into the sweep's folder, from whatever folder the scheduler starts it in. Invalid
     // members are not emitted; --collect marks them.
     check_earlier_inputs(dir, all_of(members), options.out);
+    {
+      // the folder every line runs its member into must be able to be one: refused here, not
+      // by each task on the cluster (a sweep's folder may hold members already: a rerun)
+      Params o;
+      o.out = options.out;
+      o.force = true;
+      validate_output_dir(o);
+    }
     const std::string cwd = fs::current_path().string();
     const std::string abs_out = fs::absolute(options.out).lexically_normal().string();
     std::string lines;
