@@ -2,13 +2,14 @@
 # Deliberate mistakes that the test suite must catch. Each is applied alone to a clean copy of
 # HEAD, the suite is rebuilt, and tests are run to see that some test fails.
 #
-# Usage: tests/mistakes.sh [--full]
+# Usage: tests/mistakes.sh [--full] [--only PATTERN]
 #   (default, as CI runs it) for each mistake, rebuild only the targets that its named tests
 #     need (the last column of the table below: the ctest names, as `ctest -N` prints them, of
 #     the fastest tests known to catch it) and run only those tests; at least one of them must
 #     fail. Stops at the first mistake that is not caught, naming it, with exit status 1.
 #     Mostly recompiling: about 28 minutes of processor time (29 minutes measured on 2 shared,
 #     busy cores), of which the 6 mistakes in widely included headers take two thirds.
+#   --only PATTERN  (by hand) only the mistakes whose name matches the grep -E pattern
 #   --full  (by hand, 35-60 minutes on 2 cores: the whole suite per mistake) rebuild everything and run the WHOLE suite
 #     for every mistake, list every test that catches it, and report where the named tests
 #     disagree: a named test that does not catch its mistake (or does not exist) is an error,
@@ -20,12 +21,16 @@
 # file a mistake touched compiles from the cache once restored.
 set -euo pipefail
 mode=named
-case "${1:-}" in
-  "") ;;
-  --full) mode=full ;;
-  -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
-  *) echo "usage: $0 [--full]" >&2; exit 2 ;;
-esac
+only=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --full) mode=full ;;
+    --only) only=${2:?--only needs a pattern}; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "usage: $0 [--full] [--only PATTERN]" >&2; exit 2 ;;
+  esac
+  shift
+done
 repo=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 launcher=()
@@ -92,6 +97,15 @@ mistakes=(
   "the published driver stencil as the default again|src/config/params.hpp|  std::string driver_advection = \"matched\";|  std::string driver_advection = \"upwind-gd\";|B's driver term under refinement: the published upwind-gd stencil blows up at a time that falls with the spacing, the matched stencil (default) runs"
   "the areal window's outer sheet from the global minimum of R|src/diagnostics/constraints.cpp|  while (throat > 0 && R_areal[throat - 1] <= R_areal[throat])\n    --throat;|  throat = static_cast<std::size_t>(std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());|areal-radius norms: weights the areal widths, select by R, only the outer sheet, and the interior window"
   "empty flag values accepted again|src/cli/cli.cpp|    refuse_empty_values(args);\n|    (void)refuse_empty_values;\n|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
+  "a resumed box run's finer levels count RHS evaluations without their subcycling factor|src/evolution/simulation.cpp|          + 4 * static_cast<std::uint64_t>(c.step) * static_cast<std::uint64_t>(stepper_.steps(l));|          + 4 * static_cast<std::uint64_t>(c.step);|a box run resumed from a checkpoint is bit-identical on every level"
+  "sweep: failed members done for good (a killed member never resumed)|src/study/sweep.cpp|r->status == \"invalid\" || r->status == \"blew-up\");|r->status == \"invalid\" || r->status == \"blew-up\" || r->status == \"failed\");|sweep: a failed or killed member runs again from its checkpoint, a blown-up one does not, and one process at a time runs a member"
+  "sweep: blown-up members run again on a rerun|src/study/sweep.cpp|r->status == \"invalid\" || r->status == \"blew-up\");|r->status == \"invalid\");|sweep: a failed or killed member runs again from its checkpoint, a blown-up one does not, and one process at a time runs a member"
+  "sweep: no member lock (one member run by two processes at once)|src/study/sweep.cpp|  if (::flock(lock, LOCK_EX|  if (false && ::flock(lock, LOCK_EX|sweep: a failed or killed member runs again from its checkpoint, a blown-up one does not, and one process at a time runs a member"
+  "a study task's exception leaves its thread (abort)|src/study/parallel.hpp|            first = std::current_exception();|            throw;|run_tasks: every task once, and a task's exception is rethrown to the caller, later tasks are not started"
+  "config strings: escapes read as the escaped letter|src/config/config_file.cpp|          value += it->second;|          value += e;|config files read back every string exactly: '#', quotes, backslashes, newlines"
+  "a removed output folder not noticed (exit 0, nothing on disk)|src/io/output.cpp|    throw OutputError(fmt::format(\"{} was removed|    (void)(fmt::format(\"{} was removed|the output folder removed during a run: the run stops with exit 1 and says why"
+  "converge interrupted: the same command refused instead of continuing|src/cli/cli.cpp|    continuing = true;|    continuing = false;|converge interrupted: exit 130, and its files and message say they are partial"
+  "sweep --emit-tasks overwrites a file of other content|src/study/sweep.cpp|      if (text.str() != lines)|      if (false)|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
@@ -112,6 +126,33 @@ failed_tests() {
     | awk -F'\t' '$1 != "Not Run" && $1 != "Disabled" {print $2}'
 }
 
+# named mode: the test file of every doctest case, so that a mistake's doctest cases run from
+# their file's own executable (gbssn1d_tests_<file>, tests/CMakeLists.txt), whose rebuild after
+# a header's mistake is the library and that one file
+declare -A file_of
+if [ $mode = named ]; then
+  for src in tests/*/test_*.cpp; do
+    stem=$(basename "$src" .cpp)
+    while IFS= read -r case_name; do
+      file_of["$case_name"]=$stem
+    done < <(build/tests/gbssn1d_tests --list-test-cases --source-file="*/$src" \
+               | sed -n '3,$p' | sed '/^=====/,$d')
+  done
+fi
+# Runs one doctest case from its file's executable; prints its output; fails if it fails (or
+# matches no case)
+run_case() {
+  local exe=$1 name=$2 out status=0
+  # a doctest filter separates names at ',': escaped
+  out=$(cd build/tests && timeout 1500 "./$exe" --test-case="${name//,/\\,}" 2>&1) || status=$?
+  echo "$out"
+  if ! grep -q "test cases: *1 |" <<<"$out"; then
+    echo "(no test case matched)"
+    return 99
+  fi
+  return $status
+}
+
 start=$(date +%s)
 caught=0
 problems=0
@@ -126,6 +167,13 @@ problem() {
     exit 1
   fi
 }
+if [ -n "$only" ]; then
+  selected=()
+  for m in "${mistakes[@]}"; do
+    grep -Eq -- "$only" <<<"${m%%|*}" && selected+=("$m")
+  done
+  mistakes=("${selected[@]}")
+fi
 for m in "${mistakes[@]}"; do
   IFS='|' read -r name file from to named <<<"$m"
   git checkout -q -- .
@@ -143,12 +191,18 @@ PY
   fi
   tests=$(list_tests)
   IFS=';' read -ra named_tests <<<"$named"
-  numbers=() targets=() missing=()
+  numbers=() targets=() cases=() missing=()
   for t in "${named_tests[@]}"; do
     row=$(awk -F'\t' -v t="$t" '$3 == t' <<<"$tests")
     if [ -z "$row" ]; then missing+=("$t"); continue; fi
-    numbers+=("$(cut -f1 <<<"$row")")
-    targets+=("$(cut -f2 <<<"$row")")
+    target=$(cut -f2 <<<"$row")
+    if [ $mode = named ] && [ "$target" = gbssn1d_tests ] && [ -n "${file_of[$t]:-}" ]; then
+      cases+=("$t")
+      targets+=("gbssn1d_tests_${file_of[$t]}")
+    else
+      numbers+=("$(cut -f1 <<<"$row")")
+      targets+=("$target")
+    fi
   done
   if [ ${#named_tests[@]} -eq 0 ] || [ ${#missing[@]} -gt 0 ]; then
     problem "$name: no test named, or a named test does not exist: ${missing[*]:-(none named)} (update this script)"
@@ -165,10 +219,29 @@ PY
   if [ $mode = full ]; then
     out=$(cd build && ctest -j "$jobs" 2>&1 || true)
   else
-    # ctest -I Start,End,Stride,number,...: exactly the named tests, by number
-    out=$(cd build && ctest -j "$jobs" -I "0,0,0,$(IFS=,; echo "${numbers[*]}")" 2>&1 || true)
+    # doctest cases from their files' executables; the rest (runs of the binary, scripts)
+    # through ctest -I Start,End,Stride,number,...: exactly those tests, by number
+    out="" failed=""
+    for t in "${cases[@]}"; do
+      case_status=0
+      case_out=$(run_case "gbssn1d_tests_${file_of[$t]}" "$t") || case_status=$?
+      if [ $case_status -eq 99 ]; then
+        problem "$name: the filter for '$t' matches no test case (update this script)"
+      elif [ $case_status -ne 0 ]; then
+        failed+="$t"$'\n'
+        out+="$case_out"$'\n'
+      fi
+    done
+    if [ ${#numbers[@]} -gt 0 ]; then
+      ctest_out=$(cd build && ctest -j "$jobs" -I "0,0,0,$(IFS=,; echo "${numbers[*]}")" 2>&1 || true)
+      out+="$ctest_out"
+      failed+=$(failed_tests <<<"$ctest_out")
+    fi
+    failed=$(sed '/^$/d' <<<"$failed")
   fi
-  failed=$(failed_tests <<<"$out")
+  if [ $mode = full ]; then
+    failed=$(failed_tests <<<"$out")
+  fi
   t2=$(date +%s)
   times="build $((t1 - t0)) s, tests $((t2 - t1)) s"
   if [ $mode = named ]; then
