@@ -152,9 +152,18 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
   check_path("DIR", dir);
-  if (!fs::is_regular_file(dir / "config.toml"))
+  // a file of the run that cannot even be examined (a loop of symbolic links) is refused
+  auto has_file = [&](const char* name) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(dir / name, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      throw ParamError("DIR", printable(dir_name),
+                       fmt::format("its {} cannot be read: {}", name, ec.message()));
+    return fs::is_regular_file(st);
+  };
+  if (!has_file("config.toml"))
     throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
-  if (!fs::is_regular_file(dir / "checkpoint.bin"))
+  if (!has_file("checkpoint.bin"))
     throw ParamError("DIR", dir_name,
                      "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
                      "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");

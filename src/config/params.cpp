@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <new>
 #include <string_view>
 #include <unistd.h>
 #include <utility>
@@ -467,6 +468,8 @@ void validate(const Params& p) {
   const mesh::MeshLayout layout = [&] {
     try {
       return mesh_layout(p);
+    } catch (const std::bad_alloc&) {
+      throw; // not the grid's fault: the machine's (cli reports it)
     } catch (const std::exception& e) {
       throw ParamError(grid_flag, grid_value, fmt::format("gives no usable grid: {}", e.what()));
     }

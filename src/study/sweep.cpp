@@ -838,6 +838,16 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
       ++emitted;
     }
     check_path("--emit-tasks", options.emit_tasks);
+    // the task file must not take the place of the folder its lines run members into
+    {
+      const fs::path tasks_path = fs::absolute(options.emit_tasks).lexically_normal();
+      for (fs::path p = fs::absolute(options.out).lexically_normal(); p.has_relative_path();
+           p = p.parent_path())
+        if (p == tasks_path || p.string() + "/" == tasks_path.string())
+          throw ParamError("--emit-tasks", printable(options.emit_tasks),
+                           "names --out's folder (or one it lies in): the task lines would take "
+                           "its place");
+    }
     if (abs_out.find_first_of("\n\r") != std::string::npos)
       throw ParamError("--out", printable(options.out),
                        "holds a line break, which would split its task lines");

@@ -642,6 +642,68 @@ TEST_CASE("converge: samples saved with a member's checkpoint are reused only fo
 
 // A closed terminal (SIGHUP) and a batch scheduler's warning ahead of its time limit (SIGUSR1,
 // SIGUSR2) stop a run as SIGTERM does: the step finished, a checkpoint, the end line, 128 + n.
+TEST_CASE("SIGTERM in a run's first milliseconds: nothing written, or a folder that resumes") {
+  // the stop handlers are in place before the first file is created: a folder holding only
+  // config.toml.tmp (and no checkpoint) was what a signal in the first ~20 ms left
+  for (int delay_us : {0, 1000, 2000, 4000, 8000, 16000, 32000}) {
+    const fs::path out = scratch("early_stop");
+    const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                            + " evolve --N 400 --tmax 20 --out " + out.string()
+                            + " 2>/dev/null & p=$!; usleep_s=$(printf \"%d.%06d\" 0 "
+                            + std::to_string(delay_us)
+                            + "); sleep $usleep_s; kill -TERM $p; "
+                              "wait $p; exit $?'";
+    const int raw = std::system(cmd.c_str());
+    INFO("delay " << delay_us << " us");
+    REQUIRE(WIFEXITED(raw));
+    CHECK(WEXITSTATUS(raw) == 143);
+    if (fs::exists(out)) {
+      CHECK(fs::exists(out / "checkpoint.bin"));
+      CHECK_FALSE(fs::exists(out / "config.toml.tmp"));
+      CHECK(run("resume " + out.string()).status == 0);
+    }
+    fs::remove_all(out);
+  }
+}
+
+TEST_CASE("resume: a run's file that is a loop of symbolic links is refused, naming DIR") {
+  const fs::path out = scratch("resume_loop");
+  REQUIRE(run("evolve --N 64 --tmax 1 --checkpoint-every 0.5 --out " + out.string()).status == 0);
+  for (const char* name : {"checkpoint.bin", "config.toml"}) {
+    const fs::path keep = scratch("resume_loop_keep");
+    fs::rename(out / name, keep);
+    fs::create_symlink(name, out / name); // points at itself
+    const Result r = run("resume " + out.string() + " --tmax 2");
+    INFO(name << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("DIR = ") != std::string::npos);
+    CHECK(r.err.find(std::string("its ") + name + " cannot be read") != std::string::npos);
+    fs::remove(out / name);
+    fs::rename(keep, out / name);
+  }
+  fs::remove_all(out);
+}
+
+TEST_CASE("out of memory is a message and exit 1, not an abort") {
+  // under a 400 MB address-space limit a grid of 9e6 cells (about 4 GB of state) cannot be made
+#if defined(__SANITIZE_ADDRESS__)
+  MESSAGE("skipped: AddressSanitizer reserves more address space than the limit allows");
+  return;
+#endif
+  const fs::path out = scratch("no_memory");
+  const std::string cmd = "sh -c 'ulimit -v 400000; " + std::string(GBSSN1D_EXECUTABLE)
+                          + " evolve --N 9000000 --grid uniform --rmax 100 --tmax 0 --out "
+                          + out.string() + "' 2>" + out.string() + ".err";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 1);
+  const std::string err = slurp(out.string() + ".err");
+  CHECK(err.find("gbssn1d: error: out of memory") != std::string::npos);
+  CHECK(err.find("bad_alloc") == std::string::npos);
+  fs::remove(out.string() + ".err");
+  fs::remove_all(out);
+}
+
 TEST_CASE("SIGHUP, SIGUSR1 and SIGUSR2 stop a run resumably, as SIGTERM does") {
   for (const auto& [name, status] :
        {std::pair{"HUP", 129}, std::pair{"USR1", 138}, std::pair{"USR2", 140}}) {

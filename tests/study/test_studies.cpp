@@ -410,6 +410,16 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
   std::string err;
   CHECK(run("sweep --out " + out.string() + " --sweep rahA,rah0=0:0.89,0.5", &err) == 2);
   CHECK(err.find("joined by ':'") != std::string::npos);
+  // the member folders are named in the axes' order: --collect with the axes in another order
+  // is refused, naming the order, and summary.dat stays as it was
+  const std::string summary = slurp(out / "summary.dat");
+  CHECK(run("sweep --out " + out.string()
+                + " --sweep rahA,rah0=0:0.89,0.5:0.7 --sweep N=200,400 --id 1log-trumpet"
+                  " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3 --collect",
+            &err)
+        == 2);
+  CHECK(err.find("in another order: give them as it did, N then rahA,rah0") != std::string::npos);
+  CHECK(slurp(out / "summary.dat") == summary);
   fs::remove_all(out);
 }
 
