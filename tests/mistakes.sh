@@ -157,7 +157,6 @@ start=$(date +%s)
 caught=0
 problems=0
 wrong=0
-total=${#mistakes[@]}
 # a mistake not caught, not applied or not compiling: in the default mode the run stops there
 problem() {
   echo "!! $1"
@@ -174,6 +173,7 @@ if [ -n "$only" ]; then
   done
   mistakes=("${selected[@]}")
 fi
+total=${#mistakes[@]}
 for m in "${mistakes[@]}"; do
   IFS='|' read -r name file from to named <<<"$m"
   git checkout -q -- .
