@@ -45,6 +45,8 @@ public:
     if (n > rest_.size())
       throw CheckpointError(
           fmt::format("{} is corrupt (a field runs past its end)", path_.string()));
+    if (n == 0)
+      return; // an empty vector's data() may be null, which memcpy must not be given
     std::memcpy(p, rest_.data(), n);
     rest_.remove_prefix(n);
   }

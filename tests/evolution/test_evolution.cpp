@@ -2,6 +2,7 @@
 // initial data converge at 4th order; a wormhole settles onto the 1+log trumpet; a run that
 // goes non-finite stops, says where and when, and leaves complete files.
 #include "config/params.hpp"
+#include "evolution/checkpoint.hpp"
 #include "evolution/simulation.hpp"
 #include "initial_data/trumpet_solutions.hpp"
 
@@ -408,4 +409,28 @@ TEST_CASE("--advective-shift adds beta beta' to d_t beta and beta (B' - Delta') 
   CHECK(fit_order(h, err_B) >= 3.5);
   CHECK(err_beta.back() < 1e-7);
   CHECK(err_B.back() < 1e-7);
+}
+
+TEST_CASE("a checkpoint whose states are empty goes through the file format unchanged") {
+  // Empty vectors (no values, no levels, no time levels) are read without handing memcpy a
+  // null pointer (the sanitizer build reports that); restore() is what refuses their sizes.
+  Checkpoint c;
+  c.config = "N = 100\n";
+  c.step = 3;
+  c.finer.resize(2); // two levels without values
+  c.history.resize(2);
+  c.history[1].push_back({0.5, State{}});
+  const std::filesystem::path file = gbssn1d::testing::scratch("empty_states_checkpoint.bin");
+  write_checkpoint(file, c);
+  const Checkpoint read = read_checkpoint(file);
+  std::filesystem::remove(file);
+  CHECK(read.config == c.config);
+  CHECK(read.step == 3);
+  CHECK(read.u.empty());
+  REQUIRE(read.finer.size() == 2);
+  CHECK(read.finer[1].empty());
+  REQUIRE(read.history.size() == 2);
+  REQUIRE(read.history[1].size() == 1);
+  CHECK(read.history[1][0].t == 0.5);
+  CHECK(read.history[1][0].u.empty());
 }
