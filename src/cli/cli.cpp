@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
@@ -567,6 +568,27 @@ int run_command_line(int argc, char** argv) {
   resume_tmax_opt->default_str("the run's own");
   resume_cmd->footer("The output files are cut back to the checkpoint and continued.");
 
+  // the flags whose values came from an evolve --config file, and that file: a refused value
+  // then says where it was given, since the user typed no such flag
+  std::map<std::string, std::string> config_origins;
+  auto origin = [&](const std::string& flag) {
+    const auto it = config_origins.find(flag);
+    return it == config_origins.end() ? std::string()
+                                      : fmt::format(" (given as '{}' in --config {})",
+                                                    flag.substr(2), printable(it->second));
+  };
+  auto parse_error_origin = [&](const std::string& what) { // CLI11 names the flag in its text
+    for (const auto& [flag, file] : config_origins) {
+      const auto at = what.find(flag);
+      const auto after = at == std::string::npos ? 0 : at + flag.size();
+      if (at != std::string::npos
+          && (after == what.size()
+              || !(std::isalnum(static_cast<unsigned char>(what[after])) || what[after] == '-')))
+        return origin(flag);
+    }
+    return std::string();
+  };
+
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
     const std::set<std::string> subcommands{"evolve", "resume", "converge", "sweep"};
@@ -579,7 +601,7 @@ int run_command_line(int argc, char** argv) {
     // evolve reads --config here; converge and sweep pass it on to their members, whose own
     // flags may then override the file's values once
     if (!args.empty() && args.front() == "evolve")
-      args = expand_config(args);
+      args = expand_config(args, &config_origins);
     std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
     app.parse(args);
   } catch (const CLI::CallForHelp& e) {
@@ -591,10 +613,10 @@ int run_command_line(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
-    say("gbssn1d: error: {}\n", what);
+    say("gbssn1d: error: {}{}\n", what, parse_error_origin(what));
     return 2;
   } catch (const ParamError& e) {
-    say("gbssn1d: error: {}\n", e.what());
+    say("gbssn1d: error: {}{}\n", e.what(), origin(e.flag()));
     return 2;
   }
 
@@ -640,7 +662,7 @@ int run_command_line(int argc, char** argv) {
       return run_sweep(sweep_options, evolve_args);
     }
   } catch (const ParamError& e) {
-    say("gbssn1d: error: {}\n", e.what());
+    say("gbssn1d: error: {}{}\n", e.what(), origin(e.flag()));
     return 2;
   }
   return 0;

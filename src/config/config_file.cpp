@@ -359,8 +359,10 @@ std::string config_text(const Params& p) {
 /// file. CLI11 2.1 does not read config files given to a subcommand, hence this step; the file
 /// is parsed by CLI11's own TOML/INI reader. Throws ParamError for a missing file or a key that
 /// names no parameter.
-std::vector<std::string> expand_config(const std::vector<std::string>& args) {
+std::vector<std::string> expand_config(const std::vector<std::string>& args,
+                                       std::map<std::string, std::string>* origins) {
   std::vector<std::string> rest, from_file;
+  std::map<std::string, std::string> file_of; // flag -> the file that gave it
   for (std::size_t k = 0; k < args.size(); ++k) {
     std::string path;
     if (args[k] == "--config") {
@@ -396,6 +398,7 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
         continue;
       // "--key=" with an empty value would take the next argument as its value: pass the
       // empty value as a separate argument
+      file_of["--" + key] = path;
       if (value.empty()) {
         from_file.push_back("--" + key);
         from_file.push_back("");
@@ -403,6 +406,12 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args) {
         from_file.push_back(fmt::format("--{}={}", key, value));
       }
     }
+  }
+  if (origins) {
+    // a flag on the command line overrides the file's value: its errors are the command line's
+    for (const auto& a : rest)
+      file_of.erase(a.substr(0, a.find('=')));
+    *origins = std::move(file_of);
   }
   // the subcommand name stays first
   std::vector<std::string> out;

@@ -5,6 +5,7 @@
 
 #include "config/params.hpp"
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,8 +42,10 @@ config_differences(const std::string& old_text, const std::string& new_text,
 
 /// Arguments after expanding `--config FILE` into `--key=value` arguments placed before the
 /// command line's own, so that flags override the file. Throws ParamError for a missing file,
-/// a key that names no parameter or a bad boolean.
-std::vector<std::string> expand_config(const std::vector<std::string>& args);
+/// a key that names no parameter or a bad boolean. `origins` (if given) gets, for each flag whose
+/// value comes from a file (not overridden on the command line), that file: "--N" -> "run.toml".
+std::vector<std::string> expand_config(const std::vector<std::string>& args,
+                                       std::map<std::string, std::string>* origins = nullptr);
 
 /// A string as a TOML basic string ("...", with '"', '\\' and control characters escaped), as
 /// config_text() writes string values; read_config_text() reads it back exactly.

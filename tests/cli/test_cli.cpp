@@ -131,6 +131,31 @@ TEST_CASE("malformed or missing config files are refused") {
   fs::remove(cfg);
 }
 
+TEST_CASE("a value refused from a config file names the file and its key, not only the flag") {
+  const fs::path cfg = scratch("refused value.toml");
+  for (const std::string line : {"N = -5", "N = \"many\"", "rahA = nan", "grid = \"cubic\""}) {
+    std::ofstream(cfg) << line << "\n";
+    const std::string key = line.substr(0, line.find(' '));
+    const Result r =
+        run("evolve --tmax 0 --config '" + cfg.string() + "' --out " + scratch("out").string());
+    INFO(line << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find("--" + key) != std::string::npos);
+    CHECK(r.err.find("(given as '" + key + "' in --config " + cfg.string() + ")")
+          != std::string::npos);
+  }
+  // the same flag given on the command line overrides the file: its error is the command line's
+  std::ofstream(cfg) << "N = 40\n";
+  const Result r = run("evolve --tmax 0 --config '" + cfg.string() + "' --N -3 --out "
+                       + scratch("out").string());
+  INFO("stderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--N = -3") != std::string::npos);
+  CHECK(r.err.find("given as") == std::string::npos);
+  fs::remove(cfg);
+}
+
 TEST_CASE("--out: an existing non-empty directory is refused and left untouched") {
   const fs::path out = scratch("busy");
   fs::create_directories(out);
