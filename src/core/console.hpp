@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -44,5 +46,31 @@ inline std::string& invoked_as() {
 inline std::string resume_command(const std::string& dir) {
   return shell_quote(invoked_as()) + " resume " + shell_quote(dir);
 }
+
+/// The progress line on stderr (when it is a terminal): simulated time, the speed since this
+/// run (or resume) started, and the time left at that speed.
+class ProgressLine {
+public:
+  ProgressLine(bool on, double t_start, double t_end)
+      : on_(on), t_start_(t_start), t_end_(t_end), start_(std::chrono::steady_clock::now()),
+        last_(start_) {}
+  void update(double t, bool last) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!on_ || (!last && now - last_ <= std::chrono::milliseconds(500)))
+      return;
+    last_ = now;
+    const double wall = std::chrono::duration<double>(now - start_).count();
+    const double speed = (t - t_start_) / std::max(wall, 1e-9); // simulated M per wall second
+    say("\r  t = {:.2f} / {:g} M   {:.1f} M/s   {:.0f} s left   ", t, t_end_, speed,
+        (t_end_ - t) / std::max(speed, 1e-300));
+    if (last)
+      say("\n");
+  }
+
+private:
+  bool on_;
+  double t_start_, t_end_;
+  std::chrono::steady_clock::time_point start_, last_;
+};
 
 } // namespace gbssn1d

@@ -221,4 +221,111 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   return c;
 }
 
+namespace {
+
+/// Ghosts per side before the finite-difference order became a choice (checkpoint formats 2
+/// and 3 of earlier versions).
+constexpr std::size_t legacy_ghosts = 3;
+
+/// `u` re-laid out from legacy_ghosts to Grid::n_ghost ghosts per side, if it has the legacy
+/// size for `grid`: the interior and the old outer ghosts are kept, the origin ghosts refilled
+/// by parity, the new outermost ghosts copied from the last old one. At 4th order nothing reads
+/// them but their own boundary condition, so the run continues as it would have.
+void widen_legacy_ghosts(State& u, const Grid& grid) {
+  const std::size_t n = grid.n_interior(), old_total = n + 2 * legacy_ghosts;
+  if (u.size() != n_vars * old_total || grid.n_total() == old_total)
+    return;
+  State w(n_vars * grid.n_total(), 0.0);
+  for (std::size_t v = 0; v < n_vars; ++v) {
+    const double* from = u.data() + v * old_total;
+    double* to = w.data() + v * grid.n_total();
+    for (std::size_t k = 0; k < n + legacy_ghosts; ++k) // interior and the old outer ghosts
+      to[grid.first_interior() + k] = from[legacy_ghosts + k];
+    for (std::size_t k = n + legacy_ghosts; k < n + Grid::n_ghost; ++k)
+      to[grid.first_interior() + k] = from[legacy_ghosts + n + legacy_ghosts - 1];
+  }
+  fill_origin_ghosts(w, grid);
+  u = std::move(w);
+}
+
+} // namespace
+
+Checkpoint resumable_checkpoint(const Checkpoint& checkpoint, const ResumeTarget& run) {
+  const std::size_t n_levels = run.layout.levels();
+  Checkpoint c = checkpoint;
+  if (c.finer.size() + 1 == n_levels) {
+    widen_legacy_ghosts(c.u, run.layout.grid(0));
+    for (std::size_t l = 1; l < n_levels; ++l)
+      widen_legacy_ghosts(c.finer[l - 1], run.layout.grid(l));
+    for (std::size_t l = 0; l < c.history.size() && l < n_levels; ++l)
+      for (auto& h : c.history[l])
+        widen_legacy_ghosts(h.u, run.layout.grid(l));
+  }
+  if (c.finer.size() + 1 != n_levels)
+    throw CheckpointError(
+        fmt::format("the checkpoint has {} levels, this grid {}", c.finer.size() + 1, n_levels));
+  for (std::size_t l = 0; l < n_levels; ++l) {
+    const State& u = l == 0 ? c.u : c.finer[l - 1];
+    if (u.size() != run.state_sizes[l])
+      throw CheckpointError(fmt::format("the checkpoint has {} values{}, this grid {}", u.size(),
+                                        n_levels > 1 ? fmt::format(" on level {}", l) : "",
+                                        run.state_sizes[l]));
+  }
+  if (n_levels > 1) {
+    if (c.level_h_AH.size() != n_levels || c.history.size() != n_levels)
+      throw CheckpointError("the checkpoint's levels are incomplete");
+    for (std::size_t l = 0; l < n_levels; ++l) {
+      // quadratic interpolation keeps two earlier time levels of every level but the finest
+      const std::size_t expected =
+          run.config.refinement.time == mesh::TimeInterpolation::quadratic && l + 1 < n_levels ? 2
+                                                                                               : 0;
+      if (c.history[l].size() != expected)
+        throw CheckpointError(fmt::format("the checkpoint holds {} time levels of level {}, this "
+                                          "run keeps {}",
+                                          c.history[l].size(), l, expected));
+      for (const auto& h : c.history[l])
+        if (h.u.size() != run.state_sizes[l] || !(h.t < c.t))
+          throw CheckpointError(fmt::format(
+              "the checkpoint's time level t = {} of level {} is not this run's", h.t, l));
+      if (c.level_h_AH[l] && !(std::isfinite(*c.level_h_AH[l]) && *c.level_h_AH[l] > 0.0))
+        throw CheckpointError(fmt::format("the checkpoint's horizon radius {} of level {} is "
+                                          "not a radius",
+                                          *c.level_h_AH[l], l));
+    }
+  }
+  if (c.dt != run.dt)
+    throw CheckpointError(
+        fmt::format("the checkpoint's step {} is not this run's {}", c.dt, run.dt));
+  if (c.step < 0 || c.step > run.n_steps)
+    throw CheckpointError(fmt::format(
+        "the checkpoint at step {} lies outside this run's steps 0 ... {} (--tmax = {})", c.step,
+        run.n_steps, run.config.tmax));
+  // Every counter must be the one the run itself would hold at this step (run() sets
+  // t = n dt, writes the outputs at k dt_series <= t, and evaluates the RHS four times a step).
+  if (c.t != static_cast<double>(c.step) * run.dt)
+    throw CheckpointError(fmt::format("the checkpoint's time {} is not step {} x dt = {}", c.t,
+                                      c.step, static_cast<double>(c.step) * run.dt));
+  const double tol = 1e-9 * run.dt;
+  auto next_output = [&](double cadence) { // the first k with k cadence > t (as run() counts)
+    auto k = static_cast<std::int64_t>(std::floor((c.t + tol) / cadence)) + 1;
+    if (k > 1 && static_cast<double>(k - 1) * cadence > c.t + tol)
+      --k;
+    if (static_cast<double>(k) * cadence <= c.t + tol)
+      ++k;
+    return k;
+  };
+  if (c.k_series != next_output(run.config.dt_series)
+      || c.k_profiles != next_output(run.config.dt_profiles))
+    throw CheckpointError(fmt::format(
+        "the checkpoint's output counters ({}, {}) are not those of t = {} ({}, {})", c.k_series,
+        c.k_profiles, c.t, next_output(run.config.dt_series), next_output(run.config.dt_profiles)));
+  if (c.evaluations != run.initial_evaluations + 4 * static_cast<std::uint64_t>(c.step))
+    throw CheckpointError(fmt::format("the checkpoint's RHS count {} is not {} + 4 x step {}",
+                                      c.evaluations, run.initial_evaluations, c.step));
+  for (const auto& h : {c.h_AH, c.shared_h_AH})
+    if (h && !(std::isfinite(*h) && *h > 0.0))
+      throw CheckpointError(fmt::format("the checkpoint's horizon radius {} is not a radius", *h));
+  return c;
+}
+
 } // namespace gbssn1d

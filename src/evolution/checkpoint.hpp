@@ -3,6 +3,7 @@
 // counters and where each output file stood), written atomically into the output directory.
 #pragma once
 
+#include "evolution/evolution_config.hpp"
 #include "gbssn/state.hpp"
 #include "io/output.hpp"
 #include "mesh/hierarchy.hpp"
@@ -47,5 +48,21 @@ public:
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);
 /// Throws CheckpointError if the file is missing, truncated or not a checkpoint.
 Checkpoint read_checkpoint(const std::filesystem::path& file);
+
+/// The run a checkpoint is to continue: its configuration, levels, each level's state size,
+/// step, number of steps and RHS evaluations before the first step (level 0).
+struct ResumeTarget {
+  const EvolutionConfig& config;
+  const mesh::MeshLayout& layout;
+  const std::vector<std::size_t>& state_sizes;
+  double dt;
+  long n_steps;
+  std::uint64_t initial_evaluations;
+};
+/// `c` in this version's layout (states of the legacy layout, 3 ghosts a side, widened), after
+/// checking that it belongs to `run`: levels, state sizes, time levels, horizon radii, step,
+/// time, output counters and RHS count, each as the uninterrupted run holds it at that step.
+/// Throws CheckpointError naming the first mismatch.
+Checkpoint resumable_checkpoint(const Checkpoint& c, const ResumeTarget& run);
 
 } // namespace gbssn1d

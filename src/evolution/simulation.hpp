@@ -7,6 +7,10 @@
 #include "diagnostics/constraints.hpp"
 #include "evolution/checkpoint.hpp"
 #include "evolution/evolution_config.hpp"
+#include "evolution/horizon_tracker.hpp"
+#include "evolution/levels.hpp"
+#include "evolution/observe.hpp"
+#include "evolution/output_clock.hpp"
 #include "gbssn/rhs.hpp"
 #include "io/output.hpp"
 #include "mesh/composite.hpp"
@@ -21,17 +25,6 @@
 
 namespace gbssn1d {
 
-/// Thrown when the state stops being finite, or chi or alpha leaves its physical range
-/// (Simulation::check_finite); says what, where and when.
-class NonFiniteError : public std::runtime_error {
-public:
-  NonFiniteError(double t, double r, const std::string& var);
-  /// A finite value outside its range: "`var` = value at r, t: `why`".
-  NonFiniteError(double t, double r, const std::string& var, double value, const std::string& why);
-  double t, r;
-  std::string var;
-};
-
 /// Thrown between steps after SIGTERM or SIGINT (core/stop_signal.hpp), once the output due
 /// up to the current step is written.
 class Interrupted : public std::runtime_error {
@@ -40,30 +33,6 @@ public:
   int signal;
   double t;
 };
-
-/// The time stepping of a run: dt = cfl x smallest spacing, whatever the output cadence; the
-/// last step is shortened to end exactly at tmax. Output between steps is interpolated
-/// (Simulation::run).
-struct Schedule {
-  double dt;
-  long n_steps;
-};
-Schedule make_schedule(const EvolutionConfig& config, double dt);
-
-/// The levels of `config`'s grid: one level on its map, or --levels boxes.
-mesh::MeshLayout make_layout(const EvolutionConfig& config);
-/// The stepper's options of `config`.
-mesh::StepperOptions stepper_options(const EvolutionConfig& config);
-
-/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
-/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
-void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
-                         double dt, double theta, State& out);
-
-/// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
-/// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,
-/// and the (d_r chi)^2 / chi terms of (R1)-(R4) then diverge; docs/horizon-shift-study.md Sec. 4.
-void apply_chi_floor(State& u, const Grid& grid, double chi_floor);
 
 class Simulation {
 public:
@@ -161,68 +130,38 @@ public:
   static constexpr double alpha_max = 10.0; ///< alpha <= 1 in these spacetimes
 
 private:
-  /// Runs a horizon search; a HorizonFinderError gets the current time added.
-  template <class Search>
-  auto with_time(Search search) const;
-  /// Held mode: search for the horizon and hold its radius for the RHS.
-  void update_held_horizon();
-  /// Boxes, searches every substage (the default): the one h_AH(t) that every box's RHS uses,
-  /// from the radii found on the box holding the horizon at the last (up to) four steps of the
-  /// hierarchy, extrapolated to each stage's time by their Lagrange polynomial (cubic: error
-  /// O(dt^4), the order of the scheme). Berger-Oliger steps a coarse box before the fine box
-  /// holding the horizon reaches that time, so no box can search at the others' stages.
-  bool extrapolated_horizon() const;
-  std::optional<double> horizon_radius_at(double t) const;
-  /// After every step of the hierarchy (and at the start): a search on the box holding the
-  /// horizon, for horizon_radius_at.
-  void search_at_step();
   /// Whether run() initialises the stepper again once h_AH is known (quadratic time
   /// interpolation with the horizon shift: its earlier time levels need beta_H).
   bool reinitialises() const;
-  /// The RHS's substage search of `level` (see extrapolated_horizon, and box_substage).
-  std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
-                               double t);
-  /// Output between the steps of several levels: each level's state at the output times inside
-  /// the coming step, from the RK4 dense output of that level's own (sub)step (mesh::
-  /// MeshStepper::on_level_step), so that a fine level is interpolated over its own dt.
-  struct PendingOutput {
-    double t;
-    std::vector<State> u;     ///< one per level
-    std::vector<bool> filled; ///< per level
-  };
-  std::vector<PendingOutput> pending_;
-  /// Collects the output times in (t0, t1) for the coming step.
-  void prepare_pending(double t0, double t1);
-  void fill_pending(std::size_t level, double t0, double dt, const State& u0,
-                    const std::array<const State*, 4>& k);
+  /// Writes the series row and horizons and/or the profiles of the current state (levels_u_
+  /// at t_) into `out` (if given); calls on_series after a series output.
+  void write_output(Output* out, bool series, bool profiles);
+  /// Writes every output time in (t_prev, t_], interpolating between the steps if have_dense.
+  void write_due(Output* out, double t_prev, bool have_dense);
+  /// Writes OUT/checkpoint.bin (if `out`) and calls on_checkpoint.
+  void save_checkpoint(Output* out, const std::optional<double>& h_AH_before_rhs);
   /// Say on stderr when the horizon appears or disappears.
   void report_horizon(const std::optional<MarginalSurface>& h);
 
   EvolutionConfig config_;
-  mesh::MeshLayout layout_;   ///< the levels (one: the single grid)
-  mesh::Composite composite_; ///< their composite, for output and norms
-  std::vector<GbssnRhs> rhs_; ///< one per level
-  /// per level, separate, so RHS evaluations of the evolution stay countable; it never
-  /// searches for the horizon of its own (diagnostics set its h_AH)
-  std::vector<GbssnRhs> diagnostic_rhs_;
-  /// The horizon radius every level's horizon shift uses: found on horizon_level()'s state
-  /// (substage searches there, or the held searches); the other levels read it.
-  std::optional<double> shared_h_AH_;
-  std::vector<std::array<double, 2>> h_AH_history_; ///< boxes: (t, h_AH) of the last searches
-  std::vector<State> dudt_;                         ///< per level: diagnostic scratch
-  std::vector<State> levels_u_;                     ///< the state of each level
+  mesh::MeshLayout layout_;       ///< the levels (one: the single grid)
+  mesh::Composite composite_;     ///< their composite, for output and norms
+  std::vector<GbssnRhs> rhs_;     ///< one per level
+  SeriesDiagnostics diagnostics_; ///< the series row's own RHS per level
+  std::vector<State> levels_u_;   ///< the state of each level
+  HorizonTracker tracker_;        ///< h_AH for beta_H: searches, held and extrapolated values
   State dudt_now_; ///< level 0's d_t u at the current state: the next step's first RK4 stage
-  /// a single grid's output between steps (boxes use each level's dense output, pending_)
+  /// a single grid's output between steps (boxes use each level's dense output, dense_)
   State u_prev_, dudt_prev_, u_out_;
-  State u_composite_;                            ///< the composite state, for profiles
-  std::vector<std::size_t> composite_levels_;    ///< the level of each composite cell
-  std::optional<double> shared_h_AH_before_rhs_; ///< for checkpoints (as h_AH_before_rhs)
+  State u_composite_;                         ///< the composite state, for profiles
+  std::vector<std::size_t> composite_levels_; ///< the level of each composite cell
   double t_ = 0.0;
   Schedule schedule_;
   mesh::MeshStepper stepper_; ///< RK4 (Odeint's arithmetic), with the chi floor after each step
+  OutputClock clock_;         ///< output times and their counters
+  DenseOutput dense_;         ///< boxes: every level's state at output times between steps
   long step_ = 0;             ///< steps taken
-  long k_series_ = 1, k_profiles_ = 1; ///< next output times k dt_series, k dt_profiles
-  bool resumed_ = false;               ///< restore() was called: run() continues, no initial output
+  bool resumed_ = false;      ///< restore() was called: run() continues, no initial output
   std::uint64_t evaluations_before_rhs_ = 0;       ///< RHS count before the current step's k1
   std::vector<std::uint64_t> initial_evaluations_; ///< per level, before the first step
   bool had_horizon_ = false; ///< for messages when the horizon appears/disappears

@@ -1,0 +1,119 @@
+#include "config/params.hpp"
+
+#include "config/numbers.hpp"
+#include "config/param_rules.hpp"
+
+#include <fmt/format.h>
+
+#include "evolution/levels.hpp"
+#include "io/horizon_file.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gbssn1d {
+
+EvolutionConfig mesh_config(const Params& p) {
+  EvolutionConfig c;
+  c.grid = grid_spec(p);
+  if (p.grid == "boxes") {
+    c.refinement.levels = static_cast<std::size_t>(p.levels.value());
+    c.refinement.time = choice("--time-interp", p.time_interp, time_interp_choices);
+    c.refinement.subcycling = !p.no_subcycling;
+    c.refinement.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
+  }
+  c.cfl = p.cfl.value();
+  return c;
+}
+
+GridSpec grid_spec(const Params& p) {
+  GridSpec spec;
+  spec.kind = p.grid == "sinh" ? GridKind::sinh : GridKind::uniform; // boxes: uniform levels
+  spec.N = static_cast<std::size_t>(p.N);
+  spec.rmax = p.rmax;
+  spec.dr_inner = p.dr_inner;
+  spec.fd_order = p.fd_order;
+  return spec;
+}
+
+EvolutionConfig evolution_config(const Params& p) {
+  EvolutionConfig c = mesh_config(p);
+  c.initial_data = initial_data_params(p);
+  c.rhs = rhs_params(p);
+  c.cfl = p.cfl.value();
+  c.chi_floor = p.chi_floor;
+  c.tmax = p.tmax;
+  c.dt_series = p.dt_series;
+  c.dt_profiles = p.dt_profiles;
+  c.checkpoint_every = p.checkpoint_every;
+  c.norms.rmin = p.norm_rmin;
+  c.norms.rmax = p.norm_rmax.value();
+  c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
+  c.norms.Rmax = p.norm_Rmax * p.M;
+  c.norms.Rint = p.norm_Rint * p.M;
+  c.horizon_search.every_steps = ah_every_steps(p);
+  c.horizon_search.t_min = p.ah_tmin;
+  c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
+  c.horizon_search.finder.tolerance = p.ah_tol;
+  return c;
+}
+
+InitialDataParams initial_data_params(const Params& p) {
+  InitialDataParams id;
+  id.M = p.M;
+  id.kind = p.id == "wormhole"          ? InitialDataKind::wormhole
+            : p.id == "maximal-trumpet" ? InitialDataKind::maximal_trumpet
+                                        : InitialDataKind::onelog_trumpet;
+  id.lapse0 = p.lapse0 == "one" ? InitialLapse::one : InitialLapse::precollapsed;
+  return id;
+}
+
+RhsParams rhs_params(const Params& p) {
+  RhsParams r;
+  r.gauge.shift.eta = p.eta.value();
+  r.gauge.shift.advective = p.advective_shift;
+  r.gauge.slicing.advective = !p.non_advective_lapse;
+  r.ko_sigma = p.ko_sigma;
+  r.horizon_shift.A = p.rahA;
+  r.horizon_shift.h = p.rah0;
+  r.horizon_shift.width = p.rah_width;
+  r.horizon_shift.ramp = p.rah_ramp;
+  r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
+  if (p.rah_taper) // unset only without the horizon shift: HorizonShiftParams' default then
+    r.horizon_shift.taper = choice("--rah-taper", *p.rah_taper, taper_choices);
+  r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
+  r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
+  r.horizon_shift.chi_smooth = p.rah_chi_smooth;
+  resolve_automatic_profile(r.horizon_shift, p.M);
+  if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
+    r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
+  r.advection.driver = choice("--driver-advection", p.driver_advection, driver_stencil_choices);
+  r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
+  r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
+  r.horizon_shift.t_min = p.ah_tmin;
+  r.horizon_shift.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
+  r.horizon_shift.variant = choice("--rah-variant", p.rah_variant, variant_choices);
+  if (r.horizon_shift.variant == ShiftVariant::midstep_update) {
+    r.horizon_shift.search_every_substage = false;
+    r.horizon_shift.midstep_every = ah_every_steps(p);
+  }
+  return r;
+}
+
+std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {
+  try {
+    return read_horizon_history(path, t_end);
+  } catch (const HorizonFileError& e) {
+    throw ParamError("--rah-hAH-file", printable(path), e.what());
+  }
+}
+
+long ah_every_steps(const Params& p) {
+  if (p.ah_every == "substage")
+    return 0;
+  if (p.ah_every == "step")
+    return 1;
+  return parse_decimal<long>(p.ah_every).value(); // validated
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,105 @@
+#include "config/params.hpp"
+
+#include "config/numbers.hpp"
+#include "config/param_rules.hpp"
+
+#include <fmt/format.h>
+
+#include "evolution/levels.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+std::vector<std::string> warnings(const Params& p) {
+  std::vector<std::string> w;
+  // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
+  // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
+  // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
+  if (shrinks_wormhole(p) && p.eta.value_or(1.0 / p.M) > 1.0 / p.M)
+    w.push_back(fmt::format(
+        "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
+        "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
+        "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
+        num(p.rah0), num(p.eta.value_or(1.0 / p.M))));
+  // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
+  // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
+  // number measured there after it holds boundary reflections.
+  const double speed = std::sqrt(2.0);
+  const double window = std::max(p.norm_rmax.value_or(0.0), p.norm_Rmax * p.M);
+  const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
+  if (p.tmax > t_window && p.rmax > window)
+    w.push_back(fmt::format(
+        "--tmax {} lets the outer boundary (--rmax {}) reach the norm windows (r <= {} M) from "
+        "t ~ {:.0f} M and the horizon from t ~ {:.0f} M (at the gauge speed sqrt(2)): norms, "
+        "M_AH and r_AH after that include its reflections; for a clean late-time figure rerun "
+        "with --rmax > {:.0f}",
+        num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
+        std::ceil(window + speed * p.tmax)));
+  // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
+  // the horizon shift see the finest spacing.
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.N > 0) {
+    const double finest_extent = std::ldexp(p.rmax, -(*p.levels - 1));
+    const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
+    const double horizon = std::max(standard_horizon_radius * p.M, p.rahA != 0.0 ? p.rah0 : 0.0);
+    if (horizon > trusted)
+      w.push_back(fmt::format(
+          "the horizon (r ~ {} M{}) lies outside the finest box's inner part (r <= {:.4g} M of "
+          "its {:.4g} M with --N {}): it will be found on a coarser box; use fewer --levels or "
+          "a larger --N",
+          num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
+  }
+  // Boxes and wormhole data: the collapse's outgoing gauge pulse comes back from where the
+  // boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH that fall with N
+  // (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at 128, 1e-4 at 200).
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.id == "wormhole" && p.N < 200) {
+    const double back = 1.0 / std::sqrt(2.0) + 1.0;
+    for (int l = *p.levels - 1; l >= 1; --l) { // the box ends from the inside out
+      const double end = std::ldexp(p.rmax, -l);
+      if (end >= 50.0 * p.M && back * end <= p.tmax) {
+        w.push_back(fmt::format(
+            "wormhole data on boxes with --N {} < 200: the collapse's gauge pulse comes back from "
+            "where the boxes end (first from r = {:.4g} M at t ~ {:.0f} M), in bursts of H and "
+            "M_AH (6e-3 in M_AH at N = 96, 7e-4 at N = 128: docs/horizon-shift-study.md, Sec. 7); "
+            "use --N 200 or more, the sinh grid, or trumpet data",
+            p.N, end, back * end));
+        break;
+      }
+    }
+  }
+  // The horizon-shift flags act only with a strength: given with --rahA 0 they change nothing,
+  // which a user who forgot --rahA would not otherwise learn.
+  if (p.rahA == 0.0) {
+    const Params d;
+    std::vector<std::string> idle;
+    if (p.rah0 != d.rah0)
+      idle.push_back("--rah0 " + num(p.rah0));
+    if (p.rah_profile != d.rah_profile)
+      idle.push_back("--rah-profile " + p.rah_profile);
+    if (p.rah_width != d.rah_width)
+      idle.push_back("--rah-width " + num(p.rah_width));
+    if (p.rah_rcut)
+      idle.push_back("--rah-rcut " + num(*p.rah_rcut));
+    if (p.rah_taper)
+      idle.push_back("--rah-taper " + *p.rah_taper);
+    if (p.rah_ramp != d.rah_ramp)
+      idle.push_back("--rah-ramp " + num(p.rah_ramp));
+    if (p.rah_normal != d.rah_normal)
+      idle.push_back("--rah-normal " + p.rah_normal);
+    if (!p.rah_hAH_file.empty())
+      idle.push_back("--rah-hAH-file " + p.rah_hAH_file);
+    if (p.rah_variant != d.rah_variant)
+      idle.push_back("--rah-variant " + p.rah_variant);
+    if (!idle.empty())
+      w.push_back(fmt::format("{} {} nothing with --rahA 0: the horizon-adjusting shift is off "
+                              "(give --rahA A, e.g. 0.5, to move the horizon)",
+                              fmt::join(idle, ", "), idle.size() == 1 ? "does" : "do"));
+  }
+  return w;
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,370 @@
+#include "config/params.hpp"
+
+#include "config/numbers.hpp"
+#include "config/param_rules.hpp"
+
+#include <fmt/format.h>
+
+#include "evolution/levels.hpp"
+#include "fd/stencils.hpp"
+#include "mesh/hierarchy.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <filesystem>
+#include <new>
+#include <string>
+#include <unistd.h>
+
+namespace gbssn1d {
+
+namespace {
+
+/// The grid's flags: N, M, rmax, the kind of grid, its boxes and the differencing order, and
+/// the initial data.
+void validate_grid_flags(const Params& p) {
+  if (p.N <= 0)
+    throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
+  if (p.N < 16)
+    throw ParamError("--N", std::to_string(p.N), "must be at least 16 cells");
+  if (p.N > N_max)
+    throw ParamError("--N", std::to_string(p.N),
+                     fmt::format("needs about {:.0f} GB of memory; at most {} cells are accepted",
+                                 8.0 * 9 * 6 * p.N / 1e9, N_max));
+  require_positive("--M", p.M);
+  require_positive("--rmax", p.rmax);
+  // Everything scales with M; an outer boundary beyond 1e6 M only overflows the grid's map.
+  if (p.rmax > rmax_over_M_max * p.M) {
+    if (p.M < 1e-3 || p.M > 1e3)
+      throw ParamError("--M", num(p.M),
+                       fmt::format("gives --rmax / M = {:.3g}, above {:.0e}: lengths are in units "
+                                   "of M, so keep M of order 1",
+                                   p.rmax / p.M, rmax_over_M_max));
+    throw ParamError(
+        "--rmax", num(p.rmax),
+        fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
+  }
+  if (p.grid != "uniform" && p.grid != "sinh" && p.grid != "boxes")
+    throw ParamError("--grid", p.grid, "must be 'uniform', 'sinh' or 'boxes'");
+  (void)choice("--time-interp", p.time_interp, time_interp_choices);
+  if (p.grid != "boxes") {
+    // the refinement flags mean nothing on a single grid: refused rather than ignored
+    if (p.levels)
+      throw ParamError("--levels", std::to_string(*p.levels), "needs --grid boxes");
+    if (p.time_interp != Params{}.time_interp)
+      throw ParamError("--time-interp", p.time_interp, "needs --grid boxes");
+    if (p.no_subcycling)
+      throw ParamError("--no-subcycling", "needs --grid boxes");
+  } else {
+    if (!p.levels)
+      throw std::logic_error("validate() before resolve_defaults()");
+    if (*p.levels < 1 || *p.levels > levels_max)
+      throw ParamError("--levels", std::to_string(*p.levels),
+                       fmt::format("must lie in 1 ... {}", levels_max));
+    if (*p.levels > 1 && p.N % 2 != 0)
+      throw ParamError("--N", std::to_string(p.N),
+                       "must be even with --grid boxes: each coarse cell holds two fine cells, "
+                       "so that a fine box's edge is a coarse cell's face");
+  }
+  if (!fd::valid_order(p.fd_order))
+    throw ParamError("--fd-order", std::to_string(p.fd_order), "must be 2, 4, 6 or 8");
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && !mesh::boxes_order(p.fd_order))
+    throw ParamError("--fd-order", std::to_string(p.fd_order),
+                     "must be 2, 4 or 6 with --grid boxes: the boxes' prolongation and "
+                     "restriction are 6th order");
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && mesh::boxes_order(p.fd_order)
+      && p.N < static_cast<int>(mesh::min_cells(p.fd_order)))
+    throw ParamError("--N", std::to_string(p.N),
+                     fmt::format("must be at least {} with --grid boxes at --fd-order {} (a "
+                                 "fine box's buffer and the transfer stencils)",
+                                 mesh::min_cells(p.fd_order), p.fd_order));
+  if (p.grid == "sinh") {
+    require_positive("--dr-inner", p.dr_inner);
+    const double needed = p.dr_inner * sinh_reference_N;
+    if (!(p.rmax > needed))
+      throw ParamError("--rmax", num(p.rmax),
+                       fmt::format("too small for the grid: the sinh map with --dr-inner = {} "
+                                   "(the innermost width at N = {}) needs --rmax > {}",
+                                   p.dr_inner, sinh_reference_N, needed));
+  }
+  if (!(p.rmax >= 4.0 * p.M))
+    throw ParamError("--rmax", num(p.rmax),
+                     fmt::format("too small for the grid: the outer boundary must lie outside "
+                                 "the black hole, --rmax >= 4 M = {}",
+                                 4.0 * p.M));
+  if (p.id != "wormhole" && p.id != "maximal-trumpet" && p.id != "1log-trumpet")
+    throw ParamError("--id", p.id, "must be one of wormhole, maximal-trumpet, 1log-trumpet");
+  if (p.lapse0 != "one" && p.lapse0 != "precollapsed")
+    throw ParamError("--lapse0", p.lapse0, "must be 'one' or 'precollapsed'");
+}
+
+/// The gauge, dissipation, floor, times, output cadences and norm windows.
+void validate_evolution_numbers(const Params& p) {
+  if (!p.eta || !p.norm_rmax)
+    throw std::logic_error("validate() before resolve_defaults()");
+  const double eta = *p.eta, norm_rmax = *p.norm_rmax;
+  require_finite("--eta", eta);
+  if (eta < 0.0)
+    throw ParamError("--eta", num(eta), "must be >= 0");
+  if (!p.cfl)
+    throw std::logic_error("validate() before resolve_defaults()");
+  const double cfl = *p.cfl;
+  require_positive("--cfl", cfl);
+  if (cfl < cfl_min)
+    throw ParamError("--cfl", num(cfl),
+                     fmt::format("below {}: such steps only accumulate round-off", cfl_min));
+  if (cfl > cfl_max)
+    throw ParamError("--cfl", num(cfl),
+                     fmt::format("outside the stable range (0, {}] of RK4 with 4th-order "
+                                 "differences",
+                                 cfl_max));
+  require_finite("--ko-sigma", p.ko_sigma);
+  if (p.ko_sigma < 0.0 || p.ko_sigma > 1.0)
+    throw ParamError("--ko-sigma", num(p.ko_sigma), "must lie in [0, 1]");
+  require_finite("--chi-floor", p.chi_floor);
+  if (p.chi_floor < 0.0 || p.chi_floor >= 1.0)
+    throw ParamError("--chi-floor", num(p.chi_floor), "must lie in [0, 1)");
+
+  require_finite("--tmax", p.tmax);
+  if (p.tmax < 0.0)
+    throw ParamError("--tmax", num(p.tmax), "must be >= 0");
+  require_positive("--dt-series", p.dt_series);
+  require_positive("--dt-profiles", p.dt_profiles);
+  require_finite("--checkpoint-every", p.checkpoint_every);
+  if (p.checkpoint_every < 0.0)
+    throw ParamError("--checkpoint-every", num(p.checkpoint_every), "must be >= 0 (0: off)");
+
+  require_finite("--norm-rmin", p.norm_rmin);
+  require_finite("--norm-rmax", norm_rmax);
+  if (p.norm_rmin < 0.0)
+    throw ParamError("--norm-rmin", num(p.norm_rmin), "must be >= 0");
+  if (!(norm_rmax > p.norm_rmin))
+    throw ParamError("--norm-rmax", num(norm_rmax), "must be > --norm-rmin");
+  if (norm_rmax > p.rmax)
+    throw ParamError("--norm-rmax", num(norm_rmax), "must not exceed --rmax");
+
+  require_positive("--norm-Rmin", p.norm_Rmin);
+  require_finite("--norm-Rmax", p.norm_Rmax);
+  if (!(p.norm_Rmax > p.norm_Rmin))
+    throw ParamError("--norm-Rmax", num(p.norm_Rmax), "must be > --norm-Rmin");
+  require_positive("--norm-Rint", p.norm_Rint);
+}
+
+/// The horizon-adjusting shift and its horizon searches.
+void validate_horizon_shift(const Params& p) {
+  require_finite("--rahA", p.rahA);
+  require_positive("--rah0", p.rah0);
+  require_positive("--rah-width", p.rah_width);
+  if (p.rah_rcut) {
+    require_positive("--rah-rcut", *p.rah_rcut);
+    // the shift must act at the horizon: the taper begins (at rcut/2) outside twice its radius
+    if (p.rahA != 0.0 && !(*p.rah_rcut >= 4.0 * std::max(p.rah0, p.M)))
+      throw ParamError("--rah-rcut", num(*p.rah_rcut),
+                       fmt::format("must be at least 4 max(rah0, M) = {}: beta_H would be cut "
+                                   "near the horizon it moves",
+                                   num(4.0 * std::max(p.rah0, p.M))));
+  }
+  if (p.ah_every != "substage" && p.ah_every != "step") {
+    const auto n = parse_decimal<long>(p.ah_every);
+    if (!n || *n < 1)
+      throw ParamError("--ah-every", printable(p.ah_every),
+                       "must be 'substage', 'step' or a whole number of steps >= 1");
+  }
+  (void)choice("--rah-profile", p.rah_profile, profile_choices);
+  (void)choice("--rah-normal", p.rah_normal, normal_choices);
+  if (p.rah_taper)
+    (void)choice("--rah-taper", *p.rah_taper, taper_choices);
+  require_positive("--rah-chi-smooth", p.rah_chi_smooth);
+  require_finite("--rah-ramp", p.rah_ramp);
+  if (p.rah_ramp < 0.0)
+    throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
+  (void)choice("--driver-advection", p.driver_advection, driver_stencil_choices);
+  (void)choice("--delta-advection", p.delta_advection, stencil_choices);
+  require_finite("--ah-tmin", p.ah_tmin);
+  if (p.ah_tmin < 0.0)
+    throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
+  if (p.ah_tmax) {
+    require_finite("--ah-tmax", *p.ah_tmax);
+    if (*p.ah_tmax < p.ah_tmin)
+      throw ParamError("--ah-tmax", num(*p.ah_tmax),
+                       "must be >= --ah-tmin (leave it out for no limit)");
+  }
+  require_positive("--ah-tol", p.ah_tol);
+  (void)choice("--rah-variant", p.rah_variant, variant_choices);
+  if (p.rah_variant == "box-substage" && (p.grid != "boxes" || p.ah_every != "substage"))
+    throw ParamError("--rah-variant", p.rah_variant, "needs --grid boxes and --ah-every substage");
+  if (p.rah_variant == "midstep-update" && p.ah_every == "substage")
+    throw ParamError("--rah-variant", p.rah_variant,
+                     "needs searches every n steps (--ah-every step or a number)");
+}
+
+/// The grid itself and the steps it takes: cells finite, increasing and resolvable, the horizon
+/// finder's tolerance, the step's limits (checkpoints, step and row counts, the Gamma-driver
+/// damping).
+void validate_grid_and_steps(const Params& p) {
+  const double eta = p.eta.value();
+  // The grid itself: a map whose cells are not finite, increasing and resolvable in double
+  // precision is refused here, before anything is written, naming the flag that shapes it (the
+  // sinh grid's innermost width, the uniform grid's N).
+  const std::string grid_flag = p.grid == "sinh"    ? "--dr-inner"
+                                : p.grid == "boxes" ? "--levels"
+                                                    : "--N";
+  const std::string grid_value = p.grid == "sinh"    ? num(p.dr_inner)
+                                 : p.grid == "boxes" ? std::to_string(p.levels.value_or(1))
+                                                     : std::to_string(p.N);
+  const mesh::MeshLayout layout = [&] {
+    try {
+      return make_layout(mesh_config(p));
+    } catch (const std::bad_alloc&) {
+      throw; // not the grid's fault: the machine's (cli reports it)
+    } catch (const std::exception& e) {
+      throw ParamError(grid_flag, grid_value, fmt::format("gives no usable grid: {}", e.what()));
+    }
+  }();
+  const Grid& grid = layout.grid(layout.levels() - 1); // the finest
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    const Grid& g = layout.grid(l);
+    for (std::size_t i = 0; i < g.n_total(); ++i)
+      if (!std::isfinite(g.r()[i]) || !std::isfinite(g.dr()[i]) || !std::isfinite(g.inv_dr_dx()[i])
+          || !std::isfinite(g.d2_fx_coeff()[i]) || (i > 0 && !(g.r()[i] > g.r()[i - 1])))
+        throw ParamError(grid_flag, grid_value,
+                         fmt::format("gives a grid whose radii are not finite and increasing "
+                                     "(cell {})",
+                                     i));
+  }
+  if (!(grid.min_spacing() >= min_spacing_over_rmax * p.rmax))
+    throw ParamError(grid_flag, grid_value,
+                     fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
+                                 "double precision cannot difference",
+                                 grid.min_spacing(), min_spacing_over_rmax));
+  if (p.ah_tol > ah_tol_over_spacing_max * grid.min_spacing())
+    throw ParamError("--ah-tol", num(p.ah_tol),
+                     fmt::format("must be at most {} x the smallest cell width ({:.3g}), so that "
+                                 "the horizon is found well within one cell",
+                                 ah_tol_over_spacing_max, grid.min_spacing()));
+  // The Gamma-driver's damping term limits the step independently of the spacing.
+  const double dt = mesh::hierarchy_dt(layout, stepper_options(mesh_config(p))); // the whole step
+  const double dt_finest = time_step(p.cfl.value(), grid);
+  if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
+    throw ParamError("--checkpoint-every", num(p.checkpoint_every),
+                     fmt::format("is shorter than the time step dt = {:.6g} (checkpoints are "
+                                 "written between steps; 0: only on a signal)",
+                                 dt));
+  // The step count (the step is the CFL step whatever the output cadence) and the row counts.
+  const double n_steps = std::ceil(p.tmax / dt - 1e-9);
+  if (n_steps > steps_max)
+    throw ParamError(
+        "--tmax", num(p.tmax),
+        fmt::format("would take {:.3g} steps of dt = --cfl x smallest cell = {} (at most {:.0e})",
+                    n_steps, dt, steps_max));
+  if (p.tmax / p.dt_series > rows_max)
+    throw ParamError("--dt-series", num(p.dt_series),
+                     fmt::format("would write {:.3g} rows to --tmax = {} (at most {:.0e})",
+                                 p.tmax / p.dt_series, p.tmax, rows_max));
+  if (p.tmax / p.dt_profiles > rows_max / 100.0)
+    throw ParamError(
+        "--dt-profiles", num(p.dt_profiles),
+        fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
+                    p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
+  if (eta * dt_finest > eta_dt_max)
+    throw ParamError("--cfl", num(p.cfl.value()),
+                     fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
+                                 "the Gamma-driver damping)",
+                                 eta, eta * dt_finest, eta_dt_max));
+  if (p.grid == "boxes" && p.rah_variant == "midstep-update")
+    throw ParamError("--rah-variant", p.rah_variant,
+                     "is a single-grid study variant (its searches count one grid's RHS calls)");
+}
+
+} // namespace
+
+void validate(const Params& p) {
+  validate_grid_flags(p);
+  validate_evolution_numbers(p);
+  validate_horizon_shift(p);
+  validate_grid_and_steps(p);
+}
+void validate_output_dir(const Params& p) {
+  namespace fs = std::filesystem;
+  if (p.out.empty())
+    throw ParamError("--out", "''", "an output directory is required");
+  check_path("--out", p.out);
+  std::error_code ec;
+  const fs::path dir(p.out);
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec))
+      throw ParamError("--out", p.out, "exists and is not a directory");
+    if (!fs::is_empty(dir, ec) && !p.force)
+      throw ParamError("--out", p.out, "exists and is not empty (use --force to overwrite)");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+      throw ParamError("--out", p.out, "is not writable");
+    return;
+  }
+  // The nearest existing ancestor must be a writable directory.
+  fs::path parent = fs::absolute(dir, ec).parent_path();
+  while (!parent.empty() && !fs::exists(parent, ec))
+    parent = parent.parent_path();
+  if (parent.empty() || !fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK | X_OK))
+    throw ParamError("--out", p.out, "cannot be created: parent directory is not writable");
+}
+
+namespace {
+
+/// A path for a message: at most 120 bytes of it, non-printable bytes escaped.
+std::string shown_path(const std::string& path) {
+  return path.size() <= 120
+             ? printable(path)
+             : fmt::format("{}... ({} bytes)", printable(path.substr(0, 100)), path.size());
+}
+
+} // namespace
+
+void check_path(const std::string& flag, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string text = path.string();
+  if (text.size() > 4095)
+    throw ParamError(flag, shown_path(text), "is longer than 4095 bytes, the system's limit");
+  for (const auto& part : path)
+    if (part.string().size() > 255)
+      throw ParamError(
+          flag, shown_path(text),
+          fmt::format("has a name of {} bytes; the system's limit is 255", part.string().size()));
+  std::error_code ec;
+  (void)fs::status(path, ec);
+  if (!ec || ec == std::errc::no_such_file_or_directory)
+    return;
+  if (ec == std::errc::too_many_symbolic_link_levels)
+    throw ParamError(flag, shown_path(text), "leads into a loop of symbolic links");
+  if (ec == std::errc::not_a_directory)
+    throw ParamError(flag, shown_path(text), "has a part that is a file, not a folder");
+  if (ec == std::errc::permission_denied)
+    throw ParamError(flag, shown_path(text), "cannot be reached: permission denied");
+  throw ParamError(flag, shown_path(text), "cannot be used: " + ec.message());
+}
+
+void check_input_file(const std::string& flag, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  check_path(flag, path);
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st))
+    throw ParamError(flag, shown_path(path.string()), "no such file");
+  if (fs::is_directory(st))
+    throw ParamError(flag, shown_path(path.string()), "is a folder, not a file");
+  if (!fs::is_regular_file(st))
+    throw ParamError(flag, shown_path(path.string()),
+                     "is not a regular file (a FIFO, device or socket): give a file");
+  if (::access(path.c_str(), R_OK) != 0)
+    throw ParamError(flag, shown_path(path.string()), "cannot be read: permission denied");
+}
+
+void create_output_dir(const std::string& flag, const std::filesystem::path& dir) {
+  check_path(flag, dir);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw ParamError(flag, dir.string(), "cannot be created: " + ec.message());
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,155 @@
+#include "evolution/horizon_tracker.hpp"
+
+#include <fmt/format.h>
+
+namespace gbssn1d {
+
+namespace {
+
+HorizonTracker::Mode decide_mode(const EvolutionConfig& config, const mesh::MeshLayout& layout) {
+  using Mode = HorizonTracker::Mode;
+  const HorizonShiftParams& hs = config.rhs.horizon_shift;
+  if (!hs.active())
+    return Mode::off;
+  if (hs.prescribed())
+    return Mode::prescribed;
+  if (config.horizon_search.every_steps > 0)
+    return Mode::held;
+  if (layout.levels() > 1 && hs.variant != HorizonShiftParams::Variant::box_substage)
+    return Mode::extrapolated;
+  return Mode::substage;
+}
+
+} // namespace
+
+HorizonTracker::HorizonTracker(const EvolutionConfig& config, const mesh::MeshLayout& layout,
+                               const std::vector<State>& levels, std::vector<GbssnRhs>& rhs)
+    : config_(config), layout_(layout), levels_(levels), rhs_(rhs),
+      mode_(decide_mode(config, layout)) {}
+
+std::optional<MarginalSurface> HorizonTracker::search(std::size_t l, double seed, double t) const {
+  try {
+    return find_horizon_near(levels_[l], layout_.grid(l), config_.horizon_search.finder, seed);
+  } catch (const HorizonFinderError& e) {
+    throw HorizonFinderError(fmt::format("{} (t = {:.6g})", e.what(), t));
+  }
+}
+
+std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, const Grid& grid,
+                                             double seed, double t) {
+  if (mode_ == Mode::extrapolated)
+    return extrapolated_at(t);
+  // a single grid, or the study variant box_substage: the box holding the horizon searches on
+  // its own stage state, the other boxes read its latest value
+  if (layout_.levels() > 1 && level != this->level())
+    return shared_;
+  try {
+    const auto found = find_horizon_near(u, grid, config_.horizon_search.finder, seed);
+    shared_ = found ? std::optional<double>(found->r) : std::nullopt;
+    return shared_;
+  } catch (const HorizonFinderError& e) {
+    throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
+  }
+}
+
+std::optional<double> HorizonTracker::extrapolated_at(double t) const {
+  const auto& h = history_;
+  if (h.empty())
+    return std::nullopt;
+  if (!config_.horizon_search.in_window(t)) // no searches: the last radius is held
+    return h.back()[1];
+  // the Lagrange polynomial through the last (up to four) radii, at t
+  double sum = 0.0;
+  for (std::size_t j = 0; j < h.size(); ++j) {
+    double w = 1.0;
+    for (std::size_t m = 0; m < h.size(); ++m)
+      if (m != j)
+        w *= (t - h[m][0]) / (h[j][0] - h[m][0]);
+    sum += w * h[j][1];
+  }
+  return sum;
+}
+
+void HorizonTracker::search_at_step(double t) {
+  if (mode_ != Mode::extrapolated || !config_.horizon_search.in_window(t))
+    return;
+  const auto found = search(level(), extrapolated_at(t).value_or(config_.rhs.horizon_shift.h), t);
+  if (!found) { // beta_H = 0 until a horizon is found again
+    history_.clear();
+  } else {
+    if (!history_.empty() && history_.back()[0] == t)
+      history_.pop_back(); // found again at the same time (a resumed run's first step)
+    history_.push_back(std::array<double, 2>{t, found->r});
+    if (history_.size() > 4)
+      history_.erase(history_.begin());
+  }
+  shared_ = found ? std::optional<double>(found->r) : std::nullopt;
+}
+
+void HorizonTracker::update_held(double t) {
+  if (mode_ != Mode::held || !config_.horizon_search.in_window(t)
+      || config_.rhs.horizon_shift.variant
+             == HorizonShiftParams::Variant::midstep_update) // searched inside the RHS
+    return;
+  const std::size_t l = level();
+  const auto found = search(l, rhs_[l].horizon_radius().value_or(config_.rhs.horizon_shift.h), t);
+  // Without a horizon the held value is dropped: beta_H = 0 until one is found. Every level
+  // holds the same value.
+  shared_ = found ? std::optional<double>(found->r) : std::nullopt;
+  for (auto& rhs : rhs_)
+    rhs.set_horizon_radius(shared_);
+}
+
+void HorizonTracker::start(double t) {
+  update_held(t);
+  search_at_step(t);
+  if (layout_.levels() > 1
+      && config_.rhs.horizon_shift.variant == HorizonShiftParams::Variant::box_substage) {
+    // every box starts from the radius found on the box holding the horizon
+    const auto found = search(level(), config_.rhs.horizon_shift.h, t);
+    shared_ = found ? std::optional<double>(found->r) : std::nullopt;
+  }
+}
+
+void HorizonTracker::after_step(long n, double t) {
+  if (const long every = config_.horizon_search.every_steps; every > 0 && n % every == 0)
+    update_held(t);
+  search_at_step(t);
+}
+
+std::size_t HorizonTracker::level() const {
+  if (layout_.levels() == 1)
+    return 0;
+  const double r = shared_.value_or(standard_horizon_radius * config_.initial_data.M);
+  return layout_.finest_level_covering(r, RefinementSettings::horizon_margin_cells);
+}
+
+std::optional<double> HorizonTracker::radius(double t) {
+  const auto& hs = config_.rhs.horizon_shift;
+  switch (mode_) {
+  case Mode::off:
+    return std::nullopt;
+  case Mode::prescribed:
+    return hs.prescribed_h_AH(t);
+  case Mode::extrapolated:
+    return extrapolated_at(t);
+  case Mode::substage:
+    if (config_.horizon_search.in_window(t)) {
+      const std::size_t l = level();
+      const auto found = search(l, rhs_[l].horizon_radius().value_or(hs.h), t);
+      return found ? std::optional<double>(found->r) : std::nullopt;
+    }
+    break;
+  case Mode::held:
+    break;
+  }
+  return rhs_[level()].horizon_radius();
+}
+
+void HorizonTracker::restore(const std::optional<double>& shared,
+                             const std::vector<std::array<double, 2>>& history) {
+  shared_ = shared;
+  history_ = history;
+}
+
+} // namespace gbssn1d

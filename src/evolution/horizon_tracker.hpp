@@ -1,0 +1,82 @@
+// The apparent horizon's coordinate radius h_AH that the horizon-adjusting shift beta_H uses
+// (docs/gbssn1d-equations.md, the horizon-adjusting shift): measured on the state, held or
+// extrapolated between measurements, and handed to every level's right-hand side. The mode is
+// decided once from the configuration, as SpECTRE's control systems separate measurement from
+// the control they feed:
+//   off           no horizon shift (rahA = 0): h_AH is never needed;
+//   prescribed    open loop, h_AH(t) from a file, no searches;
+//   held          a search every n steps (or once a step), the radius held between them;
+//   substage      a single grid, or boxes with the box-substage variant: the RHS of the level
+//                 holding the horizon searches on every RK stage's state, the others read it;
+//   extrapolated  boxes, searches every substage (the default): a search on the box holding the
+//                 horizon after each step of the hierarchy, and h_AH at any stage's time from the
+//                 Lagrange polynomial through the last (up to) four radii (error O(dt^4)).
+#pragma once
+
+#include "evolution/evolution_config.hpp"
+#include "gbssn/rhs.hpp"
+#include "horizon/apparent_horizon.hpp"
+#include "mesh/hierarchy.hpp"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace gbssn1d {
+
+class HorizonTracker {
+public:
+  enum class Mode { off, prescribed, held, substage, extrapolated };
+
+  /// Reads `levels` and sets the h_AH of `rhs` (one per level); both outlive the tracker.
+  HorizonTracker(const EvolutionConfig& config, const mesh::MeshLayout& layout,
+                 const std::vector<State>& levels, std::vector<GbssnRhs>& rhs);
+
+  Mode mode() const { return mode_; }
+
+  /// The RHS's search at an RK substage of `level` (modes substage and extrapolated).
+  std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
+                               double t);
+  /// Before the first step at time t: the first searches of the held and extrapolated modes,
+  /// and with box-substage every box's starting radius.
+  void start(double t);
+  /// After step n of the hierarchy, at time t: the searches due (held every n steps; the
+  /// extrapolated mode's search).
+  void after_step(long n, double t);
+
+  /// h_AH for the state at time t, as the evolution's RHS would use it now (a search for the
+  /// substage mode); nullopt: no horizon, beta_H = 0.
+  std::optional<double> radius(double t);
+  /// The level searched: the finest on which the horizon (or, before one is found, the
+  /// standard radius 0.8304 M) lies well inside; 0 for a single grid.
+  std::size_t level() const;
+
+  /// What a checkpoint keeps (boxes): the shared radius before the coming RHS, and the history.
+  std::optional<double> shared_before_rhs() const { return shared_before_rhs_; }
+  const std::vector<std::array<double, 2>>& history() const { return history_; }
+  /// Records the shared radius as it is before the next RHS evaluation (for checkpoints).
+  void mark_before_rhs() { shared_before_rhs_ = shared_; }
+  /// Continues from a checkpoint's radius and history.
+  void restore(const std::optional<double>& shared,
+               const std::vector<std::array<double, 2>>& history);
+
+private:
+  /// h_AH at time t from the history (extrapolated mode).
+  std::optional<double> extrapolated_at(double t) const;
+  /// A search near `seed` on level l's state; a HorizonFinderError gets the time added.
+  std::optional<MarginalSurface> search(std::size_t l, double seed, double t) const;
+  void update_held(double t);
+  void search_at_step(double t);
+
+  const EvolutionConfig& config_;
+  const mesh::MeshLayout& layout_;
+  const std::vector<State>& levels_;
+  std::vector<GbssnRhs>& rhs_;
+  Mode mode_;
+  /// The radius every level's horizon shift uses, found on level()'s state; the others read it.
+  std::optional<double> shared_;
+  std::optional<double> shared_before_rhs_;
+  std::vector<std::array<double, 2>> history_; ///< extrapolated: (t, h_AH) of the last searches
+};
+
+} // namespace gbssn1d

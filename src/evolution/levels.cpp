@@ -1,0 +1,75 @@
+#include "evolution/levels.hpp"
+
+#include "initial_data/initial_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbssn1d {
+
+Schedule make_schedule(const EvolutionConfig& config, double dt) {
+  Schedule s;
+  s.dt = dt;
+  s.n_steps = static_cast<long>(std::ceil(config.tmax / s.dt - 1e-9));
+  return s;
+}
+
+void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
+                         double dt, double theta, State& out) {
+  const double s = theta, s2 = s * s, s3 = s2 * s;
+  const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h01 = -2.0 * s3 + 3.0 * s2;
+  const double h10 = (s3 - 2.0 * s2 + s) * dt, h11 = (s3 - s2) * dt;
+  out.resize(u0.size());
+  for (std::size_t i = 0; i < u0.size(); ++i)
+    out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
+}
+
+mesh::MeshLayout make_layout(const EvolutionConfig& config) {
+  if (config.refinement.levels > 1)
+    return mesh::MeshLayout(config.grid.rmax, config.grid.N, config.refinement.levels,
+                            config.grid.fd_order);
+  return mesh::MeshLayout(make_grid(config.grid).map(), config.grid.N, 1, config.grid.fd_order);
+}
+
+mesh::StepperOptions stepper_options(const EvolutionConfig& config) {
+  return mesh::StepperOptions{.time = config.refinement.time,
+                              .subcycling = config.refinement.subcycling,
+                              .cfl = config.cfl,
+                              .dt_max = config.refinement.dt_max};
+}
+
+void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
+  if (chi_floor <= 0.0)
+    return;
+  for (double& chi : field(u, grid, Var::chi))
+    chi = std::max(chi, chi_floor);
+}
+
+std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
+                                     const Locate& locate) {
+  std::vector<GbssnRhs> rhs;
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    RhsParams r = config.rhs;
+    r.horizon_shift.locate = [l, locate](const State& u, const Grid& grid, double seed, double t) {
+      return locate(l, u, grid, seed, t);
+    };
+    rhs.emplace_back(layout.grid(l), r);
+  }
+  return rhs;
+}
+
+std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id) {
+  std::vector<State> u;
+  for (std::size_t l = 0; l < layout.levels(); ++l)
+    u.push_back(initial_data(layout.grid(l), id));
+  return u;
+}
+
+std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs) {
+  std::vector<mesh::LevelRhs> f;
+  for (auto& r : rhs)
+    f.emplace_back([&r](const State& u, State& dudt, double t) { r(u, dudt, t); });
+  return f;
+}
+
+} // namespace gbssn1d

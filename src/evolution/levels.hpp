@@ -1,0 +1,54 @@
+// The levels of a run and how they step, from its configuration: the layout (one level on the
+// grid's map, or --levels boxes), the stepper's options, the time step schedule, and the
+// operations applied to a level's state between steps (the chi floor) and between output
+// times (RK4's dense output on a single grid).
+#pragma once
+
+#include "evolution/evolution_config.hpp"
+#include "gbssn/rhs.hpp"
+#include "gbssn/state.hpp"
+#include "grid/grid.hpp"
+#include "mesh/hierarchy.hpp"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace gbssn1d {
+
+/// The time stepping of a run: dt = cfl x smallest spacing, whatever the output cadence; the
+/// last step is shortened to end exactly at tmax. Output between steps is interpolated
+/// (Simulation::run).
+struct Schedule {
+  double dt;
+  long n_steps;
+};
+Schedule make_schedule(const EvolutionConfig& config, double dt);
+
+/// The levels of `config`'s grid: one level on its map, or --levels boxes.
+mesh::MeshLayout make_layout(const EvolutionConfig& config);
+/// The stepper's options of `config`.
+mesh::StepperOptions stepper_options(const EvolutionConfig& config);
+
+/// A level's horizon search at an RK substage: (level, stage state, grid, seed, t) -> h_AH.
+using Locate =
+    std::function<std::optional<double>(std::size_t, const State&, const Grid&, double, double)>;
+/// One RHS per level of `layout`; their substage searches go to `locate`.
+std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
+                                     const Locate& locate);
+/// The initial data on every level.
+std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id);
+/// The stepper's view of each level's RHS (which must outlive it).
+std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs);
+
+/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
+/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
+void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
+                         double dt, double theta, State& out);
+
+/// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
+/// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,
+/// and the (d_r chi)^2 / chi terms of (R1)-(R4) then diverge; docs/horizon-shift-study.md Sec. 4.
+void apply_chi_floor(State& u, const Grid& grid, double chi_floor);
+
+} // namespace gbssn1d

@@ -1,0 +1,191 @@
+#include "evolution/observe.hpp"
+
+#include "grid/interpolation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string>
+#include <utility>
+
+namespace gbssn1d {
+
+namespace {
+
+/// Samples at radius r are interpolated on the finest level on which r lies this many cells
+/// inside the edge: the 6-point stencil (k - 2 ... k + 3) then reads interior cells only.
+constexpr double sample_margin_cells = 4.0;
+
+/// Diagnostic copies: they never search (their h_AH is set from the evolution's).
+std::vector<GbssnRhs> diagnostic_copies(const EvolutionConfig& config,
+                                        const mesh::MeshLayout& layout) {
+  std::vector<GbssnRhs> rhs;
+  RhsParams r = config.rhs;
+  r.horizon_shift.search_every_substage = false;
+  r.horizon_shift.locate = nullptr;
+  using V = HorizonShiftParams::Variant;
+  if (r.horizon_shift.variant == V::midstep_update || r.horizon_shift.variant == V::box_substage)
+    r.horizon_shift.variant = V::consistent; // they differ in searches only
+  for (std::size_t l = 0; l < layout.levels(); ++l)
+    rhs.emplace_back(layout.grid(l), r);
+  return rhs;
+}
+
+} // namespace
+
+std::vector<DerivedProfiles> level_profiles(const mesh::MeshLayout& layout,
+                                            const std::vector<State>& levels) {
+  std::vector<DerivedProfiles> d;
+  for (std::size_t l = 0; l < layout.levels(); ++l)
+    d.push_back(derived_profiles(levels[l], layout.grid(l)));
+  return d;
+}
+
+DerivedProfiles composite_profiles(const mesh::MeshLayout& layout, const mesh::Composite& composite,
+                                   const std::vector<DerivedProfiles>& levels) {
+  if (layout.levels() == 1)
+    return levels.front();
+  auto gather = [&](std::vector<double> DerivedProfiles::*member) {
+    std::vector<std::span<const double>> arrays;
+    for (const auto& d : levels)
+      arrays.emplace_back(d.*member);
+    return composite.gather_interior(arrays);
+  };
+  DerivedProfiles c;
+  c.H = gather(&DerivedProfiles::H);
+  c.M_r = gather(&DerivedProfiles::M_r);
+  c.G_r = gather(&DerivedProfiles::G_r);
+  c.R_areal = gather(&DerivedProfiles::R_areal);
+  c.Theta_plus = gather(&DerivedProfiles::Theta_plus);
+  return c;
+}
+
+double value_at_radius(const mesh::MeshLayout& layout, const std::vector<State>& levels, Var v,
+                       double r) {
+  const std::size_t l = layout.finest_level_covering(r, sample_margin_cells);
+  return interpolate_at_radius(layout.grid(l), field(levels[l], layout.grid(l), v), r);
+}
+
+double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProfiles>& levels,
+                   double r) {
+  const std::size_t l = layout.finest_level_covering(r, sample_margin_cells);
+  const Grid& g = layout.grid(l);
+  // the interior values with their nearest neighbours continued into the ghosts
+  std::vector<double> f(g.n_total());
+  const auto& H = levels.at(l).H;
+  for (std::size_t i = 0; i < g.n_total(); ++i) {
+    const std::size_t k = std::clamp(i, g.first_interior(), g.end_interior() - 1);
+    f[i] = H[k - g.first_interior()];
+  }
+  return interpolate_at_radius(g, f, r);
+}
+
+HorizonSearch find_all_horizons(const mesh::MeshLayout& layout, const std::vector<State>& levels,
+                                const HorizonFinderParams& finder, double t) {
+  auto with_time = [t](auto search) {
+    try {
+      return search();
+    } catch (const HorizonFinderError& e) {
+      throw HorizonFinderError(fmt::format("{} (t = {:.6g})", e.what(), t));
+    }
+  };
+  if (layout.levels() == 1)
+    return with_time([&] { return find_horizons(levels[0], layout.grid(0), finder); });
+  // each level searches the part of the composite it supplies: r beyond its child's extent
+  HorizonSearch all;
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    HorizonFinderParams p = finder;
+    if (l + 1 < layout.levels())
+      p.r_min = std::max(p.r_min, layout.extent(l + 1));
+    HorizonSearch found = with_time([&] { return find_horizons(levels[l], layout.grid(l), p); });
+    for (auto& s : found.surfaces) {
+      s.level = l;
+      all.surfaces.push_back(s);
+    }
+  }
+  std::sort(all.surfaces.begin(), all.surfaces.end(),
+            [](const MarginalSurface& a, const MarginalSurface& b) { return a.r > b.r; });
+  return all;
+}
+
+SeriesDiagnostics::SeriesDiagnostics(const EvolutionConfig& config, const mesh::MeshLayout& layout)
+    : config_(config), layout_(layout), rhs_(diagnostic_copies(config, layout)),
+      dudt_(layout.levels()) {}
+
+SeriesRow SeriesDiagnostics::row(const std::vector<State>& levels, double t,
+                                 const DerivedProfiles& d, const HorizonSearch& found,
+                                 const std::optional<double>& h_AH,
+                                 const mesh::Composite& composite) {
+  const Grid& g = composite.grid();
+  const std::size_t finest = layout_.levels() - 1;
+  const double inf = std::numeric_limits<double>::infinity();
+  SeriesRow row;
+  row.t = t;
+  row.alpha_center =
+      central_value(field(levels[finest], layout_.grid(finest), Var::alpha), layout_.grid(finest));
+  row.H_L2 = l2_norm(d.H, g, 0.0, inf);
+  const NormWindows& w = config_.norms;
+  row.H_L2_ext = l2_norm(d.H, g, w.rmin, w.rmax);
+  row.M_L2 = l2_norm(d.M_r, g, 0.0, inf);
+  row.M_L2_ext = l2_norm(d.M_r, g, w.rmin, w.rmax);
+  row.G_L2 = l2_norm(d.G_r, g, 0.0, inf);
+  row.G_L2_ext = l2_norm(d.G_r, g, w.rmin, w.rmax);
+  row.H_L2_R = l2_norm_areal(d.H, d.R_areal, w.Rmin, w.Rmax);
+  row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, w.Rmin, w.Rmax);
+  row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, w.Rint);
+  // d_t alpha on every level with the h_AH the evolution would use now
+  std::vector<std::span<const double>> dt_alpha_levels;
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    rhs_[l].set_horizon_radius(h_AH);
+    rhs_[l](levels[l], dudt_[l], t);
+    dt_alpha_levels.push_back(field(std::as_const(dudt_[l]), layout_.grid(l), Var::alpha));
+  }
+  const std::vector<double> dt_alpha = composite.gather(dt_alpha_levels);
+  const auto horizon = found.horizon();
+  row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
+  row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
+  row.M_ah_err = row.M_ah - config_.initial_data.M;
+  row.dtalpha_max_ext = 0.0;
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
+    if (g.r()[i] >= config_.norms.rmin && g.r()[i] <= config_.norms.rmax)
+      row.dtalpha_max_ext = std::max(row.dtalpha_max_ext, std::abs(dt_alpha[i]));
+  return row;
+}
+
+NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_)
+    : std::runtime_error(fmt::format(
+        "the evolution became non-finite at t = {:.6g}, r = {:.6g} in {}", t_, r_, var_)),
+      t(t_), r(r_), var(var_) {}
+
+NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_, double value,
+                               const std::string& why)
+    : std::runtime_error(fmt::format("the evolution left the physical range at t = {:.6g}, "
+                                     "r = {:.6g}: {} = {:.6g} ({})",
+                                     t_, r_, var_, value, why)),
+      t(t_), r(r_), var(var_) {}
+
+void check_physical_range(const mesh::MeshLayout& layout, const std::vector<State>& levels,
+                          double t, double alpha_min, double alpha_max) {
+  for (std::size_t l = 0; l < layout.levels(); ++l) {
+    const Grid& g = layout.grid(l);
+    const State& u = levels[l];
+    const std::string where = layout.levels() > 1 ? fmt::format(" (box {})", l) : "";
+    for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
+      for (const auto& entry : registry)
+        if (!std::isfinite(field(u, g, entry.var)[i]))
+          throw NonFiniteError(t, g.r()[i], std::string(entry.name) + where);
+    const auto chi = field(u, g, Var::chi), alpha = field(u, g, Var::alpha);
+    for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+      if (!(chi[i] > 0.0))
+        throw NonFiniteError(t, g.r()[i], "chi" + where, chi[i], "must be > 0; see --chi-floor");
+      if (alpha[i] < alpha_min || alpha[i] > alpha_max)
+        throw NonFiniteError(t, g.r()[i], "alpha" + where, alpha[i],
+                             fmt::format("must lie in [{}, {}]", alpha_min, alpha_max));
+    }
+  }
+}
+
+} // namespace gbssn1d

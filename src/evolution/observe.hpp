@@ -1,0 +1,73 @@
+// What a run measures of its levels' state, apart from evolving it: the derived profiles (H,
+// M_r, G_r, R, Theta_+) per level and composite, values at a radius, every marginal surface,
+// the physical-range check, and the time-series row with its own diagnostic right-hand side
+// (engrenage's diagnostics module, GRChombo's post-timestep hooks). Nothing here changes the
+// evolved state or the evolution's RHS counts.
+#pragma once
+
+#include "diagnostics/constraints.hpp"
+#include "evolution/evolution_config.hpp"
+#include "gbssn/rhs.hpp"
+#include "horizon/apparent_horizon.hpp"
+#include "io/output.hpp"
+#include "mesh/composite.hpp"
+#include "mesh/hierarchy.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// Thrown when the state stops being finite, or chi or alpha leaves its physical range
+/// (check_physical_range); says what, where and when.
+class NonFiniteError : public std::runtime_error {
+public:
+  NonFiniteError(double t, double r, const std::string& var);
+  /// A finite value outside its range: "`var` = value at r, t: `why`".
+  NonFiniteError(double t, double r, const std::string& var, double value, const std::string& why);
+  double t, r;
+  std::string var;
+};
+
+/// Throws NonFiniteError at the first non-finite value of any level's state at time t, or a
+/// chi <= 0, or an alpha outside [alpha_min, alpha_max] (on the interior).
+void check_physical_range(const mesh::MeshLayout& layout, const std::vector<State>& levels,
+                          double t, double alpha_min, double alpha_max);
+
+/// H, M_r, G_r, R, Theta_+ on every level's interior.
+std::vector<DerivedProfiles> level_profiles(const mesh::MeshLayout& layout,
+                                            const std::vector<State>& levels);
+/// Their composite over [0, rmax] (each r from the finest level covering it).
+DerivedProfiles composite_profiles(const mesh::MeshLayout& layout, const mesh::Composite& composite,
+                                   const std::vector<DerivedProfiles>& levels);
+/// A variable at radius r (6-point Lagrange on the finest level that covers r).
+double value_at_radius(const mesh::MeshLayout& layout, const std::vector<State>& levels, Var v,
+                       double r);
+/// H at radius r from level profiles.
+double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProfiles>& levels,
+                   double r);
+/// Every marginal surface at time t, each from the finest level covering it; a
+/// HorizonFinderError gets t added.
+HorizonSearch find_all_horizons(const mesh::MeshLayout& layout, const std::vector<State>& levels,
+                                const HorizonFinderParams& finder, double t);
+
+/// The time-series row of a state: norms of the constraints, the horizon, and d_t alpha from a
+/// right-hand side of its own per level (never searching; its h_AH is the evolution's), so
+/// that the evolution's RHS evaluations stay countable.
+class SeriesDiagnostics {
+public:
+  SeriesDiagnostics(const EvolutionConfig& config, const mesh::MeshLayout& layout);
+  SeriesRow row(const std::vector<State>& levels, double t, const DerivedProfiles& d,
+                const HorizonSearch& found, const std::optional<double>& h_AH,
+                const mesh::Composite& composite);
+
+private:
+  const EvolutionConfig& config_;
+  const mesh::MeshLayout& layout_;
+  std::vector<GbssnRhs> rhs_;
+  std::vector<State> dudt_; ///< per level: scratch
+};
+
+} // namespace gbssn1d

@@ -1,0 +1,317 @@
+#include "study/sweep_store.hpp"
+
+#include "config/config_file.hpp"
+#include "config/numbers.hpp"
+#include "config/params.hpp"
+#include "core/console.hpp"
+#include "core/stop_signal.hpp"
+#include "io/output.hpp"
+#include "io/table.hpp"
+#include "study/orders.hpp"
+#include "study/parallel.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <set>
+#include <spawn.h>
+#include <sstream>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace gbssn1d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, sep);)
+    out.push_back(item);
+  return out;
+}
+
+/// A member's inputs: its effective configuration (defaults resolved), as its config.toml would
+/// hold it; for a member that does not parse, its arguments.
+std::string member_inputs(const SweepMember& m) {
+  try {
+    Params p = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // without --out, --force
+    p.out.clear();
+    resolve_defaults(p);
+    return config_text(p);
+  } catch (const std::exception&) {
+    return fmt::format("args = \"{}\"\n", fmt::join(m.args, " "));
+  }
+}
+
+/// What an earlier run of the sweep in `dir` ran member `m` with: the inputs file written when
+/// it started, or (for a member folder without one) the member's config.toml; empty if nothing
+/// of it is there.
+std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
+  std::error_code ec; // a path that cannot be examined holds nothing (its creation is refused)
+  for (const fs::path& file : {dir / "logs" / (m.name + ".inputs"), dir / m.name / "config.toml"})
+    if (fs::is_regular_file(file, ec)) {
+      std::ifstream in(file);
+      std::stringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+  return {};
+}
+
+/// A member's inputs without the horizon-shift flags if its strength is 0 (where they do
+/// nothing): members with equal keys are the same run.
+std::string same_run_key(const std::string& inputs) {
+  if (inputs.find("\nrahA = 0\n") == std::string::npos && inputs.rfind("rahA = 0\n", 0) != 0)
+    return inputs;
+  std::istringstream lines(inputs);
+  std::string key;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("rah", 0) != 0 || line.rfind("rahA ", 0) == 0)
+      key += line + "\n";
+  return key;
+}
+
+/// The sweep's axes in their order (OUT/logs/axes): member folders are named in that order,
+/// so a rerun, --member or --collect with the axes in another order would find none of them.
+std::string axis_order_text(const std::vector<SweepAxis>& axes) {
+  std::string text;
+  for (const auto& axis : axes)
+    text += fmt::format("{}\n", fmt::join(axis.flags, ","));
+  return text;
+}
+
+} // namespace
+
+std::optional<RecordedStatus> recorded_status(const fs::path& status_file) {
+  std::ifstream in(status_file);
+  RecordedStatus r;
+  if (!(in >> r.status >> r.wall >> r.reason))
+    return std::nullopt;
+  return r;
+}
+
+bool member_done(const fs::path& status_file) {
+  const auto r = recorded_status(status_file);
+  return r && (r->status == "ok" || r->status == "invalid" || r->status == "blew-up");
+}
+
+std::string token(std::string s) {
+  for (char& c : s)
+    if (c == ' ' || c == '\t')
+      c = '_';
+  return s.empty() ? "-" : s;
+}
+
+SweepAxis parse_sweep_axis(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw ParamError("--sweep", text, "must look like flag=value1,value2,...");
+  SweepAxis axis;
+  axis.flags = split(text.substr(0, eq), ',');
+  for (const auto& flag : axis.flags) {
+    if (!is_parameter_name(flag))
+      throw ParamError("--sweep", text, fmt::format("'{}' is not an evolve flag", flag));
+    if (flag == "out" || flag == "force")
+      throw ParamError("--sweep", text, "the sweep chooses each member's --out itself");
+  }
+  if (std::any_of(text.begin(), text.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+    throw ParamError("--sweep", printable(text),
+                     "holds a control character (a value must be one line of text)");
+  for (const auto& point : split(text.substr(eq + 1), ',')) {
+    std::vector<std::string> values = split(point, ':');
+    if (values.size() != axis.flags.size()
+        || std::any_of(values.begin(), values.end(), [](const auto& v) { return v.empty(); }))
+      throw ParamError(
+          "--sweep", text,
+          fmt::format("'{}' must give {} value(s) joined by ':'", point, axis.flags.size()));
+    for (const auto& v : values)
+      if (v.find_first_of(" \t") != std::string::npos)
+        throw ParamError("--sweep", printable(text),
+                         fmt::format("the value '{}' holds white space (a value is one word: "
+                                     "summary.dat's columns are separated by spaces)",
+                                     printable(v)));
+    axis.values.push_back(values);
+  }
+  return axis;
+}
+
+std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
+                                       const std::vector<std::string>& evolve_args,
+                                       const std::string& out) {
+  std::vector<SweepMember> members{SweepMember{}};
+  for (const auto& axis : axes) {
+    std::vector<SweepMember> next;
+    for (const auto& m : members)
+      for (const auto& point : axis.values) {
+        SweepMember n = m;
+        for (std::size_t f = 0; f < axis.flags.size(); ++f)
+          n.values.emplace_back(axis.flags[f], point[f]);
+        next.push_back(n);
+      }
+    members = next;
+  }
+  for (auto& m : members) {
+    for (const auto& [flag, value] : m.values) {
+      std::string part = flag + "=" + value;
+      for (char& c : part)
+        if (c == '/' || c == ' ')
+          c = '_';
+      m.name += (m.name.empty() ? "" : "_") + part;
+    }
+    m.args = {"evolve"};
+    m.args.insert(m.args.end(), evolve_args.begin(), evolve_args.end());
+    for (const auto& [flag, value] : m.values)
+      m.args.push_back("--" + flag + "=" + value);
+    m.args.push_back("--out=" + (fs::path(out) / m.name).string());
+    m.args.push_back("--force");
+    m.inputs = member_inputs(m);
+  }
+  // Two members in one folder would share (and overwrite) their results, and two members of
+  // one configuration would run the same thing twice and repeat it in the summary.
+  std::map<std::string, const SweepMember*> by_name, by_config;
+  auto values_text = [](const SweepMember& m) {
+    std::string s;
+    for (const auto& [flag, value] : m.values)
+      s += (s.empty() ? "" : " ") + flag + "=" + value;
+    return printable(s);
+  };
+  for (const auto& m : members) {
+    // the folder, and logs/NAME.inputs, .status, .lock, .log: each a name of at most 255 bytes
+    if (m.name.size() + std::string(".inputs").size() > 255)
+      throw ParamError("--sweep", values_text(m),
+                       fmt::format("gives a member folder name of {} bytes; with its log files' "
+                                   "suffixes the system's limit of 255 is passed (shorter values)",
+                                   m.name.size()));
+    if (const auto [it, fresh] = by_name.emplace(m.name, &m); !fresh)
+      throw ParamError("--sweep", values_text(m),
+                       fmt::format("gives the member folder '{}' of '{}' again", printable(m.name),
+                                   values_text(*it->second)));
+    if (const auto [it, fresh] = by_config.emplace(m.inputs, &m); !fresh)
+      throw ParamError(
+          "--sweep", values_text(m),
+          fmt::format("runs the same configuration as '{}'", values_text(*it->second)));
+  }
+  return members;
+}
+
+/// Groups of members that are the same run (the horizon-shift flags of a member with rahA = 0
+/// do nothing), each as "a = b = c"; said on stderr and in summary.dat, so that nobody reads
+/// them as different results.
+std::vector<std::string> same_runs(const std::vector<SweepMember>& members) {
+  std::map<std::string, std::vector<std::string>> groups;
+  std::vector<std::string> order;
+  for (const auto& m : members) {
+    const std::string key = same_run_key(m.inputs);
+    auto& g = groups[key];
+    if (g.empty())
+      order.push_back(key);
+    g.push_back(m.name);
+  }
+  std::vector<std::string> out;
+  for (const auto& key : order)
+    if (groups[key].size() > 1)
+      out.push_back(fmt::format("{}", fmt::join(groups[key], " = ")));
+  return out;
+}
+
+/// Why `m` cannot run (its flags do not validate), or nullopt.
+std::optional<std::string> invalid_reason(const SweepMember& m) {
+  try {
+    std::vector<std::string> args(m.args.begin() + 1, m.args.end());
+    Params p = parse_evolve_args(args);
+    resolve_defaults(p);
+    validate(p);
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+}
+
+/// A folder that holds members run with other inputs is refused (naming them) before anything
+/// is written or launched: results of other inputs are never reused or mixed in.
+void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMember*>& members,
+                          const std::string& out) {
+  std::vector<std::string> changed;
+  for (const SweepMember* m : members) {
+    const std::string before = earlier_inputs(dir, *m);
+    if (before.empty())
+      continue;
+    const auto diff = config_differences(before, m->inputs);
+    if (!diff.empty())
+      changed.push_back(fmt::format("{} ({})", m->name, fmt::join(diff, ", ")));
+  }
+  if (!changed.empty())
+    throw ParamError(
+        "--out", out,
+        fmt::format("holds members run with other inputs: {}; nothing was run or changed. "
+                    "Use another --out, or remove those members' folders and logs/ files to "
+                    "rerun them",
+                    fmt::join(changed.begin(),
+                              changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3), "; "))
+            + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
+}
+
+std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members) {
+  std::vector<const SweepMember*> all;
+  for (const auto& m : members)
+    all.push_back(&m);
+  return all;
+}
+
+void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
+  const fs::path file = fs::path(out) / "logs" / "axes";
+  create_output_dir("--out", file.parent_path());
+  if (!fs::exists(file))
+    write_file_atomically(file, axis_order_text(axes));
+}
+
+/// Refuses axes in another order than the folder's sweep (or other axes), naming its order.
+void check_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
+  std::ifstream in(fs::path(out) / "logs" / "axes");
+  if (!in)
+    return; // a new sweep, or one from before the axes were recorded
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string now = axis_order_text(axes);
+  if (text.str() == now)
+    return;
+  std::vector<std::string> before, given;
+  std::istringstream a(text.str()), b(now);
+  for (std::string line; std::getline(a, line);)
+    before.push_back(line);
+  for (std::string line; std::getline(b, line);)
+    given.push_back(line);
+  auto sorted = [](std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  throw ParamError(
+      "--sweep", fmt::format("{}", fmt::join(given, " ")),
+      sorted(before) == sorted(given)
+          ? fmt::format("gives the axes of the sweep in {} in another order: give them as it "
+                        "did, {} (member folders are named in that order)",
+                        printable(out), fmt::join(before, " then "))
+          : fmt::format("{} holds a sweep over other flags ({}): use another --out", printable(out),
+                        fmt::join(before, " then ")));
+}
+
+} // namespace gbssn1d

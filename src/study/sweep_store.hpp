@@ -1,0 +1,53 @@
+// A sweep's members as stored in its folder OUT: their names and inputs, the status file each
+// run leaves in OUT/logs/, which members are done for good, which are the same run, and the
+// checks that a rerun, --member or --collect meets the same members with the same inputs.
+#pragma once
+
+#include "study/sweep.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// A member's status file, "status wall reason", as a rerun of the sweep reads it back.
+struct RecordedStatus {
+  std::string status, reason;
+  double wall = 0.0;
+};
+std::optional<RecordedStatus> recorded_status(const std::filesystem::path& status_file);
+
+/// Whether a member is done for good: finished (ok), or ended by its inputs (invalid, blew-up),
+/// which a rerun would only repeat. A member that failed (a write error, killed by a signal of
+/// its own such as the kernel's out-of-memory SIGKILL) or was interrupted is not: a rerun of
+/// the sweep, or its requeued task line, runs it again, from its checkpoint where it has one.
+/// A missing, empty or broken status file counts as not done.
+bool member_done(const std::filesystem::path& status_file);
+
+/// `s` as one word of a status file or summary.dat: blanks as '_', empty as '-'.
+std::string token(std::string s);
+
+/// Groups of members that are the same run (the horizon-shift flags of a member with rahA = 0
+/// do nothing), each as "a = b = c"; said on stderr and in summary.dat, so that nobody reads
+/// them as different results.
+std::vector<std::string> same_runs(const std::vector<SweepMember>& members);
+
+/// Why `m` cannot run (its flags do not validate), or nullopt.
+std::optional<std::string> invalid_reason(const SweepMember& m);
+
+/// A folder that holds members run with other inputs is refused (naming them) before anything
+/// is written or launched: results of other inputs are never reused or mixed in.
+void check_earlier_inputs(const std::filesystem::path& dir,
+                          const std::vector<const SweepMember*>& members, const std::string& out);
+std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members);
+
+/// The sweep's axes in their order, recorded in OUT/logs/axes: member folders are named in
+/// that order, so a rerun, --member or --collect with the axes in another order would find
+/// none of them. check_axis_order refuses axes in another order than the folder's sweep (or
+/// other axes), naming its order.
+void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes);
+void check_axis_order(const std::string& out, const std::vector<SweepAxis>& axes);
+
+} // namespace gbssn1d

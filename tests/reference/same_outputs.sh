@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# Reference runs of two gbssn1d binaries, compared byte for byte: for a change meant to leave
+# behaviour as it is (a restructuring), every file either binary writes must be identical.
+#
+# Usage: tests/reference/same_outputs.sh OLD_BINARY NEW_BINARY [WORK_DIR]
+#   Runs each case below with both binaries (short runs, a few seconds each) and compares every
+#   output file (config.toml's first line, the version, excepted); prints one line per case and
+#   exits 1 if any file differs, naming it. Cases: the single grid with the horizon shift in
+#   each search mode (substage, step, every 3 steps, the midstep-update variant, an open-loop
+#   h_AH file), output times between the steps; boxes in each time interpolation with the
+#   horizon shift, the box-substage variant, no subcycling; a run stopped at t = 3 with a checkpoint at 2 and
+#   resumed to a later tmax; a checkpoint of the legacy layout (3 ghosts a side, as written
+#   before the finite-difference order became a choice) resumed; each --fd-order.
+set -euo pipefail
+old=$(realpath "${1:?usage: same_outputs.sh OLD_BINARY NEW_BINARY [WORK_DIR]}")
+new=$(realpath "${2:?usage: same_outputs.sh OLD_BINARY NEW_BINARY [WORK_DIR]}")
+work=${3:-$(mktemp -d)}
+mkdir -p "$work"
+work=$(realpath "$work")
+here=$(cd "$(dirname "$0")" && pwd)
+failed=0
+
+common=(--dt-series 0.3 --dt-profiles 1.7 --rah0 1.0) # wormhole data, as by default
+declare -A cases=(
+  [sinh-substage]="--N 120 --rahA 0.5"
+  [sinh-step]="--N 120 --rahA 0.5 --ah-every step"
+  [sinh-every3]="--N 120 --rahA 0.5 --ah-every 3"
+  [sinh-midstep]="--N 120 --rahA 0.5 --rah-variant midstep-update --ah-every 2"
+  [sinh-plain]="--N 120"
+  [uniform-fd6]="--grid uniform --rmax 40 --N 400 --fd-order 6 --rahA 0.5"
+  [uniform-fd2-trumpet]="--grid uniform --rmax 40 --N 200 --fd-order 2 --id 1log-trumpet --rahA 0.5"
+  [boxes-rk]="--grid boxes --rmax 64 --N 48 --rahA 0.5"
+  [boxes-dense]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp dense"
+  [boxes-quadratic]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic"
+  [boxes-box-substage]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --rah-variant box-substage"
+  [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step"
+  [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet"
+)
+compare() { # compare NAME: every file of old/NAME and new/NAME
+  local name=$1 bad=()
+  local files
+  files=$( (cd "$work/old/$name" && ls; cd "$work/new/$name" && ls) | sort -u)
+  for f in $files; do
+    if [ "$f" = config.toml ]; then
+      cmp -s <(tail -n +2 "$work/old/$name/$f") <(tail -n +2 "$work/new/$name/$f") || bad+=("$f")
+    else
+      cmp -s "$work/old/$name/$f" "$work/new/$name/$f" 2>/dev/null || bad+=("$f")
+    fi
+  done
+  if [ ${#bad[@]} -eq 0 ]; then
+    echo "same: $name ($(echo $files | wc -w) files)"
+  else
+    echo "DIFFERENT: $name: ${bad[*]}"
+    failed=1
+  fi
+}
+run_both() { # run_both NAME ARGS...: `evolve ARGS --out work/{old,new}/NAME` with each binary
+  local name=$1
+  shift
+  for side in old new; do
+    local exe=$old
+    [ $side = new ] && exe=$new
+    rm -rf "${work:?}/$side/$name"
+    mkdir -p "$work/$side"
+    (cd "$work/$side" && "$exe" evolve "$@" --out "$name" >"$name.log" 2>&1) || true
+    if [ ! -f "$work/$side/$name/timeseries.dat" ]; then
+      echo "DID NOT RUN: $name ($side): $(tail -n 1 "$work/$side/$name.log")"
+      failed=1
+    fi
+  done
+}
+
+# the open-loop h_AH file: the horizons of a short run
+run_both hAH-source "${common[@]}" --tmax 6 --N 120 --rahA 0.5
+run_both sinh-prescribed "${common[@]}" --tmax 6 --N 120 --rahA 0.5 \
+  --rah-hAH-file ../old/hAH-source/horizon.dat
+for name in "${!cases[@]}"; do
+  # shellcheck disable=SC2086
+  run_both "$name" "${common[@]}" --tmax 6 ${cases[$name]}
+done
+# run to t = 3 with a checkpoint at t = 2, then resumed to a later tmax, on a single grid and on boxes
+for grid in sinh boxes; do
+  extra=(--N 120 --rahA 0.5)
+  [ $grid = boxes ] && extra=(--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic)
+  run_both "resumed-$grid" "${common[@]}" "${extra[@]}" --checkpoint-every 2 --tmax 3
+  for side in old new; do
+    exe=$old
+    [ $side = new ] && exe=$new
+    (cd "$work/$side" && "$exe" resume "resumed-$grid" --tmax 6 >>"resumed-$grid.log" 2>&1) || true
+  done
+done
+# a legacy checkpoint (3 ghosts a side), made from the old binary's checkpoint at t = 2
+run_both legacy "${common[@]}" --N 120 --rahA 0.5 --checkpoint-every 2 --tmax 3
+python3 "$here/legacy_checkpoint.py" "$work/old/legacy/checkpoint.bin"
+cp "$work/old/legacy/checkpoint.bin" "$work/new/legacy/checkpoint.bin"
+for side in old new; do
+  exe=$old
+  [ $side = new ] && exe=$new
+  (cd "$work/$side" && "$exe" resume legacy --tmax 6 >>legacy.log 2>&1) || true
+done
+
+for name in $(ls "$work/old" | grep -v '\.log$' | sort); do
+  compare "$name"
+done
+[ $failed -eq 0 ] && echo "same outputs: every case" || echo "same outputs: some cases differ (in $work)"
+exit $failed
