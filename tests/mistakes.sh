@@ -104,7 +104,7 @@ mistakes=(
   "a study task's exception leaves its thread (abort)|src/study/parallel.hpp|            first = std::current_exception();|            throw;|run_tasks: every task once, and a task's exception is rethrown to the caller, later tasks are not started"
   "config strings: escapes read as the escaped letter|src/config/config_file.cpp|          value += it->second;|          value += e;|config files read back every string exactly: '#', quotes, backslashes, newlines"
   "a removed output folder not noticed (exit 0, nothing on disk)|src/io/output.cpp|    throw OutputError(fmt::format(\"{} was removed|    (void)(fmt::format(\"{} was removed|the output folder removed during a run: the run stops with exit 1 and says why"
-  "converge interrupted: the same command refused instead of continuing|src/cli/cli.cpp|    continuing = true;|    continuing = false;|converge interrupted: exit 130, and its files and message say they are partial"
+  "converge interrupted: the same command refused instead of continuing|src/cli/study_commands.cpp|    continuing = true;|    continuing = false;|converge interrupted: exit 130, and its files and message say they are partial"
   "sweep --emit-tasks overwrites a file of other content|src/study/sweep.cpp|    if (text.str() != lines)|    if (false)|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
 )
 

@@ -9,7 +9,8 @@
 #   each search mode (substage, step, every 3 steps, the midstep-update variant, an open-loop
 #   h_AH file), output times between the steps; boxes in each time interpolation with the
 #   horizon shift, the box-substage variant, no subcycling; a run stopped at t = 3 with a checkpoint at 2 and
-#   resumed to a later tmax; a checkpoint of the legacy layout (3 ghosts a side, as written
+#   resumed to a later tmax; a converge study and a sweep (wall times excepted); a checkpoint of
+#   the legacy layout (3 ghosts a side, as written
 #   before the finite-difference order became a choice) resumed; each --fd-order.
 set -euo pipefail
 old=$(realpath "${1:?usage: same_outputs.sh OLD_BINARY NEW_BINARY [WORK_DIR]}")
@@ -36,16 +37,35 @@ declare -A cases=(
   [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step"
   [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet"
 )
-compare() { # compare NAME: every file of old/NAME and new/NAME
+# A file as compared: config.toml without its first line (the version); a sweep's summary.dat
+# without its wall_s column and its status files without their wall time, and no member's
+# console log (the only figures that measure the machine, not the run)
+normalised() {
+  case "$(basename "$1")" in
+    config.toml) tail -n +2 "$1" ;;
+    summary.dat) python3 -c '
+import sys
+col = None
+for line in open(sys.argv[1]):
+    words = line.split()
+    if col is None and line.startswith("#") and "wall_s" in words:
+        col = words.index("wall_s") - 1
+    elif col is not None and words and not line.startswith("#"):
+        del words[col]
+        line = " ".join(words) + "\n"
+    sys.stdout.write(line)' "$1" ;;
+    *.status) cut -d' ' -f1,3- "$1" ;;
+    *) cat "$1" ;;
+  esac
+}
+compare() { # compare NAME: every file under old/NAME and new/NAME
   local name=$1 bad=()
   local files
-  files=$( (cd "$work/old/$name" && ls; cd "$work/new/$name" && ls) | sort -u)
+  files=$( (cd "$work/old/$name" && find . -type f; cd "$work/new/$name" && find . -type f) \
+             | grep -v '\.lock$' | grep -v '^./logs/.*.log$' | sort -u)
   for f in $files; do
-    if [ "$f" = config.toml ]; then
-      cmp -s <(tail -n +2 "$work/old/$name/$f") <(tail -n +2 "$work/new/$name/$f") || bad+=("$f")
-    else
-      cmp -s "$work/old/$name/$f" "$work/new/$name/$f" 2>/dev/null || bad+=("$f")
-    fi
+    cmp -s <(normalised "$work/old/$name/$f" 2>/dev/null) \
+      <(normalised "$work/new/$name/$f" 2>/dev/null) || bad+=("$f")
   done
   if [ ${#bad[@]} -eq 0 ]; then
     echo "same: $name ($(echo $files | wc -w) files)"
@@ -99,6 +119,20 @@ for side in old new; do
   (cd "$work/$side" && "$exe" resume legacy --tmax 6 >>legacy.log 2>&1) || true
 done
 
+# a converge study (its members, convergence.dat with the verdict, scaled_H.dat) and a sweep
+# (its members, summary.dat) of each binary
+for side in old new; do
+  exe=$old
+  [ $side = new ] && exe=$new
+  rm -rf "${work:?}/$side/converge" "${work:?}/$side/sweep"
+  (cd "$work/$side" && "$exe" converge --N 40,60,80 --tmax 4 --dt-series 0.5 --rahA 0.5 \
+     --rah0 1.0 --out converge >converge.log 2>&1) || true
+  (cd "$work/$side" && "$exe" sweep --sweep rahA=0,0.5 --sweep rah0=0.8,1.0 --N 40 --tmax 2 \
+     --dt-series 0.5 -j 2 --out sweep >sweep.log 2>&1) || true
+  for study in converge sweep; do
+    [ -d "$work/$side/$study" ] || { echo "DID NOT RUN: $study ($side)"; failed=1; }
+  done
+done
 for name in $(ls "$work/old" | grep -v '\.log$' | sort); do
   compare "$name"
 done

@@ -1,0 +1,269 @@
+#include "cli/commands.hpp"
+
+#include "config/config_file.hpp"
+#include "config/numbers.hpp"
+#include "config/params.hpp"
+#include "core/console.hpp"
+#include "core/registry.hpp"
+#include "core/stop_signal.hpp"
+#include "evolution/simulation.hpp"
+#include "study/converge.hpp"
+#include "study/sweep.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <variant>
+
+namespace gbssn1d {
+
+namespace {
+
+int run_and_report(Simulation& sim, Output& out, const Params& p);
+
+/// A run with --rah-hAH-file keeps a copy of the file as read at its start in its folder, and a
+/// resume continues with that copy: the file named by the flag may have been edited since, or a
+/// relative path may name another file from another folder.
+const char* const prescribed_horizon_copy = "rah-hAH-file.dat";
+
+/// The bytes of --rah-hAH-file when it is in use (rahA != 0), nothing otherwise.
+std::optional<std::string> prescribed_horizon_content(const Params& p) {
+  if (p.rah_hAH_file.empty() || p.rahA == 0.0)
+    return std::nullopt;
+  std::ifstream in(p.rah_hAH_file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof())
+    throw ParamError("--rah-hAH-file", printable(p.rah_hAH_file), "cannot be read");
+  return text.str();
+}
+
+} // namespace
+
+int evolve(Params p, bool print_config) {
+  resolve_defaults(p);
+  validate(p);
+  if (print_config) {
+    const std::string text = config_text(p);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+      throw OutputError(fmt::format("cannot write the configuration to standard output: {}",
+                                    std::strerror(errno)));
+    return 0;
+  }
+  validate_output_dir(p);
+  for (const auto& w : warnings(p))
+    say("gbssn1d: warning: {}\n", w);
+
+  Simulation sim(evolution_config(p)); // initial data are computed before anything is written
+  sim.show_progress = true;
+  const std::filesystem::path dir(p.out);
+  // the content of --rah-hAH-file as it was read (before the folder is made)
+  const std::optional<std::string> hAH_content = prescribed_horizon_content(p);
+  if (const int signal = stop_signal(); signal != 0) {
+    say("gbssn1d: interrupted by {} before the run started; nothing was written\n",
+        signal_name(signal));
+    return 128 + signal;
+  }
+  create_output_dir("--out", dir);
+  const std::string config = config_text(p);
+  write_file_atomically(dir / "config.toml", header_text("") + config);
+  if (hAH_content)
+    write_file_atomically(dir / prescribed_horizon_copy, *hAH_content);
+  Output out(dir, config + sim.run_facts());
+  sim.checkpoint_config = config;
+  return run_and_report(sim, out, p);
+}
+
+namespace {
+
+/// Runs `sim` into `out`; says how it ended on stderr and in timeseries.dat; returns the exit
+/// status (0, 3 stopped, 128 + n interrupted by signal n, 1 a failed write).
+int run_and_report(Simulation& sim, Output& out, const Params& p) {
+  install_stop_handlers();
+  const auto start = std::chrono::steady_clock::now();
+  // How the run ended goes to stderr and, as the last line, into timeseries.dat.
+  auto stopped = [&](const std::string& prefix, const std::string& what, const std::string& kept,
+                     int status) {
+    say("gbssn1d: {}{}; {}\n", prefix, what, kept);
+    out.write_end(fmt::format("stopped: {}", what));
+    return status;
+  };
+  try {
+    sim.run(&out);
+  } catch (const NonFiniteError& e) {
+    return stopped("error: ", e.what(), "output up to the last finite state kept in " + p.out, 3);
+  } catch (const HorizonFinderError& e) {
+    return stopped("error: ", e.what(), "output up to then kept in " + p.out, 3);
+  } catch (const Interrupted& e) {
+    return stopped("", e.what(),
+                   fmt::format("output up to then and a checkpoint kept in {}; resume with: {}",
+                               p.out, resume_command(p.out)),
+                   128 + e.signal);
+  } catch (const OutputError& e) {
+    say("gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
+    try {
+      out.write_end(fmt::format("stopped: {}", e.what())); // other files may still take it
+    } catch (const OutputError&) {
+    }
+    return 1;
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.write_end(fmt::format("completed at t = {}", sim.time()));
+  say("gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n", sim.time(), wall,
+      sim.schedule().n_steps, sim.evaluations());
+  return 0;
+}
+
+/// How far timeseries.dat goes: the time of its last data row, and whether its last line says
+/// the run completed.
+struct SeriesEnd {
+  double t_last = 0.0;
+  bool completed = false;
+};
+
+SeriesEnd series_end(const std::filesystem::path& file) {
+  SeriesEnd end;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# end: completed", 0) == 0)
+      end.completed = true;
+    else if (!line.empty() && line[0] != '#') {
+      end.completed = false; // rows after an end line: a later resume wrote them
+      end.t_last = std::strtod(line.c_str(), nullptr);
+    }
+  }
+  return end;
+}
+
+} // namespace
+
+namespace {
+
+/// DIR must hold a run's config.toml and checkpoint.bin; a file of the run that cannot even be
+/// examined (a loop of symbolic links) is refused.
+void check_resume_dir(const std::string& dir_name) {
+  namespace fs = std::filesystem;
+  const fs::path dir(dir_name);
+  check_path("DIR", dir);
+  // a file of the run that cannot even be examined (a loop of symbolic links) is refused
+  auto has_file = [&](const char* name) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(dir / name, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      throw ParamError("DIR", printable(dir_name),
+                       fmt::format("its {} cannot be read: {}", name, ec.message()));
+    return fs::is_regular_file(st);
+  };
+  if (!has_file("config.toml"))
+    throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
+  if (!has_file("checkpoint.bin"))
+    throw ParamError("DIR", dir_name,
+                     "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
+                     "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
+}
+
+/// The run's parameters with --rah-hAH-file naming the copy the run took at its start, whatever
+/// the flag's path names now (said if that differs).
+Params with_kept_horizon_file(const Params& p, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  Params run_params = p;
+  if (const std::filesystem::path copy = dir / prescribed_horizon_copy;
+      !p.rah_hAH_file.empty() && p.rahA != 0.0 && fs::is_regular_file(copy)) {
+    std::optional<std::string> now;
+    try {
+      now = prescribed_horizon_content(p);
+    } catch (const ParamError&) {
+    }
+    std::ifstream in(copy, std::ios::binary);
+    std::ostringstream kept;
+    kept << in.rdbuf();
+    if (!now || *now != kept.str())
+      say("gbssn1d: note: --rah-hAH-file {} is not what the run read at its start (edited, "
+          "missing, or another file from this folder); it continues with the copy it took then, "
+          "{}\n",
+          printable(p.rah_hAH_file), copy.string());
+    run_params.rah_hAH_file = copy.string();
+  }
+  return run_params;
+}
+
+} // namespace
+
+int resume(const std::string& dir_name, std::optional<double> tmax) {
+  namespace fs = std::filesystem;
+  const fs::path dir(dir_name);
+  check_resume_dir(dir_name);
+  Params p = parse_evolve_args({"--config", (dir / "config.toml").string()});
+  if (tmax)
+    p.tmax = *tmax;
+  p.out = dir_name;
+  resolve_defaults(p);
+  validate(p);
+  Checkpoint c;
+  try {
+    c = read_checkpoint(dir / "checkpoint.bin");
+  } catch (const CheckpointError& e) {
+    throw ParamError("DIR", dir_name, e.what());
+  }
+  const std::string config = config_text(p);
+  if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty())
+    throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
+  if (p.tmax < c.t)
+    throw ParamError("--tmax", fmt::format("{}", p.tmax),
+                     fmt::format("is before the checkpoint at t = {}", c.t));
+  // What the files hold already: a completed run is left alone, and no resume may cut away
+  // output beyond the new end.
+  const SeriesEnd written = series_end(dir / "timeseries.dat");
+  if (written.completed && (!tmax || p.tmax <= written.t_last)) {
+    say("gbssn1d: {} is complete at t = {}; nothing to do (`{} --tmax T` continues it to a "
+        "later T)\n",
+        dir_name, written.t_last, resume_command(dir_name));
+    return 0;
+  }
+  if (p.tmax < written.t_last)
+    throw ParamError("--tmax", fmt::format("{}", p.tmax),
+                     fmt::format("is before the last output at t = {}: resuming would cut "
+                                 "the output written after it",
+                                 written.t_last));
+  const Params run_params = with_kept_horizon_file(p, dir);
+  Simulation sim(evolution_config(run_params));
+  try {
+    sim.restore(c);
+    Output::check_resumable(dir, c.marks);
+  } catch (const CheckpointError& e) {
+    throw ParamError("DIR", dir_name, e.what());
+  } catch (const OutputError& e) {
+    throw ParamError("DIR", dir_name, e.what());
+  }
+  // every check is done: only now is any file changed (unless a stop signal came meanwhile)
+  if (const int signal = stop_signal(); signal != 0) {
+    say("gbssn1d: interrupted by {} before resuming; nothing was changed\n", signal_name(signal));
+    return 128 + signal;
+  }
+  sim.show_progress = true;
+  sim.checkpoint_config = config;
+  write_file_atomically(dir / "config.toml", header_text("") + config);
+  say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step, p.tmax);
+  Output out(dir, config + sim.run_facts(), c.marks);
+  return run_and_report(sim, out, p);
+}
+
+} // namespace gbssn1d

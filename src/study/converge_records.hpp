@@ -1,0 +1,37 @@
+// What a converge member records at every series output (its series row, the fields and H at
+// the study's common radii), saved beside each of its checkpoints so that a rerun continues it.
+#pragma once
+
+#include "io/output.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// What one member records at every series output.
+struct MemberRecord {
+  std::vector<SeriesRow> rows;
+  std::vector<std::vector<double>> field_samples; ///< per output: fields x common radii
+  std::vector<std::vector<double>> H_samples;     ///< per output: H at the common radii
+  std::string error;                              ///< non-empty if the member failed
+};
+
+/// A member's samples saved with each of its checkpoints (DIR/N<n>/converge_samples.bin), so
+/// that a rerun of the study continues the member from the checkpoint: what was sampled (`key`:
+/// the fields and the radii, which depend on the study's coarsest member), the step they belong
+/// to, then the rows and the samples, each list as a count and raw doubles. Samples of another
+/// key are never reused.
+void write_samples(const std::filesystem::path& file, const std::string& key, std::int64_t step,
+                   const MemberRecord& rec);
+/// The samples saved with the checkpoint at `step`, or nothing (missing, other step, broken).
+std::optional<MemberRecord> read_samples(const std::filesystem::path& file, const std::string& key,
+                                         std::int64_t step);
+/// The RMS of a - b over [offset, offset + count).
+double rms_difference(const std::vector<double>& a, const std::vector<double>& b,
+                      std::size_t offset, std::size_t count);
+
+} // namespace gbssn1d

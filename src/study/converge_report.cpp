@@ -1,0 +1,307 @@
+#include "study/converge_report.hpp"
+
+#include "core/console.hpp"
+#include "core/stop_signal.hpp"
+
+#include "config/config_file.hpp"
+#include "config/params.hpp"
+#include "core/registry.hpp"
+#include "evolution/simulation.hpp"
+#include "grid/interpolation.hpp"
+#include "io/output.hpp"
+#include "study/orders.hpp"
+#include "study/parallel.hpp"
+#include "study/verdict.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <optional>
+
+#include <iterator>
+
+namespace gbssn1d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The norms compared across members: column stem, order stem, value (judged: part of the
+/// verdict; length_power: the quantity's scale is M^length_power, 1/M^2 for H and M_r, 1/M for
+/// G^r, of which kRoundOffFloor is round-off).
+struct Norm {
+  const char *column, *order;
+  double SeriesRow::*value;
+  bool judged;
+  int length_power;
+};
+const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
+                      {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2},
+                      {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1},
+                      {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2},
+                      {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2},
+                      {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2}};
+constexpr int n_norms = static_cast<int>(std::size(norms));
+
+/// Every judged norm at each pair of neighbouring members and every field's differences at
+/// each triple, over the common times.
+std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const std::size_t m = members.size();
+  const auto Nd = [&](std::size_t k) { return s.Nd(k); };
+  std::vector<OrderSeries> series;
+  for (const auto& c : norms) {
+    if (!c.judged)
+      continue;
+    for (std::size_t k = 0; k + 1 < m; ++k) {
+      OrderSeries s{c.column, {Nd(k), Nd(k + 1)}, {}, {}, {}};
+      for (std::size_t q = 0; q < n_times; ++q) {
+        s.coarse.push_back(records[k].rows[q].*c.value);
+        s.fine.push_back(records[k + 1].rows[q].*c.value);
+        s.floor.push_back(kRoundOffFloor * std::pow(base.M, c.length_power));
+      }
+      series.push_back(std::move(s));
+    }
+  }
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    for (std::size_t k = 0; k + 2 < m; ++k) {
+      OrderSeries s{options.fields[f], {Nd(k), Nd(k + 1), Nd(k + 2)}, {}, {}, {}, false};
+      const std::size_t off = f * radii.size();
+      const std::vector<double> zeros(off + radii.size(), 0.0);
+      for (std::size_t q = 0; q < n_times; ++q) {
+        const auto& a = records[k].field_samples[q];
+        const auto& b = records[k + 1].field_samples[q];
+        const auto& c = records[k + 2].field_samples[q];
+        s.coarse.push_back(rms_difference(a, b, off, radii.size()));
+        s.fine.push_back(rms_difference(b, c, off, radii.size()));
+        // the field's scale: the RMS of its coarsest member's values at the radii; at t = 0
+        // the members start from the same data and differ by the 6th-order interpolation
+        // onto the coarsest radii alone, which the three-level formula does not describe: not
+        // judged
+        s.floor.push_back(records.front().rows[q].t == 0.0
+                              ? std::numeric_limits<double>::infinity()
+                              : kRoundOffFloor * rms_difference(a, zeros, off, radii.size()));
+      }
+      series.push_back(std::move(s));
+    }
+  return series;
+}
+
+} // namespace
+
+StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e) {
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const int signal = e.signal;
+  const std::string& failed = e.failed;
+  const double t_common = e.t_common;
+  StudyVerdict v{judge_convergence(order_series(s), options.expect_order.value_or(
+                                                        static_cast<double>(base.fd_order))),
+                 true,
+                 {},
+                 {},
+                 {}};
+  const Verdict& verdict = v.verdict;
+  const auto time_at = [&](std::size_t q) { return time_text(records.front().rows[q].t); };
+  const OrderJudgement* failure = verdict.failure();
+  std::string& judged = v.judged; // the rule's finding over the common times
+  // where one item's orders fall below the threshold: the first time, the lowest order
+  const auto dips = [&](const OrderJudgement& j) {
+    return j.below == 0
+               ? fmt::format("lowest order {} at t = {}", order_text(j.worst), time_at(j.worst_at))
+               : fmt::format("order {} at t = {} is the first below {}, lowest {} at "
+                             "t = {}",
+                             order_text(j.first_order), time_at(j.first_below),
+                             order_text(verdict.threshold), order_text(j.worst),
+                             time_at(j.worst_at));
+  };
+  const auto rms_text = [&](const OrderJudgement& j) {
+    std::string text = fmt::format("order of its RMS over time {}", order_text(j.p_rms));
+    if (j.windows_below > 0)
+      text +=
+          fmt::format(", over t = {} ... {} {} ({} of {} windows of the run below {})",
+                      time_at(j.window_begin), time_at(j.window_end), order_text(j.window_order),
+                      j.windows_below, j.windows, order_text(verdict.threshold));
+    return text;
+  };
+  if (failure) {
+    std::size_t more = 0;
+    for (const auto& i : verdict.items)
+      more += i.converges ? 0 : 1;
+    judged = fmt::format("does not converge: {} at {}: {}; {} (expected order {}){}",
+                         failure->quantity, resolutions_text(failure->N), dips(*failure),
+                         rms_text(*failure), verdict.design,
+                         more > 1 ? fmt::format(" (and {} more quantity/resolution sets; see the "
+                                                "order lines)",
+                                                more - 1)
+                                  : std::string());
+  } else if (const OrderJudgement* w = verdict.weakest()) {
+    judged = fmt::format("converges: every monitored order of an RMS over time (norms: also over "
+                         "each tenth of the run) at least {} (expected order {}); the lowest over "
+                         "time is {} ({} at {})",
+                         order_text(verdict.threshold), verdict.design, order_text(w->p_rms),
+                         w->quantity, resolutions_text(w->N));
+  } else {
+    judged = "converges at round-off: no monitored difference is above the round-off floor";
+  }
+  v.verdict_text = signal != 0 ? "not judged: the study was interrupted"
+                   : !failed.empty()
+                       ? fmt::format("does not converge: {} (over the common times up to t = "
+                                     "{}: {})",
+                                     failed, t_common, judged)
+                       : judged;
+  std::string& order_lines = v.order_lines;
+  order_lines = fmt::format(
+      "verdict: {}\nverdict rule: for each norm at each pair of neighbouring members, and each "
+      "field's differences at each triple, at the times where the coarse value is above "
+      "{:g} of its scale (1/M^2 for H and M_r, 1/M for G^r, the field's RMS for fields), the "
+      "order of the RMS over those times (for norms also of the RMS over each tenth of them) "
+      "must be at least {} (expected order {} - {}); H_L2_int (inside the horizon) is not judged, "
+      "nor are "
+      "field differences at t = 0 (the same data, interpolated)\n",
+      v.verdict_text, kRoundOffFloor, order_text(verdict.threshold), verdict.design,
+      kOrderTolerance);
+  for (const auto& j : verdict.items)
+    order_lines += fmt::format("order {} {}: {}; {} of {} judged times below {}{}: {}\n",
+                               j.quantity, resolutions_text(j.N), rms_text(j), j.below, j.judged,
+                               order_text(verdict.threshold), j.judged > 0 ? ", " + dips(j) : "",
+                               j.converges ? "converges" : "does not converge");
+  v.converges = failure == nullptr;
+  return v;
+}
+
+StudyEnding study_ending(const ConvergeStudy& s) {
+  const auto& members = s.members;
+  const auto& records = s.records;
+  const std::size_t m = members.size(), n_times = s.n_times;
+  StudyEnding e;
+  e.signal = stop_signal();
+  const int signal = e.signal;
+  std::string& failed = e.failed;
+  for (std::size_t k = 0; k < m; ++k)
+    if (!records[k].error.empty() && failed.empty())
+      failed = fmt::format("member N = {} failed: {}", members[k].N, records[k].error);
+  e.t_common = n_times > 0 ? records.front().rows[n_times - 1].t : 0.0;
+  e.ending =
+      signal != 0 ? fmt::format("interrupted by {} at t = {} (partial: every member only to this "
+                                "time; rerun the same command to resume)",
+                                signal_name(signal), e.t_common)
+      : !failed.empty()
+          ? fmt::format("stopped: {} (partial: common times up to t = {})", failed, e.t_common)
+          : fmt::format("completed at t = {}", e.t_common);
+  e.status_line = fmt::format("status: {}\n", e.ending);
+  e.end_line = fmt::format("# end: {}\n", e.ending);
+
+  return e;
+}
+
+void write_convergence_dat(const ConvergeStudy& s, const std::string& base_config,
+                           const StudyEnding& e, const StudyVerdict& v) {
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const std::size_t m = members.size();
+  const auto Nd = [&](std::size_t k) { return s.Nd(k); };
+  const std::string& status_line = e.status_line;
+  const std::string& end_line = e.end_line;
+  const std::string& order_lines = v.order_lines;
+  std::vector<std::string> cols{"t"};
+  for (const auto& c : norms)
+    for (std::size_t k = 0; k < m; ++k)
+      cols.push_back(fmt::format("{}_N{}", c.column, members[k].N));
+  for (const auto& c : norms)
+    for (std::size_t k = 0; k + 1 < m; ++k)
+      cols.push_back(fmt::format("p_{}_{}_{}", c.order, members[k].N, members[k + 1].N));
+  for (const auto& name : options.fields)
+    for (std::size_t k = 0; k + 2 < m; ++k)
+      cols.push_back(
+          fmt::format("p3_{}_{}_{}_{}", name, members[k].N, members[k + 1].N, members[k + 2].N));
+
+  const std::string header =
+      base_config + status_line + order_lines
+      + fmt::format("converge: N = {}; p_X_a_b = ln(X_a/X_b)/ln(b/a) of the norms (X_L2_ext: "
+                    "coordinate window, X_L2_R: areal window, H_L2_int: near the puncture); "
+                    "p3_f_a_b_c solves |f_a - f_b|/|f_b - f_c| = (a^-p - b^-p)/(b^-p - c^-p) "
+                    "(Sec. 15) with RMS differences of f at the coarsest grid's radii in "
+                    "[norm-rmin, norm-rmax] (6th-order interpolation)\n",
+                    fmt::join(options.N, ","));
+  {
+    DataFile file(fs::path(options.out) / "convergence.dat", header, cols);
+    for (std::size_t s = 0; s < n_times; ++s) {
+      std::string line = time_text(records.front().rows[s].t);
+      auto norm = [&](std::size_t k, int c) { return records[k].rows[s].*norms[c].value; };
+      for (int c = 0; c < n_norms; ++c)
+        for (std::size_t k = 0; k < m; ++k)
+          line += fmt::format(" {:.16e}", norm(k, c));
+      for (int c = 0; c < n_norms; ++c)
+        for (std::size_t k = 0; k + 1 < m; ++k)
+          line +=
+              fmt::format(" {:.6e}", order_two_level(norm(k, c), norm(k + 1, c), Nd(k), Nd(k + 1)));
+      for (std::size_t f = 0; f < fields.size(); ++f)
+        for (std::size_t k = 0; k + 2 < m; ++k) {
+          const auto& a = records[k].field_samples[s];
+          const auto& b = records[k + 1].field_samples[s];
+          const auto& c = records[k + 2].field_samples[s];
+          const std::size_t off = f * radii.size();
+          line += fmt::format(" {:.6e}", order_three_level(rms_difference(a, b, off, radii.size()),
+                                                           rms_difference(b, c, off, radii.size()),
+                                                           Nd(k), Nd(k + 1), Nd(k + 2)));
+        }
+      line += "\n";
+      file.write(line.data(), line.size());
+    }
+    file.write(end_line.data(), end_line.size());
+    file.flush(); // checked: a failed write throws OutputError
+  }
+}
+
+void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, const StudyEnding& e) {
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const std::size_t m = members.size();
+  const auto Nd = [&](std::size_t k) { return s.Nd(k); };
+  const std::string& status_line = e.status_line;
+  const std::string& end_line = e.end_line;
+  // scaled_H.dat: H at the common radii, finer members times (N_k/N_0)^order
+  {
+    std::vector<std::string> scols{"r"};
+    for (std::size_t k = 0; k < m; ++k)
+      scols.push_back(k == 0 ? fmt::format("H_N{}", members[k].N)
+                             : fmt::format("H_N{}_scaled", members[k].N));
+    DataFile file(fs::path(options.out) / "scaled_H.dat",
+                  base_config + status_line
+                      + fmt::format("scaled_H.dat: H of member N_k times (N_k/N_0)^{} "
+                                    "at the coarsest grid's exterior radii\n",
+                                    options.order),
+                  scols);
+    std::vector<double> times = options.scaled_times;
+    if (times.empty())
+      times.push_back(base.tmax);
+    bool first = true;
+    for (double tw : times) {
+      if (n_times == 0)
+        break;
+      std::size_t s = 0;
+      for (std::size_t q = 0; q < n_times; ++q)
+        if (std::abs(records.front().rows[q].t - tw) < std::abs(records.front().rows[s].t - tw))
+          s = q;
+      std::string block = first ? "" : "\n\n";
+      first = false;
+      block += "# t = " + time_text(records.front().rows[s].t) + "\n";
+      for (std::size_t j = 0; j < radii.size(); ++j) {
+        block += fmt::format("{:.16e}", radii[j]);
+        for (std::size_t k = 0; k < m; ++k)
+          block += fmt::format(" {:.16e}",
+                               records[k].H_samples[s][j] * std::pow(Nd(k) / Nd(0), options.order));
+        block += "\n";
+      }
+      file.write(block.data(), block.size());
+    }
+    file.write(end_line.data(), end_line.size());
+    file.flush();
+  }
+}
+
+} // namespace gbssn1d

@@ -1,0 +1,54 @@
+// A converge study's results: how it ended, its verdict (study/verdict.hpp), convergence.dat
+// (norms and orders over the common times) and scaled_H.dat (Richardson-scaled H profiles).
+#pragma once
+
+#include "config/params.hpp"
+#include "core/registry.hpp"
+#include "study/converge.hpp"
+#include "study/converge_records.hpp"
+#include "study/verdict.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// A study as run: its members, what each samples (the fields at the common radii: the
+/// coarsest member's exterior points) and what each recorded.
+struct ConvergeStudy {
+  const Params& base;
+  const ConvergeOptions& options;
+  std::vector<Params> members;
+  std::vector<double> radii;
+  std::vector<Var> fields;
+  std::string samples_key; ///< saved samples are reused only for the same key
+  std::vector<MemberRecord> records;
+  std::size_t n_times = 0; ///< output times common to all members
+  double Nd(std::size_t k) const { return static_cast<double>(members[k].N); }
+};
+
+/// How the study ended, in both files' headers and as their last line: a reader (and a plot
+/// script) must be able to tell a partial study from a complete one.
+struct StudyEnding {
+  int signal = 0;     ///< the stop signal, 0 if none
+  std::string failed; ///< the first member's failure, empty if none
+  double t_common = 0.0;
+  std::string ending, status_line, end_line;
+};
+StudyEnding study_ending(const ConvergeStudy& s);
+
+/// The verdict and its texts: `judged` (the finding), `verdict_text` (with failures and
+/// interruptions), the `order` lines of convergence.dat's header.
+struct StudyVerdict {
+  Verdict verdict;
+  bool converges = true; ///< no item below the threshold
+  std::string judged, verdict_text, order_lines;
+};
+StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e);
+
+void write_convergence_dat(const ConvergeStudy& s, const std::string& base_config,
+                           const StudyEnding& e, const StudyVerdict& v);
+void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, const StudyEnding& e);
+
+} // namespace gbssn1d
