@@ -15,31 +15,11 @@
 
 namespace gbssn1d {
 
-std::vector<std::string> warnings(const Params& p) {
-  std::vector<std::string> w;
-  // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
-  // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
-  // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
-  if (shrinks_wormhole(p) && p.eta.value_or(1.0 / p.M) > 1.0 / p.M)
-    w.push_back(fmt::format(
-        "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
-        "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
-        "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
-        num(p.rah0), num(p.eta.value_or(1.0 / p.M))));
-  // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
-  // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
-  // number measured there after it holds boundary reflections.
-  const double speed = std::sqrt(2.0);
-  const double window = std::max(p.norm_rmax.value_or(0.0), p.norm_Rmax * p.M);
-  const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
-  if (p.tmax > t_window && p.rmax > window)
-    w.push_back(fmt::format(
-        "--tmax {} lets the outer boundary (--rmax {}) reach the norm windows (r <= {} M) from "
-        "t ~ {:.0f} M and the horizon from t ~ {:.0f} M (at the gauge speed sqrt(2)): norms, "
-        "M_AH and r_AH after that include its reflections; for a clean late-time figure rerun "
-        "with --rmax > {:.0f}",
-        num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
-        std::ceil(window + speed * p.tmax)));
+namespace {
+
+/// Boxes: the horizon belongs on the finest box, well inside its edge; wormhole data's gauge
+/// pulse comes back from where the boxes end.
+void box_warnings(const Params& p, std::vector<std::string>& w) {
   // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
   // the horizon shift see the finest spacing.
   if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.N > 0) {
@@ -71,6 +51,10 @@ std::vector<std::string> warnings(const Params& p) {
       }
     }
   }
+}
+
+/// The horizon-shift flags given with --rahA 0.
+void idle_shift_flag_warnings(const Params& p, std::vector<std::string>& w) {
   // The horizon-shift flags act only with a strength: given with --rahA 0 they change nothing,
   // which a user who forgot --rahA would not otherwise learn.
   if (p.rahA == 0.0) {
@@ -99,6 +83,37 @@ std::vector<std::string> warnings(const Params& p) {
                               "(give --rahA A, e.g. 0.5, to move the horizon)",
                               fmt::join(idle, ", "), idle.size() == 1 ? "does" : "do"));
   }
+}
+
+} // namespace
+
+std::vector<std::string> warnings(const Params& p) {
+  std::vector<std::string> w;
+  // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
+  // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
+  // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
+  if (shrinks_wormhole(p) && p.eta.value_or(1.0 / p.M) > 1.0 / p.M)
+    w.push_back(fmt::format(
+        "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
+        "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
+        "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
+        num(p.rah0), num(p.eta.value_or(1.0 / p.M))));
+  // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
+  // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
+  // number measured there after it holds boundary reflections.
+  const double speed = std::sqrt(2.0);
+  const double window = std::max(p.norm_rmax.value_or(0.0), p.norm_Rmax * p.M);
+  const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
+  if (p.tmax > t_window && p.rmax > window)
+    w.push_back(fmt::format(
+        "--tmax {} lets the outer boundary (--rmax {}) reach the norm windows (r <= {} M) from "
+        "t ~ {:.0f} M and the horizon from t ~ {:.0f} M (at the gauge speed sqrt(2)): norms, "
+        "M_AH and r_AH after that include its reflections; for a clean late-time figure rerun "
+        "with --rmax > {:.0f}",
+        num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
+        std::ceil(window + speed * p.tmax)));
+  box_warnings(p, w);
+  idle_shift_flag_warnings(p, w);
   return w;
 }
 

@@ -112,7 +112,11 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   write_file_atomically(file, bytes); // the old checkpoint or the new one, never a mixture
 }
 
-Checkpoint read_checkpoint(const std::filesystem::path& file) {
+namespace {
+
+/// The bytes of a checkpoint file whose magic line and checksum are right (the checksum
+/// removed), and whether it is of format 2; CheckpointError otherwise.
+std::pair<std::string, bool> checked_bytes(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw CheckpointError(fmt::format("{} is not a regular file", file.string()));
@@ -147,6 +151,15 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
     throw CheckpointError(fmt::format(
         "{} is corrupt: its checksum does not match (truncated, or changed since written)",
         file.string()));
+  bytes.resize(body.size());
+  return {std::move(bytes), format_2};
+}
+
+} // namespace
+
+Checkpoint read_checkpoint(const std::filesystem::path& file) {
+  const auto [bytes, format_2] = checked_bytes(file);
+  const std::string_view body(bytes);
 
   Reader r(body.substr(magic.size()), file); // both magic lines have the same length
   Checkpoint c;

@@ -185,6 +185,56 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   ++evaluations_;
 }
 
+namespace {
+
+/// One block of the point loop. Its input rows (the fields, with the full shift in place of
+/// beta when the horizon shift is on, and beta_GD; each with the stencils' halo of R points on
+/// each side) are copied into one scratch array `buf` at compile-time offsets, so that the point
+/// loop addresses them all from one base register: with 10 input and 4 grid rows as separate
+/// pointers (and the 9 output rows) the loop spent about 17% of its time reloading pointers
+/// (profile). Its grid factors are laid out once per grid (`grid`, GbssnRhs::grid_blocks_).
+/// Results are unchanged bit for bit.
+struct Block {
+  Rows in;
+  const double *beta_GD, *r, *inv_r, *inv_rx, *d2_fx;
+};
+template <std::size_t R, std::size_t B>
+[[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const double* beta_GD_full,
+                                                double* buf, std::size_t i0, std::size_t n,
+                                                const double* grid) {
+  constexpr std::size_t W = B + 2 * R; // block with the halo
+  Block b{in_full, buf + n_vars * W + R, grid, grid + B, grid + 2 * B, grid + 3 * B};
+  for (const auto& entry : registry) {
+    const std::size_t v = index(entry.var);
+    std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
+  }
+#pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
+  for (const auto& entry : registry)
+    b.in[entry.var] = buf + index(entry.var) * W + R;
+  std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_vars * W);
+  return b;
+}
+
+/// The two beta d_r Delta^r terms, each with its stencil (AdvectionParams): (E6)'s into
+/// p.adv[Delta_r], and B's driver term gd.adv_Delta_r, with the `matched` stencil (E6)'s own
+/// term minus beta_H d_r Delta^r centred, so that B - Delta^r sees no lopsided stencil
+/// (AdvectionStencil::matched).
+template <int order>
+[[gnu::always_inline]] inline void
+advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, double d1_scale,
+             const StencilWeights& delta_w, const StencilWeights& driver_w) {
+  p.adv[Var::Delta_r] =
+      p.f[Var::beta] * d1_scale
+      * delta_derivative<order>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
+  const double beta_H = p.f[Var::beta] - gd.beta;
+  gd.adv_Delta_r =
+      gd.beta * d1_scale
+          * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta)
+      + driver_w.matched * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));
+}
+
+} // namespace
+
 template <int order, bool with_horizon_shift, HorizonShiftParams::Variant variant>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   const Grid& g = *grid_;
@@ -201,36 +251,21 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
                           * fd::Order<order>::dissipation_norm * inv_dx;
   const Gauge gauge = params_.gauge;
   const StencilWeights driver_w(params_.advection.driver), delta_w(params_.advection.delta);
-  // The points are taken in blocks of B. Each block's input rows (the fields, with the full
-  // shift in place of beta when the horizon shift is on, and beta_GD; each with the stencils'
-  // halo of the stencils' radius R on each side) and its grid factors are first copied into one
-  // scratch array at compile-time offsets, so that the point loop addresses them all from one base
-  // register: with 10 input and 4 grid rows as separate pointers (and the 9 output rows) the loop
-  // spent about 17% of its time reloading pointers (profile). Results are unchanged bit for bit.
   constexpr std::size_t R = fd::Order<order>::radius;
   static_assert(R <= Grid::n_ghost, "the stencils reach beyond the ghosts");
-  constexpr std::size_t B = block_size, W = B + 2 * R; // block, and block with the halo
+  // blocks of B points, each with the stencils' halo: W points of each input row (stage_block)
+  constexpr std::size_t B = block_size, W = B + 2 * R;
   constexpr std::size_t rows_in = n_vars + 1, rows_grid = 4;
   thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
   for (std::size_t i0 = g.first_interior(); i0 < g.end_interior(); i0 += B) {
     const std::size_t n = std::min(B, g.end_interior() - i0);
-    Rows in = in_full;
-    for (const auto& entry : registry) {
-      const std::size_t v = index(entry.var);
-      std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
-    }
-#pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
-    for (const auto& entry : registry)
-      in[entry.var] = buf + index(entry.var) * W + R;
-    std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_vars * W);
-    const double* const beta_GD = buf + n_vars * W + R;
-    // the grid factors of this block, laid out once per grid (grid_blocks_)
-    const double* const grid = grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B;
-    const double* const r = grid + 0 * B;
-    const double* const inv_r = grid + 1 * B;
-    const double* const inv_rx = grid + 2 * B;
-    const double* const d2_fx = grid + 3 * B;
+    const Block blk =
+        stage_block<R, B>(in_full, beta_GD_full, buf, i0, n,
+                          grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B);
+    const Rows in = blk.in;
+    const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,
+                        *const inv_rx = blk.inv_rx, *const d2_fx = blk.d2_fx;
     double* const out0 = dudt.data() + i0; // variable v's output row: out0 + index(v) nt
     const std::size_t begin = 0, end = n;
     // The output never aliases the input, which `ivdep` asserts: the loop vectorises across
@@ -250,20 +285,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
         gd.dd_beta = fd::d2_centred<order>(f) * d1_scale * d1_scale
                      + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];
       }
-      // The two beta d_r Delta^r terms, each with its stencil (AdvectionParams).
-      const double* Delta = in[Var::Delta_r] + i;
-      const double ko_Delta = k6[Var::Delta_r];
-      p.adv[Var::Delta_r] =
-          p.f[Var::beta] * d1_scale
-          * delta_derivative<order>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
-      // B's driver term: with the `matched` stencil (E6)'s own term minus beta_H d_r Delta^r
-      // centred, so that B - Delta^r sees no lopsided stencil (AdvectionStencil::matched)
-      const double beta_H = p.f[Var::beta] - gd.beta;
-      gd.adv_Delta_r =
-          gd.beta * d1_scale
-              * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta)
-          + driver_w.matched
-                * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));
+      advect_Delta<order>(p, gd, in[Var::Delta_r] + i, k6[Var::Delta_r], d1_scale, delta_w,
+                          driver_w);
       Rhs rhs;
       if constexpr (with_horizon_shift) {
         using Variant = HorizonShiftParams::Variant;

@@ -168,6 +168,39 @@ void report_warnings(const fs::path& dir, const std::vector<SweepMember>& member
   }
 }
 
+/// The order of the final H_L2_ext over each group of finished members that differ only in the
+/// axis of N (`resolution_axis`), for every member of the group; NaN elsewhere.
+std::vector<double> final_H_orders(const std::vector<SweepMember>& members,
+                                   const std::vector<std::string>& resolution_axis,
+                                   const std::vector<std::string>& statuses,
+                                   const std::vector<MemberResult>& results) {
+  std::vector<double> orders(members.size(), NAN);
+  if (resolution_axis.empty())
+    return orders;
+  std::map<std::string, std::vector<std::size_t>> groups;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    std::string key;
+    for (const auto& [flag, value] : members[k].values)
+      if (std::find(resolution_axis.begin(), resolution_axis.end(), flag) == resolution_axis.end())
+        key += flag + "=" + value + ";";
+    groups[key].push_back(k);
+  }
+  for (const auto& [key, ks] : groups) {
+    std::vector<double> N, E;
+    for (std::size_t k : ks)
+      if (statuses[k] == "ok") {
+        for (const auto& [flag, value] : members[k].values)
+          if (flag == "N")
+            N.push_back(parse_number<int>("--sweep", value)); // as the member read it
+        E.push_back(results[k].H_final);
+      }
+    if (N.size() >= 2)
+      for (std::size_t k : ks)
+        orders[k] = order_fitted(N, E);
+  }
+  return orders;
+}
+
 } // namespace
 
 std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& options,
@@ -201,32 +234,7 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
     }
     results[k] = read_result(dir / members[k].name / "timeseries.dat");
   }
-  // order of the final H_L2_ext over each group of members that differ only in N
-  std::vector<double> orders(members.size(), NAN);
-  if (with_resolutions) {
-    std::map<std::string, std::vector<std::size_t>> groups;
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      std::string key;
-      for (const auto& [flag, value] : members[k].values)
-        if (std::find(resolution_axis.begin(), resolution_axis.end(), flag)
-            == resolution_axis.end())
-          key += flag + "=" + value + ";";
-      groups[key].push_back(k);
-    }
-    for (const auto& [key, ks] : groups) {
-      std::vector<double> N, E;
-      for (std::size_t k : ks)
-        if (statuses[k] == "ok") {
-          for (const auto& [flag, value] : members[k].values)
-            if (flag == "N")
-              N.push_back(parse_number<int>("--sweep", value)); // as the member read it
-          E.push_back(results[k].H_final);
-        }
-      if (N.size() >= 2)
-        for (std::size_t k : ks)
-          orders[k] = order_fitted(N, E);
-    }
-  }
+  const std::vector<double> orders = final_H_orders(members, resolution_axis, statuses, results);
   const std::vector<Spike> spikes = find_spikes(axes, resolution_axis, members, statuses, results);
   for (const auto& sp : spikes)
     reasons[sp.member] =
