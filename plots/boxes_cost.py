@@ -2,6 +2,7 @@
 """Error against cost on three kinds of grid: uniform, sinh and nested boxes.
 
   boxes_cost.py --out DIR [--tmax 1000] [--rmax 1024] [--t0 10] [--bin build/gbssn1d]
+                [--kinds boxes,sinh,uniform] [--gauges standard,stretched]
 
 Runs the 1+log trumpet, standard gauge and stretched to h = 0.89 M (A = 0.5), on
   - boxes: 9 levels to rmax, finest spacing 4/N M (N = 32, 48, 64, 96: M/8 ... M/24);
@@ -88,14 +89,16 @@ def main():
     ap.add_argument('--t0', type=float, default=10.0)
     ap.add_argument('--bin', default='build/gbssn1d')
     ap.add_argument('--kinds', default='boxes,sinh,uniform')
+    ap.add_argument('--gauges', default='standard,stretched')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     kinds = args.kinds.split(',')
+    gauges = args.gauges.split(',')
     rows = []
     print(f'# 1+log trumpet to {args.tmax:g} M, rmax {args.rmax:g} M; H = RMS of H_L2_R over '
           f't in [{args.t0:g}, {args.tmax:g}] M; cpu and wall in seconds, one run at a time')
     print('kind gauge N cpu_s wall_s H status')
-    for gauge in GAUGES:
+    for gauge in gauges:
         for kind in kinds:
             for n in KINDS[kind][1]:
                 r = run(args, kind, gauge, n)
@@ -105,7 +108,7 @@ def main():
                       f"{'' if r['t_end'] >= args.tmax - 1e-6 else ' (ended t = %g)' % r['t_end']}",
                       flush=True)
     print('# CPU time to reach the error of sinh N = 400 (innermost M/16), same gauge')
-    for gauge in GAUGES:
+    for gauge in gauges:
         ref = [r for r in rows if r['kind'] == 'sinh' and r['gauge'] == gauge and r['N'] == 400]
         if not ref:
             continue
