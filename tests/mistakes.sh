@@ -7,8 +7,8 @@
 #     need (the last column of the table below: the ctest names, as `ctest -N` prints them, of
 #     the fastest tests known to catch it) and run only those tests; at least one of them must
 #     fail. Stops at the first mistake that is not caught, naming it, with exit status 1.
-#     Mostly recompiling: about 28 minutes of processor time (29 minutes measured on 2 shared,
-#     busy cores), of which the 6 mistakes in widely included headers take two thirds.
+#     Mostly recompiling: about 12 minutes of processor time (9 minutes on 2 idle cores), of
+#     which the mistakes in widely included headers take most.
 #   --only PATTERN  (by hand) only the mistakes whose name matches the grep -E pattern
 #   --full  (by hand, 35-60 minutes on 2 cores: the whole suite per mistake) rebuild everything and run the WHOLE suite
 #     for every mistake, list every test that catches it, and report where the named tests
@@ -64,7 +64,7 @@ mistakes=(
   "midstep-update never firing|src/gbssn/rhs.cpp|static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;|static_cast<std::uint64_t>(4 * hs.midstep_every) == 99;|midstep-update searches inside the step: the shrink moves the horizon"
   "--rah-width ignored|src/config/param_convert.cpp|  r.horizon_shift.width = p.rah_width;|  r.horizon_shift.width = 1.0;|--rah-width reaches the shift: f(r) = (r/w)/(1 + (r/w)^2) with the width given;evolution_config: each flag reaches its field, areal windows scale with M"
   "horizon: the innermost outer surface instead of the outermost|src/horizon/apparent_horizon.cpp|  for (const auto& s : surfaces)\n    if (s.outer)\n      return s;\n  return std::nullopt;|  std::optional<MarginalSurface> found;\n  for (const auto& s : surfaces)\n    if (s.outer)\n      found = s;\n  return found;|with several marginal surfaces the horizon is the outermost outer one"
-  "converge ignores -j|src/study/converge.cpp|  run_tasks(m, options.jobs, member_task);|  run_tasks(m, 1, member_task);|converge -j runs that many members at once"
+  "converge ignores -j|src/study/converge.cpp|  run_tasks(s.members.size(), options.jobs,|  run_tasks(s.members.size(), 1,|converge -j runs that many members at once"
   "B's advective bracket with the wrong sign|src/gbssn/gauge.hpp|advection * (p.adv[Var::B] - gauge_shift.adv_Delta_r)|advection * (p.adv[Var::B] + gauge_shift.adv_Delta_r)|--advective-shift adds beta beta' to d_t beta and beta (B' - Delta') to d_t B"
   "beta's advective bracket dropped|src/gbssn/gauge.hpp|  return driver.xi * p.f[Var::B] + advection * p.adv[Var::beta];|  return driver.xi * p.f[Var::B];|--advective-shift adds beta beta' to d_t beta and beta (B' - Delta') to d_t B"
   "--advective-shift not reaching the evolution|src/config/param_convert.cpp|  r.gauge.shift.advective = p.advective_shift;|  r.gauge.shift.advective = false;|evolution_config: each flag reaches its field, areal windows scale with M;--advective-shift adds beta beta' to d_t beta and beta (B' - Delta') to d_t B"
@@ -90,10 +90,10 @@ mistakes=(
   "boxes take the single grid's cfl|src/config/params.cpp|    p.cfl = p.grid == \"boxes\" ? 0.25 : 0.5;|    p.cfl = 0.5;|evolution_config: the defaults are the typed configuration's, eta = 2/M"
   "a requeued sweep member starts over instead of resuming|src/study/sweep_process.cpp|        resumable ? std::vector<std::string>{\"resume\", member_dir.string()} : m.args;|        m.args;|sweep on a cluster: emitted lines run from any folder, resume, --collect summarises"
   "invalid sweep members emitted as task lines|src/study/sweep.cpp|    if (const auto why = invalid_reason(m)) {\n      say(|    if (const auto why = invalid_reason(m); false) {\n      say(|sweep on a cluster: emitted lines run from any folder, resume, --collect summarises"
-  "converge samples reused for other radii|src/study/converge.cpp|    samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;|converge: samples saved with a member's checkpoint are reused only for the same fields and radii (a rerun with another coarsest member gives a fresh run's numbers)"
+  "converge samples reused for other radii|src/study/converge.cpp|    s.samples_key += fmt::format(\" {:.17g}\", r);|    (void)r;|converge: samples saved with a member's checkpoint are reused only for the same fields and radii (a rerun with another coarsest member gives a fresh run's numbers)"
   "boxes: fine levels differenced at 4th order whatever --fd-order|src/mesh/layout.cpp|                        fd_order);|                        4);|mesh layout: every level differences at the order asked, and boxes offer 2, 4 and 6"
   "beta_H's quartic taper only quadratic|src/gbssn/horizon_shift.hpp|    return std::exp(-x2 * x2);|    return std::exp(-x2);|beta_H is tapered to zero before the outer boundary: quartic (default) and step"
-  "B's matched driver term without its beta_H correction (B driven by the full shift)|src/gbssn/rhs.cpp|                * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));|                * (p.adv[Var::Delta_r]);|B's driver term: the matched and centred stencils discretise one equation (B agrees to truncation error, falling with N), unlike B driven by the full shift"
+  "B's matched driver term without its beta_H correction (B driven by the full shift)|src/gbssn/rhs.cpp|      + driver_w.matched * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));|      + driver_w.matched * (p.adv[Var::Delta_r]);|B's driver term: the matched and centred stencils discretise one equation (B agrees to truncation error, falling with N), unlike B driven by the full shift"
   "the published driver stencil as the default again|src/config/params.hpp|  std::string driver_advection = \"matched\";|  std::string driver_advection = \"upwind-gd\";|B's driver term under refinement: the published upwind-gd stencil blows up at a time that falls with the spacing, the matched stencil (default) runs"
   "the areal window's outer sheet from the global minimum of R|src/diagnostics/constraints.cpp|  while (throat > 0 && R_areal[throat - 1] <= R_areal[throat])\n    --throat;|  throat = static_cast<std::size_t>(std::min_element(R_areal.begin(), R_areal.end()) - R_areal.begin());|areal-radius norms: weights the areal widths, select by R, only the outer sheet, and the interior window"
   "empty flag values accepted again|src/cli/cli.cpp|    refuse_empty_values(args);\n|    (void)refuse_empty_values;\n|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
