@@ -7,7 +7,7 @@
 #     need (the last column of the table below: the ctest names, as `ctest -N` prints them, of
 #     the fastest tests known to catch it) and run only those tests; at least one of them must
 #     fail. Stops at the first mistake that is not caught, naming it, with exit status 1.
-#     Mostly recompiling: about 12 minutes of processor time (9 minutes on 2 idle cores), of
+#     Mostly recompiling: about 16 minutes of processor time (10 minutes on 2 idle cores), of
 #     which the mistakes in widely included headers take most.
 #   --only PATTERN  (by hand) only the mistakes whose name matches the grep -E pattern
 #   --full  (by hand, 35-60 minutes on 2 cores: the whole suite per mistake) rebuild everything and run the WHOLE suite

@@ -34,8 +34,9 @@ struct ParamSpec {
   const char* help;
 };
 
-const std::vector<ParamSpec>& param_specs() {
-  static const std::vector<ParamSpec> specs{
+/// The grid, initial data, gauge, numerics, times and output cadences.
+std::vector<ParamSpec> evolution_specs() {
+  return {
       {"N", &Params::N, "Grid", "number of cells"},
       {"rmax", &Params::rmax, "Grid", "outer radius"},
       {"grid", &Params::grid, "Grid",
@@ -80,6 +81,13 @@ const std::vector<ParamSpec>& param_specs() {
       {"checkpoint-every", &Params::checkpoint_every, "Output",
        "simulated time between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
        "(0: none; SIGTERM, SIGINT, SIGHUP, SIGUSR1 and SIGUSR2 always write one)"},
+  };
+}
+
+/// The norm windows, the horizon-adjusting shift (its profile, stencils, searches and study
+/// variants), and the output folder.
+std::vector<ParamSpec> diagnostics_and_shift_specs() {
+  return {
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms"},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
        "outer radius of the exterior norms; default min(10 M, rmax/2)"},
@@ -136,6 +144,16 @@ const std::vector<ParamSpec>& param_specs() {
       {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
       {"force", &Params::force, "Output", "write into an existing non-empty --out"},
   };
+}
+
+/// Every evolve parameter, in the order of --help and config.toml.
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs = [] {
+    std::vector<ParamSpec> all = evolution_specs();
+    const std::vector<ParamSpec> more = diagnostics_and_shift_specs();
+    all.insert(all.end(), more.begin(), more.end());
+    return all;
+  }();
   return specs;
 }
 
