@@ -14,16 +14,6 @@ Schedule make_schedule(const EvolutionConfig& config, double dt) {
   return s;
 }
 
-void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
-                         double dt, double theta, State& out) {
-  const double s = theta, s2 = s * s, s3 = s2 * s;
-  const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h01 = -2.0 * s3 + 3.0 * s2;
-  const double h10 = (s3 - 2.0 * s2 + s) * dt, h11 = (s3 - s2) * dt;
-  out.resize(u0.size());
-  for (std::size_t i = 0; i < u0.size(); ++i)
-    out[i] = h00 * u0[i] + h10 * f0[i] + h01 * u1[i] + h11 * f1[i];
-}
-
 mesh::MeshLayout make_layout(const EvolutionConfig& config) {
   if (config.refinement.levels > 1)
     return mesh::MeshLayout(config.grid.rmax, config.grid.N, config.refinement.levels,

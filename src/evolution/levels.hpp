@@ -1,7 +1,6 @@
 // The levels of a run and how they step, from its configuration: the layout (one level on the
 // grid's map, or --levels boxes), the stepper's options, the time step schedule, and the
-// operations applied to a level's state between steps (the chi floor) and between output
-// times (RK4's dense output on a single grid).
+// operation applied to a level's state after each step (the chi floor).
 #pragma once
 
 #include "evolution/evolution_config.hpp"
@@ -40,11 +39,6 @@ std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::
 std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id);
 /// The stepper's view of each level's RHS (which must outlive it).
 std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs);
-
-/// out = the cubic Hermite interpolant at t0 + theta dt (theta in [0, 1]) of u0, f0 = d_t u at
-/// t0 and u1, f1 at t0 + dt: RK4's dense output, error O(dt^4).
-void hermite_interpolate(const State& u0, const State& f0, const State& u1, const State& f1,
-                         double dt, double theta, State& out);
 
 /// Raises chi to at least chi_floor on every point (0: nothing). On wormhole data the innermost
 /// cell's chi (about 1e-7 on the default grid) passes through zero while the lapse collapses,

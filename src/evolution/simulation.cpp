@@ -35,11 +35,10 @@ Simulation::Simulation(const EvolutionConfig& config)
   };
   for (std::size_t k = 0; k < composite_.size(); ++k)
     composite_levels_.push_back(composite_.level(k));
-  if (layout_.levels() > 1)
-    stepper_.on_level_step = [this](std::size_t l, double t0, double dt, const State& u0,
-                                    const std::array<const State*, 4>& k) {
-      dense_.fill(l, t0, dt, u0, k);
-    };
+  stepper_.on_level_step = [this](std::size_t l, double t0, double dt, const State& u0,
+                                  const std::array<const State*, 4>& k) {
+    dense_.fill(l, t0, dt, u0, k);
+  };
   // every level's boundary data from its parent, and the coarse levels restricted from the fine
   // ones (a single grid: its origin ghosts only)
   stepper_.initialise(levels_u_, 0.0);
@@ -237,15 +236,15 @@ void Simulation::write_output(Output* out, bool series, bool profiles) {
     on_series(*this);
 }
 
-void Simulation::write_due(Output* out, double t_prev, bool have_dense) {
+void Simulation::write_due(Output* out, bool have_dense) {
   // Every output time in (t_prev, t_]: on the step itself, or between the steps from each
-  // level's dense output (boxes, dense_) or the Hermite interpolant of (u_prev_, dudt_prev_)
-  // and (the state, dudt_now_) (a single grid). The diagnostics read the levels' states and t_,
-  // so the interpolated states stand in for them while they are written.
+  // level's RK4 dense output over its own (sub)step (dense_; one level: the single grid). The
+  // diagnostics read the levels' states and t_, so the interpolated states stand in for them
+  // while they are written.
   while (const auto due = clock_.due_by(t_)) {
     if (std::abs(due->t - t_) <= 1e-9 * schedule_.dt || !have_dense) {
       write_output(out, due->series, due->profiles);
-    } else if (layout_.levels() > 1) {
+    } else {
       std::vector<State>& between = dense_.at(due->t);
       std::swap(levels_u_, between);
       stepper_.fill_ghosts(levels_u_); // the fine boundaries from their parents
@@ -253,14 +252,6 @@ void Simulation::write_due(Output* out, double t_prev, bool have_dense) {
       write_output(out, due->series, due->profiles);
       t_ = t_step;
       std::swap(levels_u_, between);
-    } else {
-      hermite_interpolate(u_prev_, dudt_prev_, levels_u_[0], dudt_now_, t_ - t_prev,
-                          (due->t - t_prev) / (t_ - t_prev), u_out_);
-      std::swap(levels_u_[0], u_out_);
-      const double t_step = std::exchange(t_, due->t);
-      write_output(out, due->series, due->profiles);
-      t_ = t_step;
-      std::swap(levels_u_[0], u_out_);
     }
     if (!clock_.advance(*due))
       return;
@@ -301,16 +292,11 @@ void Simulation::run(Output* out) {
   rhs_[0](levels_u_[0], dudt_now_, t_); // RK4's first stage of the first step
   for (long n = step_ + 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
-    const double t_prev = t_;
-    // Keep the step's start for output between the steps (cheap copies, only when needed).
+    // the output times inside this step, filled by the levels' dense output as they step
     const double t_next = last ? t_end : static_cast<double>(n) * s.dt;
     const bool dense = clock_.before(t_next);
-    if (dense && layout_.levels() > 1) {
+    if (dense)
       dense_.prepare(clock_.times_inside(t_, t_next));
-    } else if (dense) {
-      u_prev_ = levels_u_[0];
-      dudt_prev_ = dudt_now_;
-    }
     step(t_next - t_, dudt_now_);
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
@@ -320,10 +306,9 @@ void Simulation::run(Output* out) {
     const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
     tracker_.mark_before_rhs();
     evaluations_before_rhs_ = rhs_[0].evaluations();
-    if (!last || dense)
-      rhs_[0](levels_u_[0], dudt_now_, t_); // the next step's first stage, and d_t u for
-                                            // the interpolant
-    write_due(out, t_prev, dense);
+    if (!last)
+      rhs_[0](levels_u_[0], dudt_now_, t_); // the next step's first stage
+    write_due(out, dense);
     if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
       save_checkpoint(out, h_AH_before_rhs);
       next_checkpoint = checkpoint_after(config_.checkpoint_every, t_);

@@ -77,8 +77,8 @@ public:
   /// Evolve to tmax (stopping between steps on SIGTERM/SIGINT: Interrupted), writing into `out`
   /// (if given) at t = k dt_series (series) and
   /// k dt_profiles (profiles) and at tmax. An output time between two steps t_n < t < t_n+1
-  /// gets the cubic Hermite interpolant of u_n, u_n+1 and their d_t u (RK4's dense output,
-  /// error O(dt^4), the order of the scheme); on a step it gets the state itself. Throws
+  /// gets each level's RK4 dense output (the stages' continuous extension, error O(dt^4) per
+  /// step; a fine box's over its own substep); on a step it gets the state itself. Throws
   /// NonFiniteError after writing the last finite output, leaving the files complete.
   void run(Output* out);
 
@@ -136,8 +136,9 @@ private:
   /// Writes the series row and horizons and/or the profiles of the current state (levels_u_
   /// at t_) into `out` (if given); calls on_series after a series output.
   void write_output(Output* out, bool series, bool profiles);
-  /// Writes every output time in (t_prev, t_], interpolating between the steps if have_dense.
-  void write_due(Output* out, double t_prev, bool have_dense);
+  /// Writes every output time up to t_, from the levels' dense output between the steps if
+  /// have_dense.
+  void write_due(Output* out, bool have_dense);
   /// Writes OUT/checkpoint.bin (if `out`) and calls on_checkpoint.
   void save_checkpoint(Output* out, const std::optional<double>& h_AH_before_rhs);
   /// Say on stderr when the horizon appears or disappears.
@@ -150,16 +151,14 @@ private:
   SeriesDiagnostics diagnostics_; ///< the series row's own RHS per level
   std::vector<State> levels_u_;   ///< the state of each level
   HorizonTracker tracker_;        ///< h_AH for beta_H: searches, held and extrapolated values
-  State dudt_now_; ///< level 0's d_t u at the current state: the next step's first RK4 stage
-  /// a single grid's output between steps (boxes use each level's dense output, dense_)
-  State u_prev_, dudt_prev_, u_out_;
-  State u_composite_;                         ///< the composite state, for profiles
+  State dudt_now_;    ///< level 0's d_t u at the current state: the next step's first RK4 stage
+  State u_composite_; ///< the composite state, for profiles
   std::vector<std::size_t> composite_levels_; ///< the level of each composite cell
   double t_ = 0.0;
   Schedule schedule_;
   mesh::MeshStepper stepper_; ///< RK4 (Odeint's arithmetic), with the chi floor after each step
   OutputClock clock_;         ///< output times and their counters
-  DenseOutput dense_;         ///< boxes: every level's state at output times between steps
+  DenseOutput dense_;         ///< every level's state at output times between steps
   long step_ = 0;             ///< steps taken
   bool resumed_ = false;      ///< restore() was called: run() continues, no initial output
   std::uint64_t evaluations_before_rhs_ = 0;       ///< RHS count before the current step's k1
