@@ -55,6 +55,8 @@ EvolutionConfig evolution_config(const Params& p) {
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   c.horizon_search.finder.tolerance = p.ah_tol;
+  if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
+    c.horizon_search.prescribed = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
   return c;
 }
 
@@ -85,18 +87,9 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;
   resolve_automatic_profile(r.horizon_shift, p.M);
-  if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
-    r.horizon_shift.prescribed_h_AH = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
   r.advection.driver = choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
-  r.horizon_shift.search_every_substage = ah_every_steps(p) == 0;
-  r.horizon_shift.t_min = p.ah_tmin;
-  r.horizon_shift.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   r.horizon_shift.variant = choice("--rah-variant", p.rah_variant, variant_choices);
-  if (r.horizon_shift.variant == ShiftVariant::midstep_update) {
-    r.horizon_shift.search_every_substage = false;
-    r.horizon_shift.midstep_every = ah_every_steps(p);
-  }
   return r;
 }
 

@@ -10,6 +10,7 @@
 #include "initial_data/initial_data.hpp"
 #include "mesh/time_interpolation.hpp"
 
+#include <functional>
 #include <limits>
 
 namespace gbssn1d {
@@ -21,12 +22,17 @@ struct NormWindows {
   double Rint = 1.8;              ///< areal radius bounding the interior norm H_L2_int
 };
 
-/// When the apparent horizon is searched for, for the horizon shift's h_AH.
+/// When the apparent horizon is searched for, for the horizon shift's h_AH (the schedule that
+/// evolution/horizon_tracker.hpp runs).
 struct HorizonSearchSettings {
-  long every_steps = 0; ///< 0: at every RK substage (inside the RHS); n >= 1: every n steps
-  double t_min = 0.0;   ///< no searches before t_min ...
+  /// 0: at every RK substage (inside the RHS); n >= 1: every n steps (with the midstep-update
+  /// variant: at the 2nd RK substage of every n-th step)
+  long every_steps = 0;
+  double t_min = 0.0;                                     ///< no searches before t_min ...
   double t_max = std::numeric_limits<double>::infinity(); ///< ... or after t_max
   HorizonFinderParams finder{.tolerance = 1e-12};         ///< the root-finder's settings
+  /// Open loop: h_AH(t) prescribed as a function of time (no searches); empty: closed loop.
+  std::function<double(double)> prescribed;
   bool in_window(double t) const { return t >= t_min && t <= t_max; }
 };
 
@@ -46,7 +52,7 @@ struct EvolutionConfig {
   GridSpec grid;
   RefinementSettings refinement;
   InitialDataParams initial_data;
-  RhsParams rhs; ///< equations, gauge, dissipation, horizon shift (its `locate` is set by the run)
+  RhsParams rhs;    ///< equations, gauge, dissipation, horizon shift
   double cfl = 0.5; ///< dt = cfl x smallest spacing (0.25 on boxes: params.cpp resolve_defaults)
   double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
   double tmax = 10.0;

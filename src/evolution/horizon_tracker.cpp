@@ -11,7 +11,7 @@ HorizonTracker::Mode decide_mode(const EvolutionConfig& config, const mesh::Mesh
   const HorizonShiftParams& hs = config.rhs.horizon_shift;
   if (!hs.active())
     return Mode::off;
-  if (hs.prescribed())
+  if (config.horizon_search.prescribed)
     return Mode::prescribed;
   if (config.horizon_search.every_steps > 0)
     return Mode::held;
@@ -33,6 +33,30 @@ std::optional<MarginalSurface> HorizonTracker::search(std::size_t l, double seed
   } catch (const HorizonFinderError& e) {
     throw HorizonFinderError(fmt::format("{} (t = {:.6g})", e.what(), t));
   }
+}
+
+std::optional<double> HorizonTracker::at_evaluation(std::size_t level, const State& u,
+                                                    const Grid& grid, double t,
+                                                    std::uint64_t evaluation,
+                                                    std::optional<double> held) {
+  const HorizonSearchSettings& s = config_.horizon_search;
+  const double seed = held.value_or(config_.rhs.horizon_shift.h);
+  switch (mode_) {
+  case Mode::off:
+    return held;
+  case Mode::prescribed:
+    return s.prescribed(t); // open loop: the same h_AH(t) at every resolution
+  case Mode::substage:
+  case Mode::extrapolated:
+    return s.in_window(t) ? locate(level, u, grid, seed, t) : held;
+  case Mode::held:
+    // midstep-update: the 2nd RK substage (evaluation 4k + 1) of every n-th step
+    if (config_.rhs.horizon_shift.variant == HorizonShiftParams::Variant::midstep_update
+        && evaluation % static_cast<std::uint64_t>(4 * s.every_steps) == 1 && s.in_window(t))
+      return locate(level, u, grid, seed, t);
+    return held;
+  }
+  return held;
 }
 
 std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, const Grid& grid,
@@ -130,7 +154,7 @@ std::optional<double> HorizonTracker::radius(double t) {
   case Mode::off:
     return std::nullopt;
   case Mode::prescribed:
-    return hs.prescribed_h_AH(t);
+    return config_.horizon_search.prescribed(t);
   case Mode::extrapolated:
     return extrapolated_at(t);
   case Mode::substage:

@@ -5,7 +5,8 @@
 // the control they feed:
 //   off           no horizon shift (rahA = 0): h_AH is never needed;
 //   prescribed    open loop, h_AH(t) from a file, no searches;
-//   held          a search every n steps (or once a step), the radius held between them;
+//   held          a search every n steps (or once a step), the radius held between them (the
+//                 midstep-update variant: inside the RHS, at the 2nd substage of every n-th step);
 //   substage      a single grid, or boxes with the box-substage variant: the RHS of the level
 //                 holding the horizon searches on every RK stage's state, the others read it;
 //   extrapolated  boxes, searches every substage (the default): a search on the box holding the
@@ -34,9 +35,12 @@ public:
 
   Mode mode() const { return mode_; }
 
-  /// The RHS's search at an RK substage of `level` (modes substage and extrapolated).
-  std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
-                               double t);
+  /// h_AH for an evaluation of level `level`'s RHS on the stage state u at time t, the
+  /// evaluation'th of that RHS, which holds `held` so far (GbssnRhs::HorizonSource): the
+  /// prescribed value, a search or extrapolation in the search window (modes substage and
+  /// extrapolated, and the midstep-update variant's stage), else `held`.
+  std::optional<double> at_evaluation(std::size_t level, const State& u, const Grid& grid, double t,
+                                      std::uint64_t evaluation, std::optional<double> held);
   /// Before the first step at time t: the first searches of the held and extrapolated modes,
   /// and with box-substage every box's starting radius.
   void start(double t);
@@ -61,6 +65,9 @@ public:
                const std::vector<std::array<double, 2>>& history);
 
 private:
+  /// A search at an RK substage of `level` near `seed` (modes substage and extrapolated).
+  std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
+                               double t);
   /// h_AH at time t from the history (extrapolated mode).
   std::optional<double> extrapolated_at(double t) const;
   /// A search near `seed` on level l's state; a HorizonFinderError gets the time added.

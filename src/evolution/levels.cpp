@@ -36,14 +36,16 @@ void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
 }
 
 std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
-                                     const Locate& locate) {
+                                     const LevelHorizonSource& source) {
   std::vector<GbssnRhs> rhs;
   for (std::size_t l = 0; l < layout.levels(); ++l) {
-    RhsParams r = config.rhs;
-    r.horizon_shift.locate = [l, locate](const State& u, const Grid& grid, double seed, double t) {
-      return locate(l, u, grid, seed, t);
-    };
-    rhs.emplace_back(layout.grid(l), r);
+    rhs.emplace_back(layout.grid(l), config.rhs);
+    if (source)
+      rhs.back().set_horizon_source([l, source](const State& u, const Grid& grid, double t,
+                                                std::uint64_t evaluation,
+                                                std::optional<double> held) {
+        return source(l, u, grid, t, evaluation, held);
+      });
   }
   return rhs;
 }

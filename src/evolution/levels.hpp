@@ -29,12 +29,13 @@ mesh::MeshLayout make_layout(const EvolutionConfig& config);
 /// The stepper's options of `config`.
 mesh::StepperOptions stepper_options(const EvolutionConfig& config);
 
-/// A level's horizon search at an RK substage: (level, stage state, grid, seed, t) -> h_AH.
-using Locate =
-    std::function<std::optional<double>(std::size_t, const State&, const Grid&, double, double)>;
-/// One RHS per level of `layout`; their substage searches go to `locate`.
+/// h_AH for an evaluation of level `level`'s RHS (GbssnRhs::HorizonSource, with the level).
+using LevelHorizonSource = std::function<std::optional<double>(
+    std::size_t level, const State& u, const Grid& grid, double t, std::uint64_t evaluation,
+    std::optional<double> held)>;
+/// One RHS per level of `layout`, each taking h_AH from `source` (if given).
 std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
-                                     const Locate& locate);
+                                     const LevelHorizonSource& source);
 /// The initial data on every level.
 std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id);
 /// The stepper's view of each level's RHS (which must outlive it).

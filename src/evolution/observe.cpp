@@ -24,8 +24,6 @@ std::vector<GbssnRhs> diagnostic_copies(const EvolutionConfig& config,
                                         const mesh::MeshLayout& layout) {
   std::vector<GbssnRhs> rhs;
   RhsParams r = config.rhs;
-  r.horizon_shift.search_every_substage = false;
-  r.horizon_shift.locate = nullptr;
   using V = HorizonShiftParams::Variant;
   if (r.horizon_shift.variant == V::midstep_update || r.horizon_shift.variant == V::box_substage)
     r.horizon_shift.variant = V::consistent; // they differ in searches only

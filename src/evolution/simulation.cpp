@@ -23,8 +23,10 @@ Interrupted::Interrupted(int signal_, double t_)
 Simulation::Simulation(const EvolutionConfig& config)
     : config_(config), layout_(make_layout(config)), composite_(layout_),
       rhs_(make_level_rhs(config_, layout_,
-                          [this](std::size_t l, const State& u, const Grid& g, double seed,
-                                 double t) { return tracker_.locate(l, u, g, seed, t); })),
+                          [this](std::size_t l, const State& u, const Grid& g, double t,
+                                 std::uint64_t evaluation, std::optional<double> held) {
+                            return tracker_.at_evaluation(l, u, g, t, evaluation, held);
+                          })),
       diagnostics_(config_, layout_), levels_u_(initial_levels(layout_, config.initial_data)),
       tracker_(config_, layout_, levels_u_, rhs_),
       schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, stepper_options(config)))),

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -111,13 +110,6 @@ struct HorizonShiftParams {
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
   double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth
-  /// true: h_AH is found on the state of every RK substage (the RHS is a function of the state
-  /// alone); false: h_AH is held at the value set by set_horizon_radius() between searches.
-  bool search_every_substage = true;
-  double t_min = 0.0; ///< substage searches only in t_min <= t <= t_max
-  double t_max = std::numeric_limits<double>::infinity();
-  /// Open loop: h_AH(t) prescribed as a function of time (no searches); empty: closed loop.
-  std::function<double(double)> prescribed_h_AH;
   /// Deliberately inconsistent implementations, for the study of why a 3D code lost
   /// convergence; `consistent` is the method as specified above.
   enum class Variant {
@@ -127,23 +119,17 @@ struct HorizonShiftParams {
     delta_rhs_from_gd,           ///< d_t Delta^r computed with beta_GD (for B) reused for Delta^r
     driver_full_shift,           ///< B driven by d_t Delta^r of the full shift
     midstep_update,              ///< h_AH searched at the 2nd RK substage of every n-th step
+                                 ///< (the schedule: evolution/horizon_tracker.hpp)
     /// boxes: the box holding the horizon searches at its own substages, every other box uses
     /// its latest value (an h_AH that jumps across refinement boundaries and lags in time)
     box_substage,
   };
   Variant variant = Variant::consistent;
-  long midstep_every = 1; ///< n of midstep_update
-  /// The apparent horizon's radius on `u` near `seed` at time t (nullopt: none), for the
-  /// searches inside the right-hand side. Set by the evolution (evolution/simulation.cpp), so
-  /// that the equations do not depend on the finder; it may throw.
-  std::function<std::optional<double>(const State& u, const Grid& grid, double seed, double t)>
-      locate;
   bool active() const { return A != 0.0; }
   /// The strength at time t.
   double strength(double t) const {
     return ramp > 0.0 ? A * (1.0 - std::exp(-(t / ramp) * (t / ramp))) : A;
   }
-  bool prescribed() const { return static_cast<bool>(prescribed_h_AH); }
 };
 
 /// Coordinate radius of the apparent horizon of the stationary 1+log trumpet, 0.8304 M: where

@@ -149,15 +149,8 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   if (!hs.active()) {
     interior<p, false>(u, dudt);
   } else {
-    const bool in_window = t >= hs.t_min && t <= hs.t_max;
-    const bool midstep_search =
-        hs.variant == HorizonShiftParams::Variant::midstep_update
-        && evaluations_ % static_cast<std::uint64_t>(4 * hs.midstep_every) == 1;
-    if (hs.prescribed()) {
-      h_AH_ = hs.prescribed_h_AH(t); // open loop: the same h_AH(t) at every resolution
-    } else if ((hs.search_every_substage || midstep_search) && in_window) {
-      h_AH_ = hs.locate ? hs.locate(u, *grid_, h_AH_.value_or(hs.h), t) : std::nullopt;
-    }
+    if (source_)
+      h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     split_shift(u, t);
     using V = HorizonShiftParams::Variant;
     switch (hs.variant) { // dispatched once per call, not per point

@@ -17,6 +17,7 @@
 #include "grid/grid.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -66,9 +67,19 @@ public:
   void set_evaluations(std::uint64_t n) { evaluations_ = n; } ///< for a resumed run
 
   /// The horizon radius h_AH used by the horizon shift: set between searches (held mode), or
-  /// found by the last evaluation (substage mode). nullopt: no horizon, beta_H = 0.
+  /// given by the source at the last evaluation. nullopt: no horizon, beta_H = 0.
   std::optional<double> horizon_radius() const { return h_AH_; }
   void set_horizon_radius(std::optional<double> h_AH) { h_AH_ = h_AH; }
+
+  /// Where an evaluation with the horizon shift on takes h_AH from: called with the stage's
+  /// state, the grid, t, the count of evaluations before this one and the radius held so far;
+  /// returns the radius to use (a search, a prescribed or an extrapolated value, or the held
+  /// one). The schedule lives with the evolution (evolution/horizon_tracker.hpp), so that the
+  /// equations depend on neither the finder nor the schedule. Without a source h_AH is held.
+  using HorizonSource =
+      std::function<std::optional<double>(const State& u, const Grid& grid, double t,
+                                          std::uint64_t evaluation, std::optional<double> held)>;
+  void set_horizon_source(HorizonSource source) { source_ = std::move(source); }
 
 private:
   /// The point loop; the horizon shift and its variant are template parameters, so that each
@@ -88,6 +99,7 @@ private:
   RhsParams params_;
   std::uint64_t evaluations_ = 0;
   std::optional<double> h_AH_;
+  HorizonSource source_;
   std::vector<double> profile_;                  ///< f(r_i / w) on every point (fixed by the grid)
   static constexpr std::size_t block_size = 256; ///< points per block of the point loop
   std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs.cpp)

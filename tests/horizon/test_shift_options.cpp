@@ -546,6 +546,7 @@ TEST_CASE("driver-full-shift changes B's driver where beta_H is non-zero, and on
     q.rah_variant = variant;
     Simulation sim = simulation(q);
     GbssnRhs rhs(sim.grid(), sim.rhs().params());
+    rhs.set_horizon_radius(sim.horizon_radius()); // found on this state, as the run's RHS does
     State dudt;
     rhs(sim.state(), dudt, 0.0);
     return std::pair(dudt, sim.horizon_shift());
