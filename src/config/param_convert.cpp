@@ -18,11 +18,11 @@ EvolutionConfig mesh_config(const Params& p) {
   c.grid = grid_spec(p);
   if (p.grid == "boxes") {
     c.refinement.levels = static_cast<std::size_t>(p.levels.value());
-    c.refinement.time = choice("--time-interp", p.time_interp, time_interp_choices);
-    c.refinement.subcycling = !p.no_subcycling;
-    c.refinement.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
+    c.stepping.time = choice("--time-interp", p.time_interp, time_interp_choices);
+    c.stepping.subcycling = !p.no_subcycling;
+    c.stepping.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
   }
-  c.cfl = p.cfl.value();
+  c.stepping.cfl = p.cfl.value();
   return c;
 }
 
@@ -40,7 +40,6 @@ EvolutionConfig evolution_config(const Params& p) {
   EvolutionConfig c = mesh_config(p);
   c.initial_data = initial_data_params(p);
   c.rhs = rhs_params(p);
-  c.cfl = p.cfl.value();
   c.chi_floor = p.chi_floor;
   c.tmax = p.tmax;
   c.dt_series = p.dt_series;

@@ -119,7 +119,7 @@ inline const Choices<ShiftVariant> variant_choices{
     {"box-substage", ShiftVariant::box_substage}};
 
 /// The grid and refinement part of the evolution's configuration of validated parameters:
-/// what make_layout() and stepper_options() (evolution/levels.hpp) read.
+/// what make_layout() (evolution/levels.hpp) and the stepper read.
 EvolutionConfig mesh_config(const Params& p);
 
 } // namespace gbssn1d

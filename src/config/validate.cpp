@@ -244,7 +244,7 @@ void validate_grid_and_steps(const Params& p) {
                                  "the horizon is found well within one cell",
                                  ah_tol_over_spacing_max, grid.min_spacing()));
   // The Gamma-driver's damping term limits the step independently of the spacing.
-  const double dt = mesh::hierarchy_dt(layout, stepper_options(mesh_config(p))); // the whole step
+  const double dt = mesh::hierarchy_dt(layout, mesh_config(p).stepping); // the whole step
   const double dt_finest = time_step(p.cfl.value(), grid);
   if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
     throw ParamError("--checkpoint-every", num(p.checkpoint_every),

@@ -290,8 +290,8 @@ Checkpoint resumable_checkpoint(const Checkpoint& checkpoint, const ResumeTarget
     for (std::size_t l = 0; l < n_levels; ++l) {
       // quadratic interpolation keeps two earlier time levels of every level but the finest
       const std::size_t expected =
-          run.config.refinement.time == mesh::TimeInterpolation::quadratic && l + 1 < n_levels ? 2
-                                                                                               : 0;
+          run.config.stepping.time == mesh::TimeInterpolation::quadratic && l + 1 < n_levels ? 2
+                                                                                             : 0;
       if (c.history[l].size() != expected)
         throw CheckpointError(fmt::format("the checkpoint holds {} time levels of level {}, this "
                                           "run keeps {}",

@@ -8,7 +8,7 @@
 #include "grid/grid.hpp"
 #include "horizon/apparent_horizon.hpp"
 #include "initial_data/initial_data.hpp"
-#include "mesh/time_interpolation.hpp"
+#include "mesh/hierarchy.hpp"
 
 #include <functional>
 #include <limits>
@@ -43,17 +43,17 @@ struct RefinementSettings {
   /// interpolation's reach and one cell to spare.
   static constexpr double horizon_margin_cells = 12.0;
   std::size_t levels = 1; ///< level l covers r <= rmax / 2^l with N cells (uniform)
-  mesh::TimeInterpolation time = mesh::TimeInterpolation::rk_stages;
-  bool subcycling = true; ///< false: every level steps with the finest dt
-  double dt_max = std::numeric_limits<double>::infinity(); ///< no level steps further
 };
 
 struct EvolutionConfig {
   GridSpec grid;
   RefinementSettings refinement;
+  /// How the levels step (RK4 at dt = cfl x their spacing; on boxes also the time interpolation
+  /// at fine boundaries, subcycling and the largest step). cfl 0.5 on a single grid, 0.25 on
+  /// boxes (params.cpp resolve_defaults; docs/horizon-shift-study.md Sec. 11).
+  mesh::StepperOptions stepping{.cfl = 0.5};
   InitialDataParams initial_data;
-  RhsParams rhs;    ///< equations, gauge, dissipation, horizon shift
-  double cfl = 0.5; ///< dt = cfl x smallest spacing (0.25 on boxes: params.cpp resolve_defaults)
+  RhsParams rhs;           ///< equations, gauge, dissipation, horizon shift
   double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)
   double tmax = 10.0;
   double dt_series = 0.25;       ///< time between rows of timeseries.dat

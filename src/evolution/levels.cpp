@@ -21,13 +21,6 @@ mesh::MeshLayout make_layout(const EvolutionConfig& config) {
   return mesh::MeshLayout(make_grid(config.grid).map(), config.grid.N, 1, config.grid.fd_order);
 }
 
-mesh::StepperOptions stepper_options(const EvolutionConfig& config) {
-  return mesh::StepperOptions{.time = config.refinement.time,
-                              .subcycling = config.refinement.subcycling,
-                              .cfl = config.cfl,
-                              .dt_max = config.refinement.dt_max};
-}
-
 void apply_chi_floor(State& u, const Grid& grid, double chi_floor) {
   if (chi_floor <= 0.0)
     return;

@@ -1,6 +1,6 @@
 // The levels of a run and how they step, from its configuration: the layout (one level on the
-// grid's map, or --levels boxes), the stepper's options, the time step schedule, and the
-// operation applied to a level's state after each step (the chi floor).
+// grid's map, or --levels boxes), the time step schedule, each level's RHS and the operation
+// applied to a level's state after each step (the chi floor).
 #pragma once
 
 #include "evolution/evolution_config.hpp"
@@ -26,8 +26,6 @@ Schedule make_schedule(const EvolutionConfig& config, double dt);
 
 /// The levels of `config`'s grid: one level on its map, or --levels boxes.
 mesh::MeshLayout make_layout(const EvolutionConfig& config);
-/// The stepper's options of `config`.
-mesh::StepperOptions stepper_options(const EvolutionConfig& config);
 
 /// h_AH for an evaluation of level `level`'s RHS (GbssnRhs::HorizonSource, with the level).
 using LevelHorizonSource = std::function<std::optional<double>(

@@ -29,9 +29,9 @@ Simulation::Simulation(const EvolutionConfig& config)
                           })),
       diagnostics_(config_, layout_), levels_u_(initial_levels(layout_, config.initial_data)),
       tracker_(config_, layout_, levels_u_, rhs_),
-      schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, stepper_options(config)))),
-      stepper_(layout_, level_functors(rhs_), stepper_options(config)),
-      clock_(config_, schedule_.dt), dense_(layout_, config_.chi_floor, schedule_.dt) {
+      schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, config.stepping))),
+      stepper_(layout_, level_functors(rhs_), config.stepping), clock_(config_, schedule_.dt),
+      dense_(layout_, config_.chi_floor, schedule_.dt) {
   stepper_.after_step = [this](std::size_t l, State& u) {
     apply_chi_floor(u, layout_.grid(l), config_.chi_floor);
   };
@@ -51,7 +51,7 @@ Simulation::Simulation(const EvolutionConfig& config)
 
 bool Simulation::reinitialises() const {
   return layout_.levels() > 1 && config_.rhs.horizon_shift.active()
-         && config_.refinement.time == mesh::TimeInterpolation::quadratic;
+         && config_.stepping.time == mesh::TimeInterpolation::quadratic;
 }
 
 std::uint64_t Simulation::evaluations() const {

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 using namespace gbssn1d;
@@ -55,7 +56,7 @@ TEST_CASE("evolution_config: each flag reaches its field, areal windows scale wi
   CHECK(c.rhs.gauge.shift.eta == 0.7);
   CHECK(c.rhs.gauge.shift.advective);
   CHECK_FALSE(c.rhs.gauge.slicing.advective);
-  CHECK(c.cfl == 0.3);
+  CHECK(c.stepping.cfl == 0.3);
   CHECK(c.rhs.ko_sigma == 0.05);
   CHECK(c.chi_floor == 2e-6);
   CHECK(c.tmax == 7.0);
@@ -89,12 +90,17 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   CHECK(c.grid.kind == GridKind::sinh);
   CHECK(c.grid.N == d.grid.N);
   CHECK(c.grid.dr_inner == d.grid.dr_inner);
-  CHECK(c.cfl == d.cfl);
-  CHECK(c.cfl == 0.5); // measured (docs/horizon-shift-study.md Sec. 11)
+  CHECK(c.stepping.cfl == d.stepping.cfl);
+  CHECK(c.stepping.cfl == 0.5); // measured (docs/horizon-shift-study.md Sec. 11)
   Params b;
   b.grid = "boxes";
   b.N = 64;
-  CHECK(evolution_config(validated(b)).cfl == 0.25); // boxes: their time interpolation
+  const EvolutionConfig cb = evolution_config(validated(b));
+  CHECK(cb.stepping.cfl == 0.25); // boxes: their time interpolation
+  CHECK(cb.stepping.time == mesh::TimeInterpolation::rk_stages);
+  CHECK(cb.stepping.subcycling);
+  CHECK(cb.stepping.dt_max == doctest::Approx(dt_max_of_damping(2.0))); // eta = 2/M, M = 1
+  CHECK(std::isinf(c.stepping.dt_max)); // a single grid: no largest step
   CHECK(c.chi_floor == d.chi_floor);
   CHECK(c.rhs.gauge.shift.eta == 1.0); // 2/M
   CHECK(c.rhs.gauge.slicing.mu_L == 2.0);
