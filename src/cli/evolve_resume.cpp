@@ -55,6 +55,14 @@ std::optional<std::string> prescribed_horizon_content(const Params& p) {
   return text.str();
 }
 
+/// The bytes of a file ("" if it cannot be read: the caller's checks refuse such a file).
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 } // namespace
 
 int evolve(Params p, bool print_config) {
@@ -192,10 +200,7 @@ Params with_kept_horizon_file(const Params& p, const std::filesystem::path& dir)
       now = prescribed_horizon_content(p);
     } catch (const ParamError&) {
     }
-    std::ifstream in(copy, std::ios::binary);
-    std::ostringstream kept;
-    kept << in.rdbuf();
-    if (!now || *now != kept.str())
+    if (!now || *now != file_text(copy))
       say("gbssn1d: note: --rah-hAH-file {} is not what the run read at its start (edited, "
           "missing, or another file from this folder); it continues with the copy it took then, "
           "{}\n",
@@ -211,7 +216,11 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
   check_resume_dir(dir_name);
-  Params p = parse_evolve_args({"--config", (dir / "config.toml").string()});
+  // a key added since the run was recorded means what the run did without it
+  std::vector<std::string> args{"--config", (dir / "config.toml").string()};
+  for (const auto& a : absent_key_args(file_text(dir / "config.toml")))
+    args.push_back(a);
+  Params p = parse_evolve_args(args);
   if (tmax)
     p.tmax = *tmax;
   p.out = dir_name;

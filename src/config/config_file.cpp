@@ -51,6 +51,13 @@ std::vector<ParamSpec> evolution_specs() {
        "buffer zones, as Carpet and BAM)"},
       {"no-subcycling", &Params::no_subcycling, "Grid",
        "--grid boxes: every box steps with the finest box's dt (no Berger-Oliger subcycling)"},
+      {"box-taper", &Params::box_taper, "Grid",
+       "--grid boxes: the outermost fraction F of a fine box's cells (round(F N) cells) is "
+       "relaxed smoothly towards its parent at every synchronisation (a tapered buffer that "
+       "absorbs what the parent cannot carry), 0 ... 0.5; 0: off"},
+      {"box-taper-from", &Params::box_taper_from, "Grid",
+       "--grid boxes: --box-taper only on the boxes that reach beyond this radius, in units "
+       "of M"},
       {"dr-inner", &Params::dr_inner, "Grid",
        "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
        "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)"},
@@ -186,7 +193,8 @@ const std::map<std::string, std::string>& default_rules() {
       {"ah-tmax", "none"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"cfl", "0.5 (boxes: 0.25)"}};
+      {"cfl", "0.5 (boxes: 0.25)"},
+      {"box-taper", "0.5 on boxes"}};
   return rules;
 }
 
@@ -331,25 +339,52 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args,
   return out;
 }
 
+const std::map<std::string, std::string>& absent_key_values() {
+  static const std::map<std::string, std::string> values{{"box-taper", "0"}};
+  return values;
+}
+
+namespace {
+
+/// The "key = value" lines of a configuration text ('#' lines skipped), but the `ignored` keys.
+std::map<std::string, std::string> key_values(const std::string& text,
+                                              const std::vector<std::string>& ignored = {}) {
+  std::map<std::string, std::string> kv;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const auto eq = line.find(" = ");
+    if (line.empty() || line[0] == '#' || eq == std::string::npos)
+      continue;
+    const std::string key = line.substr(0, eq);
+    if (std::find(ignored.begin(), ignored.end(), key) == ignored.end())
+      kv[key] = line.substr(eq + 3);
+  }
+  return kv;
+}
+
+} // namespace
+
+std::vector<std::string> absent_key_args(const std::string& text) {
+  const auto kv = key_values(text);
+  std::vector<std::string> args;
+  for (const auto& [key, value] : absent_key_values())
+    if (!kv.contains(key))
+      args.push_back(fmt::format("--{}={}", key, value));
+  return args;
+}
+
 std::vector<std::string> config_differences(const std::string& old_text,
                                             const std::string& new_text,
                                             const std::vector<std::string>& ignored) {
-  auto values = [&](const std::string& text) {
-    std::map<std::string, std::string> kv;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-      const auto eq = line.find(" = ");
-      if (line.empty() || line[0] == '#' || eq == std::string::npos)
-        continue;
-      const std::string key = line.substr(0, eq);
-      if (std::find(ignored.begin(), ignored.end(), key) == ignored.end())
-        kv[key] = line.substr(eq + 3);
-    }
-    return kv;
-  };
-  const auto a = values(old_text), b = values(new_text);
-  // a key missing from a text written before its parameter existed stands for its default
-  static const auto defaults = values(config_text(Params{}));
+  const auto a = key_values(old_text, ignored), b = key_values(new_text, ignored);
+  // a key missing from a text written before its parameter existed stands for what runs did
+  // then: its absent_key_values() entry, else its default
+  static const auto defaults = [] {
+    auto d = key_values(config_text(Params{}));
+    for (const auto& [key, value] : absent_key_values())
+      d[key] = value;
+    return d;
+  }();
   std::vector<std::string> diff;
   auto value_of = [](const std::map<std::string, std::string>& kv, const std::string& key) {
     if (const auto it = kv.find(key); it != kv.end())

@@ -32,10 +32,18 @@ CLI::Option* add_number_option(CLI::App& app, const std::string& names, double& 
 /// `key = value` line per parameter, at full precision.
 std::string config_text(const Params& p);
 
+/// Keys added with a default that is not what runs recorded before them did: in a recorded
+/// configuration that lacks one, its absence means this value (e.g. box-taper = 0: boxes
+/// without the tapered buffer), not today's default.
+const std::map<std::string, std::string>& absent_key_values();
+/// "--key=value" for each key of absent_key_values() that the recorded configuration `text`
+/// lacks: appended to a parse of that text, they give the run it recorded.
+std::vector<std::string> absent_key_args(const std::string& text);
+
 /// The parameters whose values differ between two configuration texts (config.toml), as
-/// "key: old -> new"; a key missing on one side stands for its default (a text written before
-/// that parameter existed), or reads "(unset)" if it has none; '#' lines and the keys in
-/// `ignored` are not compared.
+/// "key: old -> new"; a key missing on one side stands for its absent_key_values() entry or
+/// its default (a text written before that parameter existed), or reads "(unset)" if it has
+/// none; '#' lines and the keys in `ignored` are not compared.
 std::vector<std::string>
 config_differences(const std::string& old_text, const std::string& new_text,
                    const std::vector<std::string>& ignored = {"out", "force"});

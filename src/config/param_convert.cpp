@@ -20,6 +20,8 @@ EvolutionConfig mesh_config(const Params& p) {
     c.refinement.levels = static_cast<std::size_t>(p.levels.value());
     c.stepping.time = choice("--time-interp", p.time_interp, time_interp_choices);
     c.stepping.subcycling = !p.no_subcycling;
+    c.stepping.taper_cells = static_cast<std::size_t>(std::lround(p.box_taper.value() * p.N));
+    c.stepping.taper_min_extent = p.box_taper_from * p.M;
     c.stepping.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
   }
   c.stepping.cfl = p.cfl.value();

@@ -46,6 +46,10 @@ void resolve_defaults(Params& p) {
   // or 0.9; on boxes the time interpolation of fine boundaries makes the error depend on it
   if (!p.cfl)
     p.cfl = p.grid == "boxes" ? 0.25 : 0.5;
+  // Sec. 6.6: relaxing the outer half of every box reaching beyond 16 M towards its parent
+  // absorbs the wormhole's gauge pulse where the parent cannot carry it
+  if (!p.box_taper)
+    p.box_taper = p.grid == "boxes" ? 0.5 : 0.0;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
   if (p.rahA != 0.0) {

@@ -32,6 +32,12 @@ struct Params {
   std::optional<int> levels;
   std::string time_interp = "rk-stages"; ///< boxes: rk-stages | dense | quadratic
   bool no_subcycling = false;            ///< boxes: every level steps with the finest dt
+  /// boxes: the fraction of a box's cells (outermost) blended towards its parent at every
+  /// synchronisation, 0 ... 0.5 (mesh::StepperOptions::taper_cells = round(box_taper N));
+  /// unset: 0.5 on boxes, 0 on a single grid (resolve_defaults; docs/horizon-shift-study.md
+  /// Sec. 6.6)
+  std::optional<double> box_taper;
+  double box_taper_from = 16.0; ///< boxes: only boxes reaching beyond this radius / M are tapered
   /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
   double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data

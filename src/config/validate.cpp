@@ -56,12 +56,22 @@ void validate_grid_flags(const Params& p) {
       throw ParamError("--time-interp", p.time_interp, "needs --grid boxes");
     if (p.no_subcycling)
       throw ParamError("--no-subcycling", "needs --grid boxes");
+    if (p.box_taper.value() != 0.0)
+      throw ParamError("--box-taper", num(*p.box_taper), "needs --grid boxes");
+    if (p.box_taper_from != Params{}.box_taper_from)
+      throw ParamError("--box-taper-from", num(p.box_taper_from), "needs --grid boxes");
   } else {
     if (!p.levels)
       throw std::logic_error("validate() before resolve_defaults()");
     if (*p.levels < 1 || *p.levels > levels_max)
       throw ParamError("--levels", std::to_string(*p.levels),
                        fmt::format("must lie in 1 ... {}", levels_max));
+    if (!(p.box_taper.value() >= 0.0 && *p.box_taper <= 0.5))
+      throw ParamError("--box-taper", num(*p.box_taper),
+                       "must lie in 0 ... 0.5 (a fraction of a box's cells)");
+    if (!(p.box_taper_from >= 0.0 && std::isfinite(p.box_taper_from)))
+      throw ParamError("--box-taper-from", num(p.box_taper_from),
+                       "must be a finite radius >= 0 (in units of M)");
     if (*p.levels > 1 && p.N % 2 != 0)
       throw ParamError("--N", std::to_string(p.N),
                        "must be even with --grid boxes: each coarse cell holds two fine cells, "

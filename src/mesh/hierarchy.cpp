@@ -89,6 +89,28 @@ void MeshStepper::fill_ghosts(std::vector<State>& u) const {
     prolong(u[l - 1], layout_->grid(l - 1), u[l], layout_->grid(l), begin, end);
 }
 
+void MeshStepper::taper_from_parent(std::vector<State>& u, std::size_t l) {
+  const long n = static_cast<long>(layout_->n_cells());
+  const long k = std::min(static_cast<long>(options_.taper_cells), n / 2);
+  if (l == 0 || k <= 0 || layout_->extent(l) <= options_.taper_min_extent)
+    return;
+  const long j0 = n - k;
+  State& parent = levels_[l].tmp; // free between steps
+  parent.resize(u[l].size());
+  fill_from_parent(l, parent, {&u[l - 1]}, {1.0}, j0);
+  const Grid& g = layout_->grid(l);
+  for (const auto& entry : registry) {
+    const auto p = field(parent, g, entry.var);
+    const auto f = field(u[l], g, entry.var);
+    for (long j = j0; j < n; ++j) {
+      const double s = static_cast<double>(j - j0 + 1) / static_cast<double>(k);
+      const double w = s * s * (3.0 - 2.0 * s);
+      const std::size_t i = Grid::n_ghost + static_cast<std::size_t>(j);
+      f[i] += w * (p[i] - f[i]);
+    }
+  }
+}
+
 void MeshStepper::initialise(std::vector<State>& u, double t) {
   if (u.size() != layout_->levels())
     throw std::invalid_argument("the mesh stepper needs one state per level");
@@ -250,6 +272,7 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
       advance(u, l + 1, t, dt);
     }
     restrict_level(u, l + 1);
+    taper_from_parent(u, l + 1);
   }
 }
 

@@ -77,6 +77,14 @@ struct StepperOptions {
   /// largest dt_finest x 2^k below it, as often as its child (time refinement factor 1, as
   /// Carpet's time_refinement_factors do for the outer levels).
   double dt_max = std::numeric_limits<double>::infinity();
+  /// A fine box's outermost `taper_cells` interior cells are blended towards the prolongation
+  /// of their parent at every synchronisation (after restriction), with weights rising
+  /// smoothly from 0 inside to 1 at the outermost cell: a tapered buffer (Lehner, Liebling &
+  /// Reula 2006; the 3 outermost cells that OllinSphere-BiB overwrites). Between
+  /// synchronisations the stages are untouched, so each RK4 step stays consistent. 0: off.
+  std::size_t taper_cells = 0;
+  /// Only boxes that reach beyond this radius are tapered (0: every box but level 0).
+  double taper_min_extent = 0.0;
 };
 
 /// Steps level l takes per step of the hierarchy (level 0's step) under `options`: 1 on level
@@ -118,6 +126,10 @@ public:
   /// Fills the outer ghosts of levels 1 ... L-1 at time t from their parents by prolongation
   /// alone (after initialise or a completed step, when all levels are at t).
   void fill_ghosts(std::vector<State>& u) const;
+  /// Level l's outermost taper_cells interior cells blended towards its parent's prolongation
+  /// (both at the same time): u += w (P u_parent - u), w = s^2 (3 - 2 s), s = (j - j0 + 1)/k
+  /// for the k = taper_cells cells j0 ... N - 1 (StepperOptions::taper_cells).
+  void taper_from_parent(std::vector<State>& u, std::size_t l);
 
   /// Called after every step of a level (e.g. a chi floor).
   std::function<void(std::size_t level, State& u)> after_step;

@@ -76,6 +76,11 @@ void check_refused(const std::string& args, const std::string& flag) {
 
 TEST_CASE("bad numbers are refused, naming the parameter and why") {
   check_refused("--N 0", "--N");
+  check_refused("--box-taper 0.25", "--box-taper");              // a single grid has no boxes
+  check_refused("--box-taper-from 8", "--box-taper-from");       // nor this
+  check_refused("--grid boxes --box-taper 0.51", "--box-taper"); // 0 ... 0.5
+  check_refused("--grid boxes --box-taper -0.1", "--box-taper");
+  check_refused("--grid boxes --box-taper-from -1", "--box-taper-from");
   check_refused("--N -5", "--N");
   check_refused("--rmax -3", "--rmax");
   check_refused("--rmax 0", "--rmax");
@@ -537,6 +542,40 @@ std::string patched(std::string bytes, std::size_t offset, const void* value, st
 }
 
 } // namespace
+
+TEST_CASE("a boxes run recorded before --box-taper existed resumes without the taper it never "
+          "had, and today's default is another configuration") {
+  const fs::path whole = scratch("whole"), parts = scratch("parts");
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  const std::string flags = "evolve --grid boxes --levels 6 --rmax 64 --N 24 --box-taper 0 "
+                            "--dt-series 0.5 --dt-profiles 5 --checkpoint-every 2";
+  REQUIRE(run(flags + " --tmax 6 --out " + whole.string()).status == 0);
+  REQUIRE(run(flags + " --tmax 4 --out " + parts.string()).status == 0);
+  // the folder's config.toml as a version without the key wrote it (a key absent from a
+  // recorded configuration means what runs did before it existed: box-taper = 0)
+  std::string config = slurp(parts / "config.toml");
+  const auto at = config.find("box-taper = 0\n");
+  REQUIRE(at != std::string::npos);
+  config.erase(at, std::string("box-taper = 0\n").size());
+  std::ofstream(parts / "config.toml", std::ios::trunc) << config;
+  const Result r = run("resume " + parts.string() + " --tmax 6");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(without_out(whole / "timeseries.dat") == without_out(parts / "timeseries.dat"));
+  CHECK(without_out(whole / "profiles.dat") == without_out(parts / "profiles.dat"));
+  // the comparisons of checkpoints, converge studies and sweep members read it the same way
+  const std::string old_text = config;
+  std::string today = old_text;
+  today.insert(at, "box-taper = 0.5\n");
+  const auto diff = gbssn1d::config_differences(old_text, today, {});
+  REQUIRE(diff.size() == 1);
+  CHECK(diff.front() == "box-taper: 0 -> 0.5");
+  today.replace(at, std::string("box-taper = 0.5\n").size(), "box-taper = 0\n");
+  CHECK(gbssn1d::config_differences(old_text, today, {}).empty());
+  CHECK(gbssn1d::absent_key_args(old_text) == std::vector<std::string>{"--box-taper=0"});
+  CHECK(gbssn1d::absent_key_args(today).empty());
+}
 
 TEST_CASE("resume checks the checkpoint and every file before it changes any: corrupt, patched, "
           "foreign or incomplete input is refused and the run is left byte for byte") {

@@ -87,6 +87,8 @@ EVOLVE = {
     "--levels": Flag(INT, ("1", "2", "3", "4"), ("0", "-3", "30", "31", "2.5")),
     "--time-interp": Flag(TEXT, choices=("rk-stages", "dense", "quadratic")),
     "--no-subcycling": Flag(FLAG),
+    "--box-taper": Flag(FLOAT, ("0", "0.25", "0.5"), ("-1e-9", "0.5000001", "1e308")),
+    "--box-taper-from": Flag(FLOAT, ("0", "16", "100"), ("-1", "1e308")),
     "--dr-inner": Flag(FLOAT, ("0.02", "0.05", "0.01"), ("1e-30", "1e-300", "2.5", "1e-7")),
     "--id": Flag(TEXT, choices=("wormhole", "maximal-trumpet", "1log-trumpet")),
     "--M": Flag(FLOAT, ("1", "0.5", "2"), ("1e-3", "1e3", "1e-4", "1e308")),

@@ -453,3 +453,57 @@ TEST_CASE(
       CHECK(order > 0.0);
     }
 }
+
+// The tapered buffer (StepperOptions::taper_cells): after restriction at a synchronisation, a
+// box's outermost k cells are relaxed towards the prolongation of the parent with weights
+// s^2 (3 - 2 s), s = (j - j0 + 1) / k. Checked against the formula on data whose parent
+// differs from the box by a known offset, and on a polynomial (degree 5, which the 6th-order
+// prolongation reproduces) that it leaves alone.
+TEST_CASE("the tapered buffer relaxes a box's outer cells towards its parent, weights 0 -> 1") {
+  const std::size_t n = 32, k = 8;
+  StepperOptions opt{TimeInterpolation::rk_stages, true, 0.25};
+  opt.taper_cells = k;
+  Run run(rmax, n, 2, opt);
+  const Grid &gc = run.layout.grid(0), &gf = run.layout.grid(1);
+  auto poly = [](double r) { return 1.0 + 0.1 * r * r - 0.003 * r * r * r * r; }; // even
+  for (std::size_t i = 0; i < gc.n_total(); ++i)
+    for (const auto& e : registry)
+      field(run.u[0], gc, e.var)[i] = e.parity > 0 ? poly(gc.r()[i]) : gc.r()[i] * poly(gc.r()[i]);
+  // the box: the same polynomial plus an offset of 1e-3 on alpha from cell j0 - 2 outwards
+  const long j0 = static_cast<long>(n - k);
+  for (std::size_t i = 0; i < gf.n_total(); ++i)
+    for (const auto& e : registry) {
+      const double r = gf.r()[i];
+      field(run.u[1], gf, e.var)[i] = e.parity > 0 ? poly(r) : r * poly(r);
+    }
+  auto alpha = field(run.u[1], gf, Var::alpha);
+  for (long j = j0 - 2; j < static_cast<long>(n); ++j)
+    alpha[static_cast<std::size_t>(j) + Grid::n_ghost] += 1e-3;
+  const State before = run.u[1];
+  run.stepper->taper_from_parent(run.u, 1);
+  for (long j = 0; j < static_cast<long>(n); ++j) {
+    const std::size_t i = static_cast<std::size_t>(j) + Grid::n_ghost;
+    const double s = j < j0 ? 0.0 : static_cast<double>(j - j0 + 1) / static_cast<double>(k);
+    const double w = s * s * (3.0 - 2.0 * s);
+    INFO("j = " << j);
+    // alpha: the offset shrinks by the weight; the parent holds the polynomial exactly
+    const double offset = j >= j0 - 2 ? 1e-3 : 0.0;
+    CHECK(alpha[i] == doctest::Approx(poly(gf.r()[i]) + (1.0 - w) * offset).epsilon(1e-12));
+    // the other fields are the polynomial in box and parent alike: unchanged to round-off
+    CHECK(field(run.u[1], gf, Var::chi)[i] == doctest::Approx(poly(gf.r()[i])).epsilon(1e-12));
+    CHECK(field(run.u[1], gf, Var::beta)[i]
+          == doctest::Approx(gf.r()[i] * poly(gf.r()[i])).epsilon(1e-12));
+    if (j < j0) // inside the taper: not touched at all
+      CHECK(alpha[i] == field(before, gf, Var::alpha)[i]);
+  }
+  CHECK(alpha[static_cast<std::size_t>(n - 1) + Grid::n_ghost]
+        == doctest::Approx(poly(gf.r()[n - 1 + Grid::n_ghost])).epsilon(1e-12)); // w = 1
+
+  // a box that does not reach beyond taper_min_extent is left alone
+  StepperOptions from = opt;
+  from.taper_min_extent = run.layout.extent(1);
+  Run inner(rmax, n, 2, from);
+  inner.u[1] = before;
+  inner.stepper->taper_from_parent(inner.u, 1);
+  CHECK(inner.u[1] == before);
+}
