@@ -33,19 +33,22 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
           "a larger --N",
           num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
-  // Boxes and wormhole data: the collapse's outgoing gauge pulse comes back from where the
-  // boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH that fall with N
-  // (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at 128, 1e-4 at 200).
+  // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
+  // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
+  // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at
+  // 128, 1e-4 at 200); the taper absorbs it (Sec. 6.6), so only untapered box ends are meant.
   if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.id == "wormhole" && p.N < 200) {
     const double back = 1.0 / std::sqrt(2.0) + 1.0;
     for (int l = *p.levels - 1; l >= 1; --l) { // the box ends from the inside out
       const double end = std::ldexp(p.rmax, -l);
-      if (end >= 50.0 * p.M && back * end <= p.tmax) {
+      const bool tapered = p.box_taper.value_or(0.0) > 0.0 && end > p.box_taper_from * p.M;
+      if (!tapered && end >= 50.0 * p.M && back * end <= p.tmax) {
         w.push_back(fmt::format(
-            "wormhole data on boxes with --N {} < 200: the collapse's gauge pulse comes back from "
-            "where the boxes end (first from r = {:.4g} M at t ~ {:.0f} M), in bursts of H and "
-            "M_AH (6e-3 in M_AH at N = 96, 7e-4 at N = 128: docs/horizon-shift-study.md, Sec. 7); "
-            "use --N 200 or more, the sinh grid, or trumpet data",
+            "wormhole data on untapered boxes with --N {} < 200: the collapse's gauge pulse "
+            "comes back from where the boxes end (first from r = {:.4g} M at t ~ {:.0f} M), in "
+            "bursts of H and M_AH (6e-3 in M_AH at N = 96, 7e-4 at N = 128: "
+            "docs/horizon-shift-study.md, Sec. 7); use the default --box-taper, --N 200 or "
+            "more, the sinh grid, or trumpet data",
             p.N, end, back * end));
         break;
       }

@@ -380,12 +380,19 @@ TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the unt
   CHECK(step_order < 2.5);
 }
 
-TEST_CASE("wormhole data on boxes with N below 200 are warned about once the pulse can be back") {
+TEST_CASE("wormhole data on untapered boxes with N below 200 are warned about once the pulse can "
+          "be back") {
   auto burst_warnings = [](const Params& p) {
     return warnings_holding(p, "comes back from where the boxes end");
   };
   Params p = boxes(8, 1000.0, 96);
   p.id = "wormhole";
+  CHECK(burst_warnings(p) == 0); // the default taper absorbs the pulse (Sec. 6.6)
+  p.box_taper_from = 100.0;      // the box ending at 62.5 M is not tapered
+  p.tmax = 300.0;
+  CHECK(burst_warnings(p) == 1);
+  p.box_taper_from = 16.0;
+  p.box_taper = 0.0;
   p.tmax = 300.0; // the box ending at 62.5 M sends it back by about 107 M
   CHECK(burst_warnings(p) == 1);
   p.tmax = 100.0;

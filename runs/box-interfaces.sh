@@ -1,0 +1,158 @@
+#!/usr/bin/env bash
+# The refinement interfaces of nested boxes and the tapered buffer (--box-taper F,
+# --box-taper-from R; docs/horizon-shift-study.md Sec. 6.6). Every run is made afresh.
+#
+#   bash runs/box-interfaces.sh wormhole   # 10 boxes to 2048 M, wormhole data, to 1000 M, N = 64, 128
+#                                          # against the sinh grid of the same innermost spacing
+#   bash runs/box-interfaces.sh published  # wormhole data on the published grid with the boundary out
+#                                          # of the way (8 boxes to 256 M), N = 24, 32, 48, to 100 M
+#   bash runs/box-interfaces.sh shifted    # the shifted trumpet on the published grid (7 boxes to 128 M):
+#                                          # what a taper of the inner boxes costs
+#   bash runs/box-interfaces.sh trumpet    # the unshifted trumpet on 9 boxes to 1024 M, N = 48, 64, 96
+#   bash runs/box-interfaces.sh widths     # the taper's width in cells, every box, wormhole (10 boxes)
+#   bash runs/box-interfaces.sh all
+#
+# Output under out/box-interfaces/, tables on stdout (also in out/box-interfaces/*.txt).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+py=/usr/bin/python3
+out=out/box-interfaces
+mkdir -p "$out"
+jobs=$(nproc)
+
+# the tapers compared: name and flags
+tapers=("off:--box-taper 0" "half-all:--box-taper 0.5 --box-taper-from 0"
+        "half-from8:--box-taper 0.5 --box-taper-from 8" "default:")
+
+evolve() { # evolve NAME FLAGS...: one run into out/box-interfaces/NAME
+  local name=$1
+  shift
+  rm -rf "${out:?}/$name"
+  build/gbssn1d evolve "$@" --out "$out/$name" >"$out/$name.log" 2>&1 ||
+    echo "  ($name stopped: see $out/$name.log)"
+}
+family() { # family NAME "N list" FLAGS...: one converge study
+  local name=$1 Ns=$2
+  shift 2
+  rm -rf "${out:?}/$name"
+  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
+    echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
+}
+# max |M_AH - M| per time window of each run's timeseries.dat; the first run is the reference
+windows() { # windows "t0-t1 ..." REFERENCE RUN...
+  local w=$1
+  shift
+  $py - "$w" "$@" <<'PY'
+import sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import series
+wins = [tuple(float(x) for x in w.split('-')) for w in sys.argv[1].split()]
+ref = None
+print(f"{'run':34s}" + "".join(f"{f'{a:g}-{b:g} M':>12s}" for a, b in wins) + "   max/ref")
+for d in sys.argv[2:]:
+    s = series(d.rstrip('/') + '/timeseries.dat')
+    t, e = s['t'], np.abs(s['M_ah_err'])
+    m = [np.nanmax(e[(t >= a) & (t <= b)]) for a, b in wins]
+    worst = max(m)
+    ref = worst if ref is None else ref
+    name = '/'.join(d.rstrip('/').split('/')[-2:]) if d.rstrip('/').split('/')[-1].startswith('N') \
+        else d.rstrip('/').split('/')[-1]
+    print(f"{name:34s}" + "".join(f"{x:12.2e}" for x in m) + f"   {worst / ref:.2f}")
+PY
+}
+
+wormhole() {
+  # the sinh grid with the innermost spacing of the boxes (M/16, M/32) and the same rmax
+  common=(--tmax 1000 --dt-series 1 --dt-profiles 1000 --rmax 2048)
+  evolve sinh-M16 "${common[@]}" --grid sinh --N 400 --dr-inner 0.0625
+  evolve sinh-M32 "${common[@]}" --grid sinh --N 800 --dr-inner 0.0625
+  for n in 64 128; do
+    for t in "${tapers[@]}"; do
+      # shellcheck disable=SC2086
+      evolve "boxes10-N$n-${t%%:*}" "${common[@]}" --grid boxes --levels 10 --N $n ${t#*:} &
+    done
+    wait
+  done
+  {
+    echo "== wormhole data, 10 boxes to 2048 M, N = 64 (M/16), max |M_AH - M|; ratio to the sinh grid"
+    windows "0-50 50-200 200-500 500-1000 0-1000" "$out/sinh-M16" "$out"/boxes10-N64-*/
+    echo "== the same at N = 128 (M/32)"
+    windows "0-50 50-200 200-500 500-1000 0-1000" "$out/sinh-M32" "$out"/boxes10-N128-*/
+  } | tee "$out/wormhole.txt"
+}
+
+published() {
+  grid=(--grid boxes --levels 8 --rmax 256 --tmax 100 --dt-series 0.5 --dt-profiles 10)
+  for t in "${tapers[@]}" "quarter:--box-taper 0.25 --box-taper-from 0"; do
+    # shellcheck disable=SC2086
+    family "published-${t%%:*}" 24,32,48 "${grid[@]}" ${t#*:}
+  done
+  {
+    echo "== wormhole data, 8 boxes to 256 M: RMS H_L2_R over 10-100 M, ratio to no taper"
+    $py plots/horizon_study.py table "$out/published-off" "$out"/published-*/ --t0 10 --t1 100
+    for n in 24 32 48; do
+      echo "== max |M_AH - M| at N = $n (the pulse returns from the box end at 32 M near 60 M)"
+      windows "0-50 50-60 60-70 70-100" "$out/published-off/N$n" \
+        "$out"/published-{quarter,half-all,half-from8,default}/N$n
+    done
+  } | tee "$out/published.txt"
+}
+
+shifted() {
+  grid=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 10
+        --id 1log-trumpet --rahA 0.5)
+  for h in 0.89 0.6; do
+    for t in "${tapers[@]}"; do
+      # shellcheck disable=SC2086
+      family "shifted-$h-${t%%:*}" 24,32,48 "${grid[@]}" --rah0 $h ${t#*:}
+    done
+  done
+  {
+    for h in 0.89 0.6; do
+      echo "== 1+log trumpet, rah0 $h, 7 boxes to 128 M: RMS H_L2_R over 10-100 M, ratio to no taper"
+      $py plots/horizon_study.py table "$out/shifted-$h-off" "$out"/shifted-$h-*/ --t0 10 --t1 100
+    done
+  } | tee "$out/shifted.txt"
+}
+
+trumpet() {
+  grid=(--grid boxes --levels 9 --rmax 1024 --id 1log-trumpet --tmax 1000 --dt-series 1
+        --dt-profiles 1000 --norm-Rmin 3)
+  for t in "${tapers[@]}"; do
+    # shellcheck disable=SC2086
+    family "trumpet-${t%%:*}" 48,64,96 "${grid[@]}" ${t#*:}
+  done
+  for w in "10 1000" "10 500" "500 1000"; do
+    set -- $w
+    echo "== 1+log trumpet on 9 boxes, RMS H_L2_R over t in [$1, $2] M, ratio to no taper"
+    $py plots/horizon_study.py table "$out/trumpet-off" "$out"/trumpet-*/ --t0 "$1" --t1 "$2"
+  done | tee "$out/trumpet.txt"
+}
+
+widths() {
+  common=(--tmax 1000 --dt-series 1 --dt-profiles 1000 --rmax 2048 --grid boxes --levels 10
+          --box-taper-from 0)
+  for nk in 64:6 64:12 64:24 64:32 128:6 128:12 128:24 128:32 128:48 128:64; do
+    n=${nk%:*} k=${nk#*:}
+    evolve "widths-N$n-k$k" "${common[@]}" --N "$n" --box-taper "$($py -c "print($k / $n)")" &
+    [ "$k" = 24 ] || [ "$k" = 48 ] && wait
+  done
+  wait
+  {
+    echo "== wormhole data, 10 boxes to 2048 M: taper of k cells on every box, max |M_AH - M|"
+    windows "0-1000" "$out/widths-N64-k6" "$out"/widths-N64-*/
+    windows "0-1000" "$out/widths-N128-k6" "$out"/widths-N128-*/
+  } | tee "$out/widths.txt"
+}
+
+case ${1:-wormhole} in
+wormhole) wormhole ;;
+published) published ;;
+shifted) shifted ;;
+trumpet) trumpet ;;
+widths) widths ;;
+all) wormhole; published; shifted; trumpet; widths ;;
+*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|all" >&2; exit 2 ;;
+esac
