@@ -2,9 +2,9 @@
 """Error against cost on three kinds of grid: uniform, sinh and nested boxes.
 
   boxes_cost.py --out DIR [--tmax 1000] [--rmax 1024] [--t0 10] [--bin build/gbssn1d]
-                [--kinds boxes,sinh,uniform] [--gauges standard,stretched]
+                [--kinds boxes,sinh,uniform] [--gauges standard,stretched] [--id 1log-trumpet]
 
-Runs the 1+log trumpet, standard gauge and stretched to h = 0.89 M (A = 0.5), on
+Runs the 1+log trumpet (or --id's data), standard gauge and stretched to h = 0.89 M (A = 0.5), on
   - boxes: 9 levels to rmax, finest spacing 4/N M (N = 32, 48, 64, 96: M/8 ... M/24);
   - sinh: the map with innermost cell M/16 at N = 400 (--dr-inner 0.0625), N = 200 ... 600
     (innermost M/8 ... M/24); N = 400 is the reference;
@@ -50,7 +50,7 @@ def run(args, kind, gauge, n):
     flags, _ = KINDS[kind]
     out = os.path.join(args.out, f'{kind}-{gauge}-N{n}')
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [args.bin, 'evolve', '--id', '1log-trumpet', '--rmax', str(args.rmax), '--N', str(n),
+    cmd = [args.bin, 'evolve', '--id', args.id, '--rmax', str(args.rmax), '--N', str(n),
            '--tmax', str(args.tmax), '--dt-series', '1', '--dt-profiles', str(args.tmax),
            '--out', out] + flags + GAUGES[gauge]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -90,12 +90,14 @@ def main():
     ap.add_argument('--bin', default='build/gbssn1d')
     ap.add_argument('--kinds', default='boxes,sinh,uniform')
     ap.add_argument('--gauges', default='standard,stretched')
+    ap.add_argument('--id', default='1log-trumpet',
+                    help='initial data: 1log-trumpet (default), wormhole or maximal-trumpet')
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     kinds = args.kinds.split(',')
     gauges = args.gauges.split(',')
     rows = []
-    print(f'# 1+log trumpet to {args.tmax:g} M, rmax {args.rmax:g} M; H = RMS of H_L2_R over '
+    print(f'# {args.id} data to {args.tmax:g} M, rmax {args.rmax:g} M; H = RMS of H_L2_R over '
           f't in [{args.t0:g}, {args.tmax:g}] M; cpu and wall in seconds, one run at a time')
     print('kind gauge N cpu_s wall_s H status')
     for gauge in gauges:
@@ -135,7 +137,7 @@ def main():
                           label=f'{kind}, {gauge}')
     ax.set_xlabel('CPU time (s)')
     ax.set_ylabel(f'RMS over t of H_L2_R (2.5 M <= R <= 12 M)')
-    ax.set_title(f'1+log trumpet to {args.tmax:g} M: error against cost')
+    ax.set_title(f'{args.id} data to {args.tmax:g} M: error against cost')
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, 'cost.png'))

@@ -73,8 +73,8 @@ std::vector<ParamSpec> evolution_specs() {
       {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
        "1+log without advection: d_t alpha = -2 alpha K"},
       {"cfl", &Params::cfl, "Numerics",
-       "dt = cfl * smallest spacing, in (0, 1]; default 0.5 on a single grid (measured: errors "
-       "unchanged from 0.25, unstable from 0.8), 0.25 on boxes (their time interpolation)"},
+       "dt = cfl * smallest spacing, in (0, 1] (measured: errors unchanged from 0.25 on every "
+       "grid, boxes included; unstable from 0.8)"},
       {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
       {"fd-order", &Params::fd_order, "Numerics",
        "order of the finite differences: 2 | 4 | 6 | 8 (derivatives, upwind advection, and "
@@ -193,7 +193,6 @@ const std::map<std::string, std::string>& default_rules() {
       {"ah-tmax", "none"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"cfl", "0.5 (boxes: 0.25)"},
       {"box-taper", "0.5 on boxes"}};
   return rules;
 }

@@ -24,7 +24,7 @@ EvolutionConfig mesh_config(const Params& p) {
     c.stepping.taper_min_extent = p.box_taper_from * p.M;
     c.stepping.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
   }
-  c.stepping.cfl = p.cfl.value();
+  c.stepping.cfl = p.cfl;
   return c;
 }
 

@@ -33,6 +33,15 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
           "a larger --N",
           num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
+  // Quadratic time interpolation loses its order at the default step (Sec. 11: six boxes,
+  // h = 2 M, orders 0.12, 1.03 at cfl 0.5 against 1.4 or more at 0.25)
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.time_interp == "quadratic"
+      && p.cfl > 0.25)
+    w.push_back(fmt::format(
+        "--time-interp quadratic with --cfl {}: its fine boundaries lose their order above cfl "
+        "0.25 (orders 0.1-1 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
+        "0.25, or the default rk-stages",
+        num(p.cfl)));
   // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
   // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
   // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at

@@ -41,11 +41,6 @@ void resolve_defaults(Params& p) {
   // M and rmax are validated afterwards: a bad M gives a non-finite eta
   if (!p.eta)
     p.eta = (shrinks_wormhole(p) ? 1.0 : 2.0) / p.M;
-  // docs/horizon-shift-study.md Sec. 11: on single grids every error measured is the same at
-  // cfl 0.25 ... 0.8 (spatial errors dominate) and runs became unstable from 0.8 (8th order)
-  // or 0.9; on boxes the time interpolation of fine boundaries makes the error depend on it
-  if (!p.cfl)
-    p.cfl = p.grid == "boxes" ? 0.25 : 0.5;
   // Sec. 6.6: relaxing the outer half of every box reaching beyond 16 M towards its parent
   // absorbs the wormhole's gauge pulse where the parent cannot carry it
   if (!p.box_taper)

@@ -117,9 +117,7 @@ void validate_evolution_numbers(const Params& p) {
   require_finite("--eta", eta);
   if (eta < 0.0)
     throw ParamError("--eta", num(eta), "must be >= 0");
-  if (!p.cfl)
-    throw std::logic_error("validate() before resolve_defaults()");
-  const double cfl = *p.cfl;
+  const double cfl = p.cfl;
   require_positive("--cfl", cfl);
   if (cfl < cfl_min)
     throw ParamError("--cfl", num(cfl),
@@ -255,7 +253,7 @@ void validate_grid_and_steps(const Params& p) {
                                  ah_tol_over_spacing_max, grid.min_spacing()));
   // The Gamma-driver's damping term limits the step independently of the spacing.
   const double dt = mesh::hierarchy_dt(layout, mesh_config(p).stepping); // the whole step
-  const double dt_finest = time_step(p.cfl.value(), grid);
+  const double dt_finest = time_step(p.cfl, grid);
   if (p.checkpoint_every > 0.0 && p.checkpoint_every < dt)
     throw ParamError("--checkpoint-every", num(p.checkpoint_every),
                      fmt::format("is shorter than the time step dt = {:.6g} (checkpoints are "
@@ -278,7 +276,7 @@ void validate_grid_and_steps(const Params& p) {
         fmt::format("would write {:.3g} profile blocks to --tmax = {} (at most {:.0e})",
                     p.tmax / p.dt_profiles, p.tmax, rows_max / 100.0));
   if (eta * dt_finest > eta_dt_max)
-    throw ParamError("--cfl", num(p.cfl.value()),
+    throw ParamError("--cfl", num(p.cfl),
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));

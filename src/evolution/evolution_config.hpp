@@ -49,8 +49,8 @@ struct EvolutionConfig {
   GridSpec grid;
   RefinementSettings refinement;
   /// How the levels step (RK4 at dt = cfl x their spacing; on boxes also the time interpolation
-  /// at fine boundaries, subcycling and the largest step). cfl 0.5 on a single grid, 0.25 on
-  /// boxes (params.cpp resolve_defaults; docs/horizon-shift-study.md Sec. 11).
+  /// at fine boundaries, subcycling and the largest step); cfl 0.5 (docs/horizon-shift-study.md
+  /// Sec. 11).
   mesh::StepperOptions stepping{.cfl = 0.5};
   InitialDataParams initial_data;
   RhsParams rhs;           ///< equations, gauge, dissipation, horizon shift

@@ -96,7 +96,7 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   b.grid = "boxes";
   b.N = 64;
   const EvolutionConfig cb = evolution_config(validated(b));
-  CHECK(cb.stepping.cfl == 0.25); // boxes: their time interpolation
+  CHECK(cb.stepping.cfl == 0.5); // boxes too (Sec. 11: their errors are those of cfl 0.25)
   CHECK(cb.stepping.time == mesh::TimeInterpolation::rk_stages);
   CHECK(cb.stepping.subcycling);
   CHECK(cb.stepping.dt_max == doctest::Approx(dt_max_of_damping(2.0))); // eta = 2/M, M = 1

@@ -36,6 +36,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 failed=0
 
 common=(--dt-series 0.3 --dt-profiles 1.7 --rah0 1.0) # wormhole data, as by default
+# (the boxes at cfl 0.25, their default until 2026-11-26, so that binaries from before and
+# after that compare; --new-args '--box-taper 0' gives the runs before the tapered buffer)
 declare -A cases=(
   [sinh-substage]="--N 120 --rahA 0.5"
   [sinh-step]="--N 120 --rahA 0.5 --ah-every step"
@@ -44,12 +46,12 @@ declare -A cases=(
   [sinh-plain]="--N 120"
   [uniform-fd6]="--grid uniform --rmax 40 --N 400 --fd-order 6 --rahA 0.5"
   [uniform-fd2-trumpet]="--grid uniform --rmax 40 --N 200 --fd-order 2 --id 1log-trumpet --rahA 0.5"
-  [boxes-rk]="--grid boxes --rmax 64 --N 48 --rahA 0.5"
-  [boxes-dense]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp dense"
-  [boxes-quadratic]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic"
-  [boxes-box-substage]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --rah-variant box-substage"
-  [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step"
-  [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet"
+  [boxes-rk]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --cfl 0.25"
+  [boxes-dense]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp dense --cfl 0.25"
+  [boxes-quadratic]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic --cfl 0.25"
+  [boxes-box-substage]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --rah-variant box-substage --cfl 0.25"
+  [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step --cfl 0.25"
+  [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet --cfl 0.25"
 )
 # A file as compared: config.toml without its first line (the version); a sweep's summary.dat
 # without its wall_s column and its status files without their wall time, and no member's
@@ -124,7 +126,7 @@ done
 # run to t = 3 with a checkpoint at t = 2, then resumed to a later tmax, on a single grid and on boxes
 for grid in sinh boxes; do
   extra=(--N 120 --rahA 0.5)
-  [ $grid = boxes ] && extra=(--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic)
+  [ $grid = boxes ] && extra=(--grid boxes --rmax 64 --N 48 --rahA 0.5 --time-interp quadratic --cfl 0.25)
   run_both "resumed-$grid" "${common[@]}" "${extra[@]}" --checkpoint-every 2 --tmax 3
   for side in old new; do
     exe=$old
