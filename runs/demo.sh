@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
 # The demonstration: installs what is missing (Debian packages), builds, runs a precollapsed
 # wormhole until it has become the stationary 1+log trumpet, evolves the trumpet itself at
-# three resolutions, and draws the figures into demo/. About a minute on 2 cores.
+# three resolutions, and draws the figures into demo/. After the build, about 10 s on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 echo "== set-up: Debian packages that are missing (apt-get), then a Release build in build/"
-echo "   (the first build takes about two minutes on 2 cores; later ones seconds)"
 bash .ci/install-deps
-bash .ci/build >/dev/null
+echo "== build: the first takes about 2 minutes on 2 idle cores (up to 7 on busy ones), later"
+echo "   ones seconds; cmake's progress below, and a line every 20 s while one file compiles"
+start=$SECONDS
+(while sleep 20; do echo "   ... building, $((SECONDS - start)) s"; done) &
+ticker=$!
+trap 'kill $ticker 2>/dev/null || true' EXIT
+bash .ci/build | grep --line-buffered -E '^\[ *[0-9]+%\]' | sed -u 's/^/   /'
+kill $ticker 2>/dev/null || true
+echo "   built in $((SECONDS - start)) s"
 echo "== built: $(build/gbssn1d --version 2>/dev/null || echo build/gbssn1d)"
 g=build/gbssn1d
 py=/usr/bin/python3
@@ -28,18 +35,19 @@ $py plots/compare_trumpet.py demo/wormhole/profiles.dat demo/trumpet-reference/p
   -o demo/alpha_vs_R.png
 
 echo "== stationary 1+log trumpet at three resolutions, t = 20 M"
-for n in 300 600 1200; do
-  $g evolve --id 1log-trumpet --grid uniform --N $n --rmax 40 --tmax 20 --dt-series 0.5 \
+# rmax 48: the outer boundary cannot reach the norm windows (areal radius <= 12 M) by 20 M
+for n in 360 720 1440; do
+  $g evolve --id 1log-trumpet --grid uniform --N $n --rmax 48 --tmax 20 --dt-series 0.5 \
     --dt-profiles 10 --norm-rmin 1 --norm-rmax 10 --out demo/trumpet-N$n
 done
-$py plots/plot_series.py demo/trumpet-N{300,600,1200}/timeseries.dat -y H_L2_ext --logy --ordered \
-  --label "N=300" --label "N=600" --label "N=1200" \
+$py plots/plot_series.py demo/trumpet-N{360,720,1440}/timeseries.dat -y H_L2_ext --logy --ordered \
+  --label "M/7.5" --label "M/15" --label "M/30" \
   --title "1+log trumpet: H on [1, 10] M at M/7.5, M/15, M/30" \
   -o demo/trumpet_H.png
-echo "== converge: the 1+log trumpet at N = 600, 900, 1200"
-$g converge --N 600,900,1200 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
-  --rmax 40 --tmax 20 --dt-series 0.5 --norm-rmin 1 --norm-rmax 10 2>/dev/null
-$py plots/constraint_orders.py demo/converge/N{600,900,1200}/timeseries.dat --times 5,10,20 \
+echo "== converge: the 1+log trumpet at N = 720, 1080, 1440 (M/15, M/22.5, M/30)"
+$g converge --N 720,1080,1440 -j 2 --out demo/converge --id 1log-trumpet --grid uniform \
+  --rmax 48 --tmax 20 --dt-series 0.5 --norm-rmin 1 --norm-rmax 10 2>/dev/null
+$py plots/constraint_orders.py demo/converge/N{720,1080,1440}/timeseries.dat --times 5,10,20 \
   --title "1+log trumpet: H on [1, 10] M, scaled at 4th order" -o demo/trumpet_orders.png
 
 echo "== sweep: horizon shift strength x target radius (1+log trumpet data, t = 40 M)"

@@ -138,8 +138,21 @@ std::vector<Spike> find_spikes(const std::vector<SweepAxis>& axes,
   return out;
 }
 
+namespace {
+
+/// A member that the sweep itself gave rahA = 0 (the unshifted reference of a sweep over rahA):
+/// its other horizon-shift flags are idle by design, not by a user's slip.
+bool swept_to_no_shift(const SweepMember& m) {
+  return std::any_of(m.values.begin(), m.values.end(), [](const auto& kv) {
+    const auto v = parse_decimal<double>(kv.second);
+    return kv.first == "rahA" && v && *v == 0.0;
+  });
+}
+
+} // namespace
+
 /// Each distinct `gbssn1d: warning:` line of the members' logs, once, with the members that
-/// gave it.
+/// gave it (but the idle horizon-shift flags of members the sweep set to rahA = 0).
 void report_warnings(const fs::path& dir, const std::vector<SweepMember>& members) {
   const std::string prefix = "gbssn1d: warning: ";
   std::vector<std::string> order;
@@ -151,6 +164,8 @@ void report_warnings(const fs::path& dir, const std::vector<SweepMember>& member
       if (line.rfind(prefix, 0) != 0)
         continue;
       const std::string text = line.substr(prefix.size());
+      if (swept_to_no_shift(m) && text.find("nothing with --rahA 0") != std::string::npos)
+        continue;
       if (!seen.insert(text).second)
         continue;
       auto& list = who[text];

@@ -109,3 +109,26 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   CHECK(c.horizon_search.every_steps == 0); // every RK substage
   CHECK_FALSE(c.horizon_search.prescribed); // closed loop
 }
+
+TEST_CASE("a run that will write hundreds of MB says so first, naming the flag that thins it") {
+  auto warned = [](Params p) {
+    int n = 0;
+    std::string text;
+    for (const auto& w : warnings(validated(p)))
+      if (w.find("MB into --out") != std::string::npos) {
+        ++n;
+        text = w;
+      }
+    return std::pair(n, text);
+  };
+  Params p;
+  p.N = 1600;
+  p.tmax = 2000.0; // 401 blocks of 1600 rows: about 250 MB (measured: 246 MB written)
+  const auto [n, text] = warned(p);
+  CHECK(n == 1);
+  CHECK(text.find("--dt-profiles") != std::string::npos);
+  CHECK(text.find("401 blocks of 1600 rows") != std::string::npos);
+  p.dt_profiles = 50.0; // 41 blocks: about 26 MB
+  CHECK(warned(p).first == 0);
+  CHECK(warned(Params{}).first == 0);
+}

@@ -5,6 +5,7 @@
 # set-up commands of the first block (the demo and this very test suite, each run by CI
 # itself) and the Slurm submission line (tests/cluster/slurm_sweep.sh submits the same --wrap
 # form to a real Slurm). GNU parallel lines run where parallel is installed (CI installs it).
+# A block whose run prints a warning fails unless one of its lines explains it ('# warns: ...').
 # Usage: run_examples.sh README BUILD_DIR SOURCE_DIR SCRATCH
 set -euo pipefail
 readme=$1 build=$2 source=$3 scratch=$4
@@ -36,6 +37,14 @@ for b in block*.sh; do
     echo "README example failed: $b"
     cat "$b"
     tail -20 "$b.log"
+    exit 1
+  fi
+  # a warning the README does not explain (a line of the block saying '# warns: ...') is a
+  # broken example too: a newcomer pasting it would not know what to make of it
+  if grep -q "warning" "$b.log" && ! grep -q "# warns:" "$b"; then
+    echo "README example warns without saying why: $b"
+    cat "$b"
+    grep "warning" "$b.log"
     exit 1
   fi
 done
