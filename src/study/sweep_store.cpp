@@ -251,6 +251,7 @@ std::optional<std::string> invalid_reason(const SweepMember& m) {
 void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMember*>& members,
                           const std::string& out) {
   std::vector<std::string> changed;
+  std::map<std::string, std::set<std::string>> ran_with; // key -> the values the members had
   for (const SweepMember* m : members) {
     const std::string before = earlier_inputs(dir, *m);
     if (before.empty())
@@ -258,16 +259,37 @@ void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMemb
     const auto diff = config_differences(before, m->inputs);
     if (!diff.empty())
       changed.push_back(fmt::format("{} ({})", m->name, fmt::join(diff, ", ")));
+    for (const auto& d : diff) // "key: old -> new"
+      if (const auto colon = d.find(": "), arrow = d.find(" -> ");
+          colon != std::string::npos && arrow != std::string::npos)
+        ran_with[d.substr(0, colon)].insert(d.substr(colon + 2, arrow - colon - 2));
   }
-  if (!changed.empty())
-    throw ParamError(
-        "--out", out,
-        fmt::format("holds members run with other inputs: {}; nothing was run or changed. "
-                    "Use another --out, or remove those members' folders and logs/ files to "
-                    "rerun them",
-                    fmt::join(changed.begin(),
-                              changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3), "; "))
-            + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
+  if (changed.empty())
+    return;
+  // The likelier slip is a flag left out of (or changed in) a rerun of the same sweep: name the
+  // flags the members ran with, where they agree, before the remedies that discard results.
+  std::vector<std::string> flags;
+  for (const auto& [key, values] : ran_with) {
+    if (values.size() != 1 || *values.begin() == "(unset)")
+      continue;
+    std::string value = *values.begin();
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+      value = value.substr(1, value.size() - 2);
+    flags.push_back(fmt::format("--{} {}", key, value));
+  }
+  const std::string same_sweep =
+      flags.empty() ? ""
+                    : fmt::format("If this is the same sweep, give the flags they ran with ({}); ",
+                                  fmt::join(flags, " "));
+  throw ParamError(
+      "--out", out,
+      fmt::format("holds members run with other inputs: {}; nothing was run or changed. {}to "
+                  "run other inputs, use another --out (or remove those members' folders and "
+                  "logs/ files to rerun them)",
+                  fmt::join(changed.begin(),
+                            changed.begin() + std::min<std::ptrdiff_t>(changed.size(), 3), "; "),
+                  same_sweep)
+          + (changed.size() > 3 ? fmt::format(" (and {} more)", changed.size() - 3) : ""));
 }
 
 std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members) {

@@ -676,9 +676,13 @@ TEST_CASE("sweep: a rerun with other inputs is refused, naming the member and th
   CHECK(changed.err.find("N=32 (tmax: 1 -> 2)") != std::string::npos);
   CHECK(changed.err.find("N=40 (tmax: 1 -> 2)") != std::string::npos);
   CHECK(snapshot() == before);
+  // the remedy that keeps the results comes first: the flags the members ran with
+  CHECK(changed.err.find("give the flags they ran with (--tmax 1)") != std::string::npos);
+  CHECK(changed.err.find("give the flags") < changed.err.find("remove those members"));
   const Result eta = run(sweep + "--tmax 1 --eta 1 --out " + dir.string());
   CHECK(eta.status == 2);
   CHECK(eta.err.find("eta: 2 -> 1") != std::string::npos);
+  CHECK(eta.err.find("(--eta 2)") != std::string::npos);
   CHECK(snapshot() == before);
   // the same inputs: the finished member is kept, the interrupted one runs again
   const Result same = run(sweep + "--tmax 1 --out " + dir.string());
