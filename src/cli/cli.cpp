@@ -99,7 +99,13 @@ void prepare_process(int argc, char** argv) {
 
 /// `evolve`: the evolve flags (config/config_file.cpp), --config and --print-config.
 void add_evolve(CLI::App& app, EvolveArgs& a) {
-  a.cmd = app.add_subcommand("evolve", "evolve one black hole and write ASCII output");
+  a.cmd = app.add_subcommand(
+      "evolve",
+      "evolve one black hole and write ASCII output.\nMost runs need only: --id (wormhole | "
+      "1log-trumpet | maximal-trumpet), --tmax, --out, --rahA A --rah0 h (move the horizon to "
+      "h), and for resolution --N (or --grid uniform|sinh|boxes with --N, --rmax). Example: "
+      "gbssn1d evolve --id 1log-trumpet --rahA 0.5 --rah0 1.2 --tmax 100 --out out/stretch\n"
+      "All flags, grouped:");
   add_options(*a.cmd, a.params);
   a.cmd->footer(
       "Lengths and times are in the units of --M (geometric units; with the default M = 1 "
@@ -164,7 +170,15 @@ void add_converge(CLI::App& app, ConvergeArgs& a) {
       "completed and converges; 1 a failed write; 2 invalid input (nothing run); 3 a member "
       "stopped (non-finite value, chi or alpha out of range, horizon finder failure); 4 "
       "completed, but does not converge (the verdict); 128 + n interrupted by signal n (rerun "
-      "the command to resume).");
+      "the command to resume).\nOutput in --out: N<n>/ (each member's evolve output: "
+      "config.toml, timeseries.dat, profiles.dat, horizon.dat); config.toml (the study); "
+      "convergence.dat (columns: t, each norm per member as <norm>_N<n> for H_L2_ext, "
+      "M_L2_ext, G_L2_ext, H_L2_R, M_L2_R, H_L2_int, then the pairwise orders p_<H|M|G|H_R|M_R|"
+      "H_int>_<n1>_<n2> and the --fields orders p3_<field>_<n1>_<n2>_<n3>; its header holds the "
+      "verdict and an order line per "
+      "quantity); scaled_H.dat (a block per --scaled-times, opened by '# t = <t>': columns r, "
+      "H_N<coarsest>, H_N<n>_scaled = H scaled by (n/coarsest)^--order, on the coarsest "
+      "member's r).");
 }
 
 /// `sweep`: its own flags; the rest are passed to every member.
@@ -196,8 +210,12 @@ void add_sweep(CLI::App& app, SweepArgs& a) {
       "finished, 1 if some have not run yet, else 3 if any blew up, failed or was invalid");
   a.cmd->allow_extras();
   a.cmd->footer(
-      "Every other flag is an evolve flag, common to all members.\nOUT/summary.dat: a row per "
-      "member: its values, status (ok, invalid, blew-up, failed, interrupted, missing; a rerun "
+      "Every other flag is an evolve flag, common to all members.\nOutput in --out: NAME/ "
+      "(each member's evolve output, NAME = its values, e.g. rahA=0.5_rah0=1.2), logs/ "
+      "(NAME.log, NAME.status, NAME.inputs), summary.dat (its path is printed at the end), "
+      "config.toml.\nOUT/summary.dat: a row per member, columns: the swept flags, status, flag, "
+      "t_end, r_ah_final, M_ah_drift, M_ah_err_max, H_L2_ext_max, H_L2_R_max, wall_s, reason; "
+      "its values, status (ok, invalid, blew-up, failed, interrupted, missing; a rerun "
       "of the sweep, or a requeued task line, runs the failed, interrupted and missing members "
       "again, from their checkpoints where they have one, and wall_s is a member's total), flag "
       "(spike: a finished member whose H_L2_R_max is more than 100 times the median of its "

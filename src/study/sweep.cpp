@@ -311,6 +311,8 @@ int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& 
     });
   }
   const auto statuses = write_summary(dir, options, axes, members);
+  say("gbssn1d sweep: summary: {} (a row per member; `gbssn1d sweep --help` names its columns)\n",
+      (dir / "summary.dat").string());
   if (const int signal = stop_signal(); signal != 0) {
     say("gbssn1d sweep: interrupted by {}; rerun the same command to finish\n",
         signal_name(signal));
@@ -338,7 +340,8 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     const fs::path dir(options.out);
     check_earlier_inputs(dir, all_of(members), options.out);
     const auto statuses = write_summary(dir, options, axes, members);
-    say("gbssn1d sweep: summary.dat collected from {} members (nothing was run)\n", members.size());
+    say("gbssn1d sweep: {} collected from {} members (nothing was run)\n",
+        (dir / "summary.dat").string(), members.size());
     return exit_status(statuses, members.size());
   }
   if (!options.emit_tasks.empty())

@@ -956,3 +956,26 @@ TEST_CASE("the resume hint is a command that works as pasted: the program as inv
   fs::remove(out.string() + ".err");
   fs::remove_all(out);
 }
+
+TEST_CASE("help pages say what a newcomer needs: evolve's few common flags first, each study's "
+          "output files and columns; a sweep says where its summary is") {
+  const Result evolve = run("evolve --help");
+  CHECK(evolve.status == 0);
+  const auto common = evolve.out.find("Most runs need only");
+  REQUIRE(common != std::string::npos);
+  CHECK(common < evolve.out.find("Options:")); // before the full list
+  const Result converge = run("converge --help");
+  for (const char* text : {"convergence.dat (columns", "scaled_H.dat", "N<n>/", "p3_<field>"})
+    CHECK(converge.out.find(text) != std::string::npos);
+  const Result sweep_help = run("sweep --help");
+  for (const char* text : {"summary.dat: a row per member, columns", "H_L2_R_max", "logs/"})
+    CHECK(sweep_help.out.find(text) != std::string::npos);
+  const fs::path dir = scratch("sweep_summary_path");
+  fs::remove_all(dir);
+  const Result sweep = run("sweep --progress-every 0 --sweep rahA=0.25,0.5 --id 1log-trumpet "
+                           "--grid uniform --N 64 --rmax 20 --tmax 1 --out "
+                           + dir.string());
+  CHECK(sweep.status == 0);
+  CHECK(sweep.err.find("summary: " + (dir / "summary.dat").string()) != std::string::npos);
+  fs::remove_all(dir);
+}
