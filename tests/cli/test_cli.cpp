@@ -979,3 +979,36 @@ TEST_CASE("help pages say what a newcomer needs: evolve's few common flags first
   CHECK(sweep.err.find("summary: " + (dir / "summary.dat").string()) != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("a resumed run's progress line counts its speed from the resume, not from t = 0") {
+  // The progress line shows only on a terminal: `script` gives the run one. Before the fix the
+  // speed was t / wall time since the resume, 3-20 times too high and its time left too short.
+  if (std::system("command -v script >/dev/null 2>&1") != 0) {
+    MESSAGE("script (util-linux) is not installed: skipped");
+    return;
+  }
+  const fs::path dir = scratch("progress_resume");
+  fs::remove_all(dir);
+  REQUIRE(run("evolve --id 1log-trumpet --N 400 --tmax 300 --checkpoint-every 150 --out "
+              + dir.string())
+              .status
+          == 0);
+  const fs::path log = scratch("progress_resume.log");
+  const std::string cmd = "script -qec '" + std::string(GBSSN1D_EXECUTABLE) + " resume "
+                          + dir.string() + " --tmax 600' /dev/null >" + log.string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string out = slurp(log);
+  fs::remove(log);
+  fs::remove_all(dir);
+  // "  t = 211.20 / 600 M   121.8 M/s   3 s left" ... "reached t = 600 in 3.68 s"
+  const auto first = out.find(" M/s");
+  const auto reached = out.find("reached t = 600 in ");
+  INFO(out);
+  REQUIRE(first != std::string::npos);
+  REQUIRE(reached != std::string::npos);
+  const double speed = std::stod(out.substr(out.rfind("M ", first) + 2, first));
+  const double wall = std::stod(out.substr(reached + 19));
+  const double true_speed = (600.0 - 150.0) / wall; // the checkpoint is at t = 150
+  CHECK(speed < 1.6 * true_speed); // from t = 0 it read 2.2 times this
+  CHECK(speed > 0.5 * true_speed);
+}
