@@ -136,7 +136,7 @@ def main():
                 ax.loglog([p[0] for p in pts], [p[1] for p in pts], ls, marker='o', color=color,
                           label=f'{kind}, {gauge}')
     ax.set_xlabel('CPU time (s)')
-    ax.set_ylabel(f'RMS over t of H_L2_R (2.5 M <= R <= 12 M)')
+    ax.set_ylabel('RMS over t of ||H||_2 over 2.5 M <= R <= 12 M (1/M^2)')
     ax.set_title(f'{args.id} data to {args.tmax:g} M: error against cost')
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -12,7 +12,8 @@ import argparse
 
 import numpy as np
 
-from gbssn1d_data import column, parse, read_text, style
+from gbssn1d_data import (column, header_params, parse, read_text, run_description, set_titles,
+                          style)
 
 
 def main():
@@ -22,11 +23,14 @@ def main():
     ap.add_argument('--time', type=float, help='time of the run to compare (default: last)')
     ap.add_argument('--rmin', type=float, default=0.05, help='ignore r below this (puncture)')
     ap.add_argument('-o', '--output', help='PNG of alpha(R) and the difference')
+    ap.add_argument('--title', help='default: the lapse at the time compared against the '
+                                    'trumpet; what was run is written below it')
     a = ap.parse_args()
     cols_t, blocks_t = parse(read_text(a.trumpet))
     Rt = column(cols_t, blocks_t[0][1], 'R_areal')
     at = column(cols_t, blocks_t[0][1], 'alpha')
-    cols, blocks = parse(read_text(a.run))
+    run_text = read_text(a.run)
+    cols, blocks = parse(run_text)
     times = np.array([t for t, _ in blocks])
     t, data = blocks[-1] if a.time is None else blocks[int(np.argmin(abs(times - a.time)))]
     r = column(cols, data, 'r')
@@ -51,12 +55,14 @@ def main():
         ax1.plot(R[keep][::8], alpha[keep][::8], 'o', ms=4, mfc='none', color='tab:blue',
                  label=f'evolution, t = {t:g} M (every 8th point)')
         ax1.plot(Rt, at, '-', color='tab:red', lw=1.2, zorder=3, label='stationary 1+log trumpet')
-        ax1.set_ylabel('alpha')
+        ax1.set_ylabel('lapse alpha')
         ax1.legend()
         ax2.semilogy(R[keep], abs(diff), '.', ms=3)
-        ax2.set_ylabel('|alpha - alpha_trumpet|')
+        ax2.set_ylabel('|alpha - alpha_trumpet| at equal R')
         ax2.set_xlabel('areal radius R / M')
         ax2.set_xscale('log')
+        title = a.title or f'lapse at t = {t:g} M against the stationary 1+log trumpet'
+        set_titles(fig, ax1, title, run_description([header_params(run_text)]))
         fig.tight_layout()
         fig.savefig(a.output)
 

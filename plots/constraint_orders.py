@@ -16,8 +16,8 @@ import math
 
 import numpy as np
 
-from gbssn1d_data import column, parse, read_text, sequential_colors, style
-from plot_horizons import header_params
+from gbssn1d_data import (axis_label, column, common_params, header_params, parse, read_text,
+                          run_description, sequential_colors, set_titles, style)
 
 
 def main():
@@ -27,13 +27,16 @@ def main():
     ap.add_argument('--times', default='5,10,20,30,50,75,100')
     ap.add_argument('--scale', type=float, default=4.0,
                     help='also draw each finer norm times (N/N_coarsest)^scale, dashed (0: off)')
-    ap.add_argument('--title', default='')
+    ap.add_argument('--title', default='',
+                    help='title; what was run (from the headers) is written below it, or is '
+                         'the title without one')
     ap.add_argument('-o', '--output')
     a = ap.parse_args()
-    runs = []
+    runs, params_list = [], []
     for path in a.files:
         text = read_text(path)
-        n = int(header_params(text)['N'])
+        params_list.append(header_params(text))
+        n = int(params_list[-1]['N'])
         columns, blocks = parse(text)
         data = blocks[0][1]
         runs.append((n, column(columns, data, 't'), column(columns, data, a.y)))
@@ -64,15 +67,18 @@ def main():
             line, = ax1.semilogy(t, e, color=colors[k], label=f'N = {n}')
             if a.scale and k > 0:
                 ax1.semilogy(t, e * (n / Ns[0]) ** a.scale, ls='--', color=line.get_color(),
-                             label=f'N = {n} x ({n}/{Ns[0]})^{a.scale:g}')
-        ax1.set_ylabel(a.y)
+                             label=f'N = {n}, times ({n}/{Ns[0]})^{a.scale:g}')
+        shared = common_params(params_list)
+        ax1.set_ylabel(axis_label(a.y, shared), fontsize=10)
         ax1.legend(fontsize=8)
-        ax1.set_title(a.title)
+        set_titles(fig, ax1, a.title, run_description(params_list))
         for k, o in enumerate(orders):
             ax2.plot(t, o, color=colors[k + 1], label=f'p({Ns[k]}, {Ns[k + 1]})')
-        ax2.axhline(4, color='k', ls=':', lw=1)
-        ax2.set_ylim(0, 6)
-        ax2.set_ylabel('order')
+        design = float(shared.get('fd-order', 4))
+        ax2.axhline(design, color='k', ls=':', lw=1,
+                    label=f"the scheme's order, {design:g}")
+        ax2.set_ylim(0, max(6, design + 2))
+        ax2.set_ylabel('convergence order p')
         ax2.set_xlabel('t / M')
         ax2.legend(fontsize=8)
         fig.tight_layout()

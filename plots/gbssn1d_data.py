@@ -1,7 +1,9 @@
 """Reading gbssn1d ASCII output: columns are chosen by the names in the header, never by
 position. A file's last '#' line before the data names the columns; in profiles.dat each block
 opens with a '# t = <value>' line and blocks are separated by blank lines."""
+import itertools
 import os
+import re
 import sys
 
 import numpy as np
@@ -138,29 +140,275 @@ def sequential_colors(n):
     return [cmap(x) for x in np.linspace(0.85, 0.0, n)] if n > 1 else [cmap(0.35)]
 
 
-UNITS = {'t': 't / M', 'r': 'r / M', 'R_areal': 'R / M', 'r_ah': 'r_AH / M', 'R_ah': 'R_AH / M',
-         'M_ah': 'M_AH / M', 'M_ah_err': '(M_AH - M) / M', 'rah0': 'h / M', 'r_ah_final': 'r_AH / M',
-         'M_ah_drift': 'M_AH drift / M', 'M_ah_err_max': 'max |M_AH - M| / M', 'rahA': 'A',
-         'R_ah_final': 'R_AH / M', 't_end': 't_end / M', 'rmax': 'rmax / M', 'M': 'M'}
+# What a column means, in words, with its unit: lengths and times in units of M (written
+# 'r / M': the number plotted is r over M), other quantities with their unit in brackets.
+# Norms and their windows are composed in describe(); a column not listed keeps its name.
+LABELS = {
+    # time series and horizon.dat
+    't': 't / M', 'alpha_center': 'lapse at the puncture, alpha(r = 0)',
+    'r_ah': 'apparent horizon radius r_AH / M', 'R_ah': 'areal horizon radius R_AH / M',
+    'M_ah': 'horizon mass M_AH / M', 'M_ah_err': 'horizon mass error (M_AH - M) / M',
+    'n_roots': 'number of zeros of Theta_+', 'level': 'box level (0: outermost)',
+    'r_root2': 'second zero of Theta_+, r / M', 'R_root2': 'second zero of Theta_+, R / M',
+    'r_root3': 'third zero of Theta_+, r / M', 'R_root3': 'third zero of Theta_+, R / M',
+    # profiles.dat
+    'r': 'coordinate radius r / M', 'R_areal': 'areal radius R / M', 'alpha': 'lapse alpha',
+    'beta': 'shift beta^r', 'beta_GD': 'Gamma-driver shift beta_GD',
+    'beta_H': 'horizon shift beta_H', 'B': 'Gamma-driver field B^r (1/M)',
+    'chi': 'conformal factor chi', 'a': 'conformal metric a', 'b': 'conformal metric b',
+    'K': 'mean curvature K (1/M)', 'A_a': 'traceless curvature A_a (1/M)',
+    'Delta_r': 'connection function Delta^r (1/M)',
+    'H': 'Hamiltonian constraint H (1/M^2)', 'M_r': 'momentum constraint M_r (1/M^2)',
+    'G_r': 'Gamma constraint G^r (1/M)', 'Theta_plus': 'outgoing expansion Theta_+ (1/M)',
+    # a sweep's summary.dat and parameters
+    'rahA': 'rahA (strength A)', 'rah0': 'rah0: target h / M', 'N': 'N (cells)',
+    'rmax': 'outer boundary rmax / M', 'M': 'mass M', 't_end': 'last time t_end / M',
+    'r_ah_final': 'final horizon radius r_AH / M',
+    'R_ah_final': 'final areal horizon radius R_AH / M',
+    'M_ah_drift': 'max |M_AH(t) - M_AH(0)| / M', 'M_ah_err_max': 'max |M_AH - M| / M',
+    'wall_s': 'wall-clock time (s)',
+}
+# columns that are never negative (on a log axis they need no |..|)
+NON_NEGATIVE = {'t', 'r', 'R_areal', 'r_ah', 'R_ah', 'M_ah', 'alpha', 'alpha_center', 'chi', 'a',
+                'b', 'n_roots', 'level', 'r_root2', 'R_root2', 'r_root3', 'R_root3', 'rahA',
+                'rah0', 'N', 'rmax', 'M', 't_end', 'r_ah_final', 'R_ah_final', 'M_ah_drift',
+                'M_ah_err_max', 'wall_s'}
+CONSTRAINTS = {'H': ('Hamiltonian constraint', '||H||_2', '1/M^2'),
+               'M': ('momentum constraint', '||M_r||_2', '1/M^2'),
+               'G': ('Gamma constraint', '||G^r||_2', '1/M')}
+_NORM = re.compile(r'([HMG])_L2(_ext|_R|_int)?(_max)?')
+
+
+def window(kind, params=None):
+    """Where a norm is taken, in words: kind 'ext' (a coordinate-radius window), 'R' (an
+    areal-radius window), 'int' (from the puncture out) or '' (the whole grid); with the bounds
+    when params (a run's header, header_params) records them."""
+    p = params or {}
+    if kind == 'ext':
+        return (f"{p['norm-rmin']} M ≤ r ≤ {p['norm-rmax']} M"
+                if 'norm-rmin' in p and 'norm-rmax' in p else 'the coordinate window')
+    if kind == 'R':
+        return (f"{p['norm-Rmin']} M ≤ R ≤ {p['norm-Rmax']} M"
+                if 'norm-Rmin' in p and 'norm-Rmax' in p else 'the areal window')
+    if kind == 'int':
+        return f"R ≤ {p['norm-Rint']} M" if 'norm-Rint' in p else 'the interior'
+    return 'the whole grid'
+
+
+def describe(name, params=None):
+    """(words, unit) of a column whose meaning is composed: the constraint norms (H_L2,
+    H_L2_ext, H_L2_R, H_L2_int, the same for M and G, and a summary's *_max) and d_t alpha;
+    None for any other column."""
+    m = _NORM.fullmatch(name)
+    if m:
+        _, symbol, unit = CONSTRAINTS[m[1]]
+        where = window({None: '', '_ext': 'ext', '_R': 'R', '_int': 'int'}[m[2]], params)
+        return f"{'max ' if m[3] else ''}{symbol} over {where}", unit
+    if name == 'dtalpha_max_ext':
+        return f"max |d_t alpha| over {window('ext', params)}", '1/M'
+    return None
+
+
+def axis_label(name, params=None):
+    """A column name as an axis label: its meaning in words with its unit (lengths and times
+    in M); norms name their window, with its bounds when params (a run's header) has them.
+    Unknown columns keep their name."""
+    composed = describe(name, params)
+    if composed:
+        return f'{composed[0]} ({composed[1]})'
+    return LABELS.get(name, name)
+
+
+def legend_name(name, params=None):
+    """A column's name for a legend entry: the words without the unit (a constraint norm also
+    says which constraint)."""
+    m = _NORM.fullmatch(name)
+    if m:
+        return f'{CONSTRAINTS[m[1]][0]} {CONSTRAINTS[m[1]][1]}'
+    composed = describe(name, params)
+    return composed[0] if composed else re.sub(r' \(.*\)$', '', LABELS.get(name, name))
+
+
+def log_axis_label(names, params=None):
+    """The y label of columns plotted as absolute values on a log axis: one column's label with
+    its symbol in |..| where the column can be negative ('Hamiltonian constraint |H| (1/M^2)'),
+    or for several columns what they have in common (their legend entries name them)."""
+    if len(names) > 1:
+        return several_label(names, params)
+    name = names[0]
+    label = axis_label(name, params)
+    if name in NON_NEGATIVE or describe(name):  # norms and maxima of |..| are >= 0
+        return label
+    if name == 'M_ah_err':
+        return 'horizon mass error |M_AH - M| / M'
+    body, unit = re.fullmatch(r'(.*?)( \(.+\))?', label).groups()
+    words, space, symbol = body.rpartition(' ')
+    return f"{words}{space}|{symbol}|{unit or ''}"
+
+
+def several_label(names, params=None):
+    """The y label of several columns in one figure (their legend entries name them): the
+    window and unit they share when they are norms over one window, else their labels."""
+    composed = [describe(n, params) for n in names]
+    if all(composed) and all(_NORM.fullmatch(n) for n in names):
+        wheres = {c[0].split(' over ', 1)[1] for c in composed}
+        units = {c[1] for c in composed}
+        if len(wheres) == 1 and len(units) == 1:
+            return f'L2 norm over {wheres.pop()} ({units.pop()})'
+    return ', '.join(axis_label(n, params) for n in names)
+
+
+_PARAM = re.compile(r'#?\s*([A-Za-z][\w.-]*)\s*=\s*(.*)$')
+
+
+def params_of(lines):
+    """{key: value} of 'key = value' lines (with or without a leading '#'), values as strings
+    without quotes; other lines are skipped."""
+    params = {}
+    for line in lines:
+        m = _PARAM.match(line)
+        if m and m[1] != 't':  # '# t = ...' opens a block of profiles.dat
+            params[m[1]] = m[2].strip().strip('"')
+    return params
+
+
+def header_params(text):
+    """The run's parameters from a file's header (its '# key = value' lines before the first
+    row): {'id': '1log-trumpet', 'N': '400', ...}."""
+    return params_of(itertools.takewhile(lambda line: line.startswith('#'), text.splitlines()))
+
+
+# parameters that follow from others or do not change the solution: never in a run's label
+NOT_LABELS = {'out', 'force', 'dt', 'steps', 'dr-min', 'checkpoint-every', 'dt-series',
+              'dt-profiles', 'tmax'}
+# the parameters a label names first, when they tell the runs apart
+FIRST_LABELS = ['id', 'lapse0', 'grid', 'levels', 'N', 'rmax', 'dr-inner', 'rahA', 'rah0']
+
+
+def label_keys(params_list):
+    """The fewest parameters that tell the runs apart, taken in the order of FIRST_LABELS
+    and then of the header: a parameter that follows from those already taken (the horizon
+    shift's width and profile from rahA and rah0) is left out. Empty when the runs do not
+    differ or have no headers."""
+    keys = [k for k in FIRST_LABELS if any(k in p for p in params_list)]
+    for p in params_list:
+        keys += [k for k in p if k not in keys and k not in NOT_LABELS]
+    chosen = []
+    for k in keys:
+        groups = {tuple(p.get(c) for c in chosen) for p in params_list}
+        split = {tuple(p.get(c) for c in chosen + [k]) for p in params_list}
+        if len(split) > len(groups):
+            chosen.append(k)
+        if len(split) == len(params_list):
+            break
+    return chosen
+
+
+def common_params(params_list):
+    """The parameters all runs share, e.g. the norm windows that name an axis."""
+    if not params_list:
+        return {}
+    return {k: v for k, v in params_list[0].items() if all(p.get(k) == v for p in params_list)}
+
+
+def shifted(params):
+    """Whether a run has the horizon-adjusting shift on (rahA != 0)."""
+    try:
+        return float(params.get('rahA', 0)) != 0
+    except ValueError:
+        return False
+
+
+def sort_key(value):
+    """Parameter values in numeric order (0, 0.25, 1, not the folders' 0.25, 0, 1), then words."""
+    try:
+        return (0, float(value), '')
+    except (TypeError, ValueError):
+        return (1, 0.0, str(value))
+
+
+def run_description(params_list):
+    """What was run, in words, from the parameters all runs share: the data, the grid and the
+    horizon shift, e.g. '1log-trumpet data; sinh grid, N = 400, rmax = 1000 M; horizon shift
+    rahA = 0.5, rah0 = 1.2 M'. Empty without headers."""
+    p = common_params(params_list)
+    if not p:
+        return ''
+    parts = []
+    if 'id' in p:
+        lapse = f" ({p['lapse0']} lapse)" if p['id'] == 'wormhole' and 'lapse0' in p else ''
+        parts.append(f"{p['id']} data{lapse}")
+    grid = []
+    if 'grid' in p:
+        grid.append(f"{p['levels']} nested boxes" if p['grid'] == 'boxes' and 'levels' in p
+                    else f"{p['grid']} grid")
+    if 'N' in p:
+        grid.append(f"N = {p['N']}" + (' per box' if p.get('grid') == 'boxes' else ''))
+    if 'rmax' in p:
+        grid.append(f"rmax = {p['rmax']} M")
+    if grid:
+        parts.append(', '.join(grid))
+    if 'rahA' in p and not shifted(p):
+        parts.append('no horizon shift')
+    elif 'rahA' in p:
+        parts.append(f"horizon shift rahA = {p['rahA']}"
+                     + (f", rah0 = {p['rah0']} M" if 'rah0' in p else ''))
+    elif 'rah0' in p and any(shifted(q) for q in params_list):
+        parts.append(f"horizon shift to rah0 = {p['rah0']} M")
+    return '; '.join(parts)
+
+
+def run_labels(paths, params_list, labels=None):
+    """Legend labels of runs plotted together: the given labels where there are; else the
+    values of the parameters that tell the runs apart (label_keys), e.g. 'rahA = 0.5, rah0 =
+    1.2'; a run alone by its horizon shift or its data; else (no headers, more than three
+    parameters, or runs that do not differ) by their folder names."""
+    keys = label_keys(params_list)
+    if len(paths) == 1 and params_list[0]:
+        p = params_list[0]
+        auto = [f"rahA = {p['rahA']}, rah0 = {p['rah0']}" if shifted(p) and 'rah0' in p
+                else f"{p['id']} data" if 'id' in p else run_label(paths[0])]
+    elif keys and len(keys) <= 3:
+        auto = [', '.join(f"{k} = {p.get(k, '?')}" for k in keys) for p in params_list]
+    else:
+        auto = [run_label(path) for path in paths]
+    labels = labels or []
+    return [labels[k] if k < len(labels) else auto[k] for k in range(len(paths))]
 
 
 def run_label(path):
-    """A file's legend label: its run's folder name, without the folders above it."""
+    """A file's folder name (its run's, without the folders above it), or 'stdin' for '-'."""
     if path == '-':
         return 'stdin'
     return os.path.basename(os.path.dirname(os.path.abspath(path))) or path
 
 
-def axis_label(name):
-    """A column name as an axis label, with its unit where it has one (lengths and times in M)."""
-    return UNITS.get(name, name)
+def wrap(description, width):
+    """A run description in lines of at most width characters, broken at its '; '."""
+    lines = []
+    for part in description.split('; '):
+        if lines and len(lines[-1]) + 2 + len(part) <= width:
+            lines[-1] += '; ' + part
+        else:
+            lines.append(part)
+    return '\n'.join(lines)
 
 
-def finish(fig, ax, xlabel, ylabel, title, output):
+def set_titles(fig, ax, title, description):
+    """A figure's title and, below it in smaller type, what was run (either may be empty)."""
+    description = wrap(description, int(12 * ax.get_position().width * fig.get_figwidth()))
+    if title and description:
+        fig.suptitle(title)
+        ax.set_title(description, fontsize=9)
+    else:
+        ax.set_title(title or description, fontsize=None if title else 10)
+
+
+def finish(fig, ax, xlabel, ylabel, title, output, description=''):
     """Labels, legend and layout shared by every figure; writes the PNG."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    ax.set_title(title)
+    set_titles(fig, ax, title, description)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(output)

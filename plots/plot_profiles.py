@@ -11,8 +11,10 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 import numpy as np
 
-from gbssn1d_data import (axis_label, column, finish, line_styles, parse, qualitative_colors,
-                          read_text, run_label, sequential_colors, style)
+from gbssn1d_data import (axis_label, column, finish, header_params, label_keys, legend_name,
+                          line_styles, log_axis_label, parse, qualitative_colors, read_text,
+                          run_description, run_labels, sequential_colors, several_label, sort_key,
+                          style)
 
 
 def main():
@@ -25,18 +27,31 @@ def main():
     ap.add_argument('--xmax', type=float)
     ap.add_argument('--logy', action='store_true')
     ap.add_argument('--logx', action='store_true')
-    ap.add_argument('--label', action='append', help='legend label per file')
-    ap.add_argument('--title', default='')
+    ap.add_argument('--label', action='append',
+                    help='legend label per file (default: the parameters that tell the runs '
+                         'apart, from the headers)')
+    ap.add_argument('--title', default='',
+                    help='title; what was run (from the headers) is written below it, or is '
+                         'the title without one')
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
     a = ap.parse_args()
+    texts = [read_text(path) for path in a.files]
+    params_list = [header_params(text) for text in texts]
+    labels = run_labels(a.files, params_list, a.label)
+    # the runs in the order of the parameters that tell them apart (N = 600, 900, 1200 rather
+    # than the folders' N1200, N600, N900), each with its label
+    keys = label_keys(params_list)
+    order = sorted(range(len(a.files)),
+                   key=lambda k: [sort_key(params_list[k].get(key)) for key in keys])
+    texts, params_list, labels = ([seq[k] for k in order] for seq in (texts, params_list, labels))
     style(plt)
     fig, ax = plt.subplots()
     # Curves are (file, column) series at several times: with one time, a colour per series;
     # with several, a sequential colour per time (darker is later) and a line style per series.
     n_series = len(a.files) * len(a.y)
     series = 0
-    for k, path in enumerate(a.files):
-        columns, blocks = parse(read_text(path))
+    for k, text in enumerate(texts):
+        columns, blocks = parse(text)
         times = np.array([t if t is not None else 0.0 for t, _ in blocks])
         wanted = [float(v) for v in a.times.split(',')] if a.times else sorted({times[0], times[-1]})
         if len(wanted) == 1:
@@ -45,7 +60,6 @@ def main():
         else:
             colors, styles = sequential_colors(len(wanted)), line_styles(n_series, 'runs x columns')
             series_colors = None
-        label = a.label[k] if a.label and k < len(a.label) else run_label(path)
         for i, tw in enumerate(wanted):
             t, data = blocks[int(np.argmin(abs(times - tw)))]
             x = column(columns, data, a.x)
@@ -57,15 +71,21 @@ def main():
             for j, y in enumerate(a.y):
                 v = column(columns, data, y)[keep]
                 s = series + j
+                # the legend names what tells the curves apart: the run, the column, the time
+                parts = ([labels[k]] if len(a.files) > 1 else []) + (
+                    [legend_name(y, params_list[k])] if len(a.y) > 1 else []) + [f't = {t:g} M']
                 ax.plot(x[keep], abs(v) if a.logy else v, ls=styles[s],
                         color=series_colors[s] if series_colors else colors[i],
-                        label=f'{label}: {y}, t = {t:g} M')
+                        label=', '.join(parts))
         series += len(a.y)
     if a.logy:
         ax.set_yscale('log')
+        ylabel = log_axis_label(a.y)
+    else:
+        ylabel = axis_label(a.y[0]) if len(a.y) == 1 else several_label(a.y)
     if a.logx:
         ax.set_xscale('log')
-    finish(fig, ax, axis_label(a.x), ', '.join(a.y), a.title, a.output)
+    finish(fig, ax, axis_label(a.x), ylabel, a.title, a.output, run_description(params_list))
 
 
 if __name__ == '__main__':

@@ -6,7 +6,10 @@ summary.dat) against t or another column, for one or several runs.
   gbssn1d ... ; cat RUN/timeseries.dat | plot_series.py - -y alpha_center -o lapse.png
   plot_series.py SWEEP/summary.dat -x rah0 -y M_ah_err_max --logy --points -o drift.png
 
-With --logy the absolute values are plotted (the axis says |y|).
+With --logy the absolute values are plotted (the axis says |y|). Axes name the columns in words
+with units; the title says what was run and the legend what tells the runs apart, both from
+the files' headers (--title and --label take precedence). For r_AH of a run with the horizon
+shift on, its target h (rah0) is drawn dotted.
 """
 import argparse
 import sys
@@ -17,8 +20,15 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-from gbssn1d_data import (axis_label, column, finish, line_styles, parse_table,
-                          qualitative_colors, read_text, run_label, sequential_colors, style)
+from gbssn1d_data import (axis_label, column, common_params, finish, header_params, legend_name,
+                          line_styles, log_axis_label, parse_table, qualitative_colors, read_text,
+                          run_description, run_labels, sequential_colors, several_label, shifted,
+                          style)
+
+
+def sweep_line(text):
+    """A sweep summary's '# sweep over ...' line (it has no run parameters), or ''."""
+    return next((l[2:] for l in text.splitlines() if l.startswith('# sweep over')), '')
 
 
 def main():
@@ -31,10 +41,18 @@ def main():
                     help='the files form a sequence (resolutions, times): colours from one '
                          'sequential colormap, darker for later files')
     ap.add_argument('--points', action='store_true', help='markers, no lines (tables of runs)')
-    ap.add_argument('--label', action='append', help='legend label per file')
-    ap.add_argument('--title', default='')
+    ap.add_argument('--label', action='append',
+                    help='legend label per file (default: the parameters that tell the runs '
+                         'apart, from the headers)')
+    ap.add_argument('--title', default='',
+                    help='title; what was run (from the headers) is written below it, or is '
+                         'the title without one')
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
     a = ap.parse_args()
+    texts = [read_text(path) for path in a.files]
+    params_list = [header_params(text) for text in texts]
+    shared = common_params(params_list)
+    labels = run_labels(a.files, params_list, a.label)
     style(plt)
     fig, ax = plt.subplots()
     # one file: a colour per column; several: a colour per file and a line style per column
@@ -46,23 +64,34 @@ def main():
                   else qualitative_colors(len(a.files), 'runs'))
         styles = line_styles(len(a.y), 'columns')
         column_colors = None
-    for k, path in enumerate(a.files):
-        columns, data = parse_table(read_text(path))
-        label = a.label[k] if a.label and k < len(a.label) else run_label(path)
+    targets = {}  # the horizon shift's target h: {h: colours of the runs aiming at it}
+    for k, (path, text, params) in enumerate(zip(a.files, texts, params_list)):
+        columns, data = parse_table(text)
         for j, y in enumerate(a.y):
             values = column(columns, data, y)
             if not np.isfinite(values).any():
                 sys.stderr.write(f'note: {path}: {y} has no finite value; nothing to draw\n')
             color = column_colors[j] if column_colors else colors[k]
+            if len(a.y) == 1:
+                label = labels[k]
+            else:
+                label = (f'{labels[k]}: ' if len(a.files) > 1 else '') + legend_name(y, params)
             ax.plot(column(columns, data, a.x), abs(values) if a.logy else values, color=color,
                     ls='none' if a.points else styles[j], marker='o' if a.points else None,
-                    label=f'{label}: {y}' if len(a.files) > 1 or len(a.y) > 1 else label)
+                    label=label)
+            if y == 'r_ah' and a.x == 't' and shifted(params) and 'rah0' in params:
+                targets.setdefault(float(params['rah0']), set()).add(color)
+    for h, run_colors in sorted(targets.items()):
+        ax.axhline(h, ls=':', lw=1.2, label=f'target h = {h:g} M',
+                   color='black' if len(a.files) == 1 else
+                   run_colors.pop() if len(run_colors) == 1 else 'dimgray')
     if a.logy:
         ax.set_yscale('log')
-    ylabel = ', '.join(axis_label(y) for y in a.y)
-    if a.logy and '|' not in ylabel:
-        ylabel = f'|{ylabel}|'
-    finish(fig, ax, axis_label(a.x), ylabel, a.title, a.output)
+        ylabel = log_axis_label(a.y, shared)
+    else:
+        ylabel = axis_label(a.y[0], shared) if len(a.y) == 1 else several_label(a.y, shared)
+    description = run_description(params_list) or sweep_line(texts[0])
+    finish(fig, ax, axis_label(a.x, shared), ylabel, a.title, a.output, description)
 
 
 if __name__ == '__main__':

@@ -1,24 +1,30 @@
 #!/usr/bin/env python3
 """The figure of a sweep over the horizon shift's strength A and target h: from the sweep's
 summary.dat, three maps over (A, h) with log colour scales and each value written in its cell:
-the final horizon's miss |r_AH / h - 1|, the largest |M_AH - M| / M, and the largest H_L2_R.
-Members that did not finish are crossed out and named by their status.
+the final horizon's miss |r_AH / h - 1|, the largest |M_AH - M| / M, and the largest H_L2_R
+(the L2 norm of the Hamiltonian constraint over the areal-radius window, whose bounds are read
+from the members' recorded parameters next to summary.dat). Members that did not finish are
+crossed out and named by their status.
 
   plot_sweep.py out/sweep/summary.dat -o sweep.png [-x rahA] [-y rah0]
 
 Any two swept columns may be the axes (-x, -y); a sweep over one flag gives curves instead.
 """
 import argparse
+import glob
 import math
+import os
 import sys
 
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.colors as mcolors
 import matplotlib.pyplot as plt
+import matplotlib.ticker as mticker
 import numpy as np
 
-from gbssn1d_data import axis_label, read_text, style
+from gbssn1d_data import (axis_label, header_params, params_of, read_text, run_description,
+                          style, window)
 
 
 def load(path):
@@ -35,6 +41,48 @@ def number(word):
         return float(word)
     except ValueError:
         return math.nan
+
+
+def member_params(summary):
+    """The recorded parameters of the sweep's members (OUT/logs/*.inputs, else the headers of
+    OUT/*/timeseries.dat), one dict per member; none for stdin."""
+    if summary == '-':
+        return []
+    out = os.path.dirname(os.path.abspath(summary))
+    inputs = sorted(glob.glob(os.path.join(out, 'logs', '*.inputs')))
+    if inputs:
+        return [params_of(read_text(path).splitlines()) for path in inputs]
+    return [header_params(read_text(path))
+            for path in sorted(glob.glob(os.path.join(out, '*', 'timeseries.dat')))]
+
+
+def log_ticks(vmin, vmax):
+    """Ticks for a log colour scale from vmin to vmax, spread out enough to be read: the
+    decades, then 3, 2, 5, ... times them, each at least a fifth of the scale's length from
+    the others (and labelled differently); the ends too where that gives fewer than three."""
+    span = math.log10(vmax / vmin)
+    ticks = []
+
+    def add(tick):
+        if (vmin * (1 - 1e-9) <= tick <= vmax * (1 + 1e-9)
+                and all(abs(math.log10(tick / other)) >= span / 5
+                        and f'{tick:.1e}' != f'{other:.1e}' for other in ticks)):
+            ticks.append(tick)
+    for mantissa in (1, 3, 2, 5, 4, 6, 7, 8, 9):
+        for exponent in range(math.floor(math.log10(vmin)), math.ceil(math.log10(vmax)) + 1):
+            add(mantissa * 10.0 ** exponent)
+    if len(ticks) < 3:
+        add(vmin)
+        add(vmax)
+    return sorted(ticks)
+
+
+def power_of_ten(value, _=None):
+    """2e-06 as 2x10^-6 (in mathtext)."""
+    mantissa, exponent = f'{value:.1e}'.split('e')
+    mantissa = f'{float(mantissa):g}'
+    power = f'10^{{{int(exponent)}}}'
+    return f'${power}$' if mantissa == '1' else rf'${mantissa}\times{power}$'
 
 
 def main():
@@ -54,26 +102,40 @@ def main():
     xs = sorted({number(r[col[a.x]]) for r in rows})
     ys = sorted({number(r[col[a.y]]) for r in rows})
     h_of = (lambda r: number(r[col['rah0']])) if 'rah0' in col else None
+
+    def unshifted(r):  # rahA = 0: the shift is off, its rah0 is no target
+        return 'rahA' in col and number(r[col['rahA']]) == 0
+
+    members = member_params(a.summary)
+    windows = {window('R', p) for p in members}
+    areal = windows.pop() if len(windows) == 1 else window('R')
+    # (panel title, colour bar label, value of a member's row, what the cell of a finished
+    # member says instead of a value, if anything)
     quantities = [
-        ('|r_AH / h - 1| at the end (A = 0: no target)',
+        ('horizon radius at the end:\nmiss of the target h', 'relative miss |r_AH / h - 1|',
          lambda r: (abs(number(r[col['r_ah_final']]) / h_of(r) - 1)
-                    if h_of and ('rahA' not in col or number(r[col['rahA']]) != 0) else math.nan)),
-        ('max |M_AH - M| / M', lambda r: number(r[col['M_ah_err_max']])),
-        ('max H_L2_R', lambda r: number(r[col['H_L2_R_max']])),
+                    if h_of and not unshifted(r) else math.nan),
+         lambda r: 'no target\n(A = 0)' if unshifted(r) else ''),
+        ('horizon mass M_AH:\nlargest error over the run', 'relative error max |M_AH - M| / M',
+         lambda r: number(r[col['M_ah_err_max']]), None),
+        (f'Hamiltonian constraint over {areal}:\nlargest L2 norm over the run',
+         'max ||H||_2 (1/M^2)', lambda r: number(r[col['H_L2_R_max']]), None),
     ]
     if not h_of:
         quantities = quantities[1:]
     style(plt)
     fig, axes = plt.subplots(1, len(quantities), figsize=(4.6 * len(quantities), 4.2),
                              squeeze=False)
-    for ax, (title, value) in zip(axes[0], quantities):
+    for ax, (title, bar_label, value, note) in zip(axes[0], quantities):
         grid = np.full((len(ys), len(xs)), np.nan)
         status = [[None] * len(xs) for _ in ys]
+        notes = [[''] * len(xs) for _ in ys]
         for r in rows:
             i, j = ys.index(number(r[col[a.y]])), xs.index(number(r[col[a.x]]))
             status[i][j] = r[col['status']]
             if r[col['status']] == 'ok':
                 grid[i, j] = value(r)
+                notes[i][j] = note(r) if note else ''
         finite = grid[np.isfinite(grid) & (grid > 0)]
         norm = (mcolors.LogNorm(vmin=finite.min(), vmax=max(finite.max(), finite.min() * 1.01))
                 if finite.size else None)
@@ -86,6 +148,9 @@ def main():
                 if status[i][j] != 'ok':
                     ax.text(j, i, f'x\n{status[i][j]}', ha='center', va='center', color='crimson',
                             fontsize=8)
+                elif notes[i][j]:
+                    ax.text(j, i, notes[i][j], ha='center', va='center', fontsize=8,
+                            color='dimgray')
                 elif np.isfinite(grid[i, j]):
                     ax.text(j, i, f'{grid[i, j]:.1e}', ha='center', va='center', fontsize=8,
                             color='white' if norm and grid[i, j] < math.sqrt(
@@ -97,9 +162,19 @@ def main():
         ax.set_title(title, fontsize=10)
         ax.grid(False)
         if norm:
-            fig.colorbar(image, ax=ax, shrink=0.85)
+            bar = fig.colorbar(image, ax=ax, shrink=0.85)
+            bar.set_ticks(log_ticks(norm.vmin, norm.vmax))
+            bar.ax.yaxis.set_major_formatter(mticker.FuncFormatter(power_of_ten))
+            bar.ax.yaxis.set_minor_formatter(mticker.NullFormatter())
+            bar.ax.tick_params(labelsize=9)
+            bar.set_label(bar_label, fontsize=9)
     header = [l for l in read_text(a.summary).splitlines() if l.startswith('# sweep over')]
-    fig.suptitle(header[0][2:] if header else a.summary, fontsize=10)
+    ran = run_description(members)
+    ends = {p.get('tmax') for p in members}
+    if ran and len(ends) == 1 and None not in ends:
+        ran += f'; to t = {ends.pop()} M'
+    fig.suptitle((header[0][2:] if header else a.summary) + (f'\n{ran}' if ran else ''),
+                 fontsize=10)
     fig.tight_layout()
     fig.savefig(a.output)
     bad = [r for r in rows if r[col['status']] != 'ok']
