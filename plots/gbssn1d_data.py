@@ -97,6 +97,17 @@ def series(path):
     return {c: data[:, i] for i, c in enumerate(columns)}
 
 
+def blocks(path):
+    """Every block of an output file with its time: a list of (t, table), where table is a numpy
+    structured array whose fields are the file's column names (table['r'], table['alpha'], ...).
+    profiles.dat has one block per output time, scaled_H.dat one per --scaled-times;
+    timeseries.dat and the other one-table files give one block with t = None. The loader the
+    README documents for numpy users (numpy.genfromtxt reads a file's blocks as one table)."""
+    columns, parsed = parse(read_text(path))
+    dtype = [(c, float) for c in columns]
+    return [(t, np.array([tuple(row) for row in data], dtype=dtype)) for t, data in parsed]
+
+
 def column(columns, data, name):
     if name not in columns:
         raise SystemExit(f"no column '{name}'; columns are: {' '.join(columns)}")

@@ -106,4 +106,16 @@ new_cols, new_blocks = parse('\n'.join(text))
 old_cols, old_blocks = parse('\n'.join(legacy))
 assert new_cols == old_cols and np.array_equal(new_blocks[0][1], old_blocks[0][1])
 print(f"numpy.genfromtxt(names=True) reads {len(files)} kinds of output file")
+# the README's loader keeps each block's time: profiles.dat at t = 0, 1, 2 (--dt-profiles 1,
+# --tmax 2 above) and scaled_H.dat at the study's tmax, each table with the file's names
+from gbssn1d_data import blocks
+prof = blocks(f"{d}/run/profiles.dat")
+assert [t for t, _ in prof] == [0.0, 1.0, 2.0], [t for t, _ in prof]
+assert all(p.dtype.names[0] == 'r' and 'alpha' in p.dtype.names for _, p in prof)
+assert np.array_equal(np.concatenate([p['alpha'] for _, p in prof]),
+                      np.genfromtxt(f"{d}/run/profiles.dat", names=True)['alpha'])
+scaled = blocks(f"{d}/loaders_converge/scaled_H.dat")
+assert [t for t, _ in scaled] == [1.0] and 'H_N40' in scaled[0][1].dtype.names, scaled[0][1].dtype
+assert blocks(f"{d}/run/timeseries.dat")[0][0] is None
+print("blocks() gives each block of profiles.dat and scaled_H.dat with its time")
 PY
