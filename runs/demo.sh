@@ -6,13 +6,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 echo "== set-up: Debian packages that are missing (apt-get), then a Release build in build/"
 bash .ci/install-deps
-echo "== build: the first takes about 2 minutes on 2 idle cores (up to 7 on busy ones), later"
-echo "   ones seconds; cmake's progress below, and a line every 20 s while one file compiles"
+echo "== build of the program: the first takes about a minute on 2 idle cores (2-3 on busy"
+echo "   ones), later ones seconds; cmake's progress below, and a line every 20 s while it works"
 start=$SECONDS
 (while sleep 20; do echo "   ... building, $((SECONDS - start)) s"; done) &
 ticker=$!
 trap 'kill $ticker 2>/dev/null || true' EXIT
-bash .ci/build | grep --line-buffered -E '^\[ *[0-9]+%\]' | sed -u 's/^/   /'
+bash .ci/build gbssn1d | grep --line-buffered -E '^\[ *[0-9]+%\]' | sed -u 's/^/   /'
 kill $ticker 2>/dev/null || true
 echo "   built in $((SECONDS - start)) s"
 echo "== built: $(build/gbssn1d --version 2>/dev/null || echo build/gbssn1d)"

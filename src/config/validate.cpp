@@ -21,33 +21,8 @@ namespace gbssn1d {
 
 namespace {
 
-/// The grid's flags: N, M, rmax, the kind of grid, its boxes and the differencing order, and
-/// the initial data.
-void validate_grid_flags(const Params& p) {
-  if (p.N <= 0)
-    throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
-  if (p.N < 16)
-    throw ParamError("--N", std::to_string(p.N), "must be at least 16 cells");
-  if (p.N > N_max)
-    throw ParamError("--N", std::to_string(p.N),
-                     fmt::format("needs about {:.0f} GB of memory; at most {} cells are accepted",
-                                 8.0 * 9 * 6 * p.N / 1e9, N_max));
-  require_positive("--M", p.M);
-  require_positive("--rmax", p.rmax);
-  // Everything scales with M; an outer boundary beyond 1e6 M only overflows the grid's map.
-  if (p.rmax > rmax_over_M_max * p.M) {
-    if (p.M < 1e-3 || p.M > 1e3)
-      throw ParamError("--M", num(p.M),
-                       fmt::format("gives --rmax / M = {:.3g}, above {:.0e}: lengths are in units "
-                                   "of M, so keep M of order 1",
-                                   p.rmax / p.M, rmax_over_M_max));
-    throw ParamError(
-        "--rmax", num(p.rmax),
-        fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
-  }
-  if (p.grid != "uniform" && p.grid != "sinh" && p.grid != "boxes")
-    throw ParamError("--grid", p.grid, "must be 'uniform', 'sinh' or 'boxes'");
-  (void)choice("--time-interp", p.time_interp, time_interp_choices);
+/// The refinement flags: refused on a single grid (they would mean nothing), checked on boxes.
+void validate_refinement_flags(const Params& p) {
   if (p.grid != "boxes") {
     // the refinement flags mean nothing on a single grid: refused rather than ignored
     if (p.levels)
@@ -77,6 +52,36 @@ void validate_grid_flags(const Params& p) {
                        "must be even with --grid boxes: each coarse cell holds two fine cells, "
                        "so that a fine box's edge is a coarse cell's face");
   }
+}
+
+/// The grid's flags: N, M, rmax, the kind of grid, its boxes and the differencing order, and
+/// the initial data.
+void validate_grid_flags(const Params& p) {
+  if (p.N <= 0)
+    throw ParamError("--N", std::to_string(p.N), "must be a positive integer");
+  if (p.N < 16)
+    throw ParamError("--N", std::to_string(p.N), "must be at least 16 cells");
+  if (p.N > N_max)
+    throw ParamError("--N", std::to_string(p.N),
+                     fmt::format("needs about {:.0f} GB of memory; at most {} cells are accepted",
+                                 8.0 * 9 * 6 * p.N / 1e9, N_max));
+  require_positive("--M", p.M);
+  require_positive("--rmax", p.rmax);
+  // Everything scales with M; an outer boundary beyond 1e6 M only overflows the grid's map.
+  if (p.rmax > rmax_over_M_max * p.M) {
+    if (p.M < 1e-3 || p.M > 1e3)
+      throw ParamError("--M", num(p.M),
+                       fmt::format("gives --rmax / M = {:.3g}, above {:.0e}: lengths are in units "
+                                   "of M, so keep M of order 1",
+                                   p.rmax / p.M, rmax_over_M_max));
+    throw ParamError(
+        "--rmax", num(p.rmax),
+        fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
+  }
+  if (p.grid != "uniform" && p.grid != "sinh" && p.grid != "boxes")
+    throw ParamError("--grid", p.grid, "must be 'uniform', 'sinh' or 'boxes'");
+  (void)choice("--time-interp", p.time_interp, time_interp_choices);
+  validate_refinement_flags(p);
   if (!fd::valid_order(p.fd_order))
     throw ParamError("--fd-order", std::to_string(p.fd_order), "must be 2, 4, 6 or 8");
   if (p.grid == "boxes" && p.levels && *p.levels > 1 && !mesh::boxes_order(p.fd_order))
