@@ -121,6 +121,24 @@ int main(int argc, char** argv) {
     const double rate = static_cast<double>(evals) * n / elapsed;
     fmt::print("{} {} {} {:.3f} {:.4e} {:.2f}\n", order, n, evals, elapsed, rate, 1e9 / rate);
   }
+  // The upwind pairs (--upwind), plain and with the horizon shift, on the largest size.
+  fmt::print("# --upwind: N = {}\n", sizes.back());
+  fmt::print("# upwind shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+  for (const bool horizon_shift : {false, true})
+    for (const char* upwind : {"lopsided", "biased"}) {
+      const int n = sizes.back();
+      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+      p.dr_inner = 0.01;
+      p.tmax = 0.0;
+      p.upwind = upwind;
+      resolve_defaults(p);
+      validate(p);
+      Simulation sim(evolution_config(p));
+      const auto [evals, elapsed] = time_rhs(sim, seconds);
+      const double rate = static_cast<double>(evals) * n / elapsed;
+      fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", upwind, horizon_shift ? "horizon" : "plain",
+                 n, evals, elapsed, rate, 1e9 / rate);
+    }
   // Nested boxes: whole runs of the hierarchy to 100 M (every level, subcycled, with
   // prolongation, restriction, stage-value time interpolation, the horizon searches and the
   // output-free diagnostics), counted as cells x RHS evaluations of all levels.

@@ -3,13 +3,64 @@
 # Sec. 7.4): uniform grid, rmax 128 M, to 100 M, standard gauge; one switch at a time against
 # the defaults, then the resolution near the puncture alone (sinh grids). About 20 s.
 #
-#   bash runs/error-constant.sh
+#   bash runs/error-constant.sh          the table of switches (about 20 s)
+#   bash runs/error-constant.sh upwind   --upwind lopsided against biased at M/8 ... M/32 on
+#                                        wormhole and trumpet data, and a stretch and a shrink
+#                                        (about 4 minutes; out/error-constant-upwind/)
 #
 # Output under out/error-constant/, the table on stdout and in out/error-constant/table.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
+if [ "${1:-}" = upwind ]; then
+  out=out/error-constant-upwind
+  rm -rf "$out" && mkdir -p "$out"
+  jobs=()
+  queue() { # queue NAME FLAGS...: two at a time
+    local name=$1
+    shift
+    build/gbssn1d evolve --tmax 100 --dt-series 1 --dt-profiles 100 "$@" --out "$out/$name" \
+      >"$out/$name.log" 2>&1 &
+    jobs+=($!)
+    [ ${#jobs[@]} -lt 2 ] || { wait "${jobs[0]}" || true; jobs=("${jobs[@]:1}"); }
+  }
+  for up in lopsided biased; do
+    for N in 1024 1536 2048 4096; do # M/8, M/12, M/16, M/32 on rmax 128 M
+      queue "wormhole-$up-$N" --grid uniform --rmax 128 --N $N --upwind $up
+      queue "trumpet-$up-$N" --id 1log-trumpet --grid uniform --rmax 128 --N $N --upwind $up
+    done
+    for N in 1600 2400 3200; do # M/8, M/12, M/16 on rmax 200 M (Sec. 8's grids)
+      for h in 1.2 0.6; do
+        queue "shift$h-$up-$N" --id 1log-trumpet --grid uniform --rmax 200 --N $N --rahA 0.5 \
+          --rah0 $h --upwind $up
+      done
+    done
+  done
+  wait
+  $py - "$out" <<'PY' | tee "$out/table.txt"
+import os, sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import series
+out = sys.argv[1]
+print("RMS H_L2_R over 10-100 M and M_AH - M at 100 M: --upwind lopsided | biased (ratio b/l)")
+for case, ns in (('wormhole', (1024, 1536, 2048, 4096)), ('trumpet', (1024, 1536, 2048, 4096)),
+                 ('shift1.2', (1600, 2400, 3200)), ('shift0.6', (1600, 2400, 3200))):
+    for n in ns:
+        row = []
+        for up in ('lopsided', 'biased'):
+            s = series(os.path.join(out, f'{case}-{up}-{n}', 'timeseries.dat'))
+            t = s['t']
+            h = np.sqrt(np.mean(s['H_L2_R'][t >= 10] ** 2))
+            row.append((h, s['M_ah_err'][np.argmin(abs(t - 100))], t[-1]))
+        (hl, ml, tl), (hb, mb, tb) = row
+        stop = '' if min(tl, tb) >= 100 else f'  (stopped at {tl:g}, {tb:g})'
+        print(f"{case:9s} N={n:5d}  H {hl:.2e} | {hb:.2e} ({hb / hl:5.2f})   "
+              f"M_AH-M {ml:+.2e} | {mb:+.2e}{stop}")
+PY
+  exit 0
+fi
 out=out/error-constant
 rm -rf "$out" && mkdir -p "$out"
 common=(--tmax 100 --dt-series 1 --dt-profiles 100 --rmax 128)
@@ -34,6 +85,8 @@ run advective-shift "${uniform[@]}" --advective-shift
 run non-advective-lapse "${uniform[@]}" --non-advective-lapse
 run delta-advection-centred "${uniform[@]}" --delta-advection centred
 run fd-order-6 "${uniform[@]}" --fd-order 6
+run upwind-biased "${uniform[@]}" --upwind biased
+run M32-upwind-biased --grid uniform --N 4096 --upwind biased
 # the spacing near the puncture and the horizon alone: sinh grids, rmax 128 M
 run sinh-0.053 --grid sinh --N 300 --dr-inner 0.04
 run sinh-0.080 --grid sinh --N 200 --dr-inner 0.04

@@ -79,6 +79,11 @@ std::vector<ParamSpec> evolution_specs() {
       {"fd-order", &Params::fd_order, "Numerics",
        "order of the finite differences: 2 | 4 | 6 | 8 (derivatives, upwind advection, and "
        "dissipation of the (order+2)-th difference; boxes: 2 | 4 | 6)"},
+      {"upwind", &Params::upwind, "Numerics",
+       "stencil of every advection term beta d_r f: lopsided (order fd-order, as moving-puncture "
+       "codes) | biased (order fd-order + 1, one point more upwind than downwind: at 4th order "
+       "2-7 times lower errors from M/12 (horizon mass, H), but up to 7 times higher on a "
+       "trumpet at M/8 and 1.5 times on a shrink to 0.6 M; docs/horizon-shift-study.md Sec. 7.4)"},
       {"chi-floor", &Params::chi_floor, "Numerics",
        "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
        "cross chi = 0 at the innermost cell during the lapse collapse"},

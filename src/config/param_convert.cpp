@@ -90,6 +90,7 @@ RhsParams rhs_params(const Params& p) {
   resolve_automatic_profile(r.horizon_shift, p.M);
   r.advection.driver = choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
+  r.upwind = choice("--upwind", p.upwind, upwind_choices);
   r.horizon_shift.variant = choice("--rah-variant", p.rah_variant, variant_choices);
   return r;
 }

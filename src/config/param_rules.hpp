@@ -61,6 +61,8 @@ inline const Choices<mesh::TimeInterpolation> time_interp_choices{
     {"rk-stages", mesh::TimeInterpolation::rk_stages},
     {"dense", mesh::TimeInterpolation::dense_output},
     {"quadratic", mesh::TimeInterpolation::quadratic}};
+inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
+                                                {"biased", fd::Upwind::biased}};
 inline const Choices<AdvectionStencil> stencil_choices{
     {"upwind-gd", AdvectionStencil::upwind_gd},
     {"upwind-full", AdvectionStencil::upwind_full},

@@ -55,6 +55,7 @@ struct Params {
   double cfl = evolution_defaults().stepping.cfl;
   double ko_sigma = evolution_defaults().rhs.ko_sigma;
   int fd_order = evolution_defaults().grid.fd_order; ///< 2 | 4 | 6 | 8
+  std::string upwind = "lopsided";                   ///< lopsided | biased (fd::Upwind)
   /// chi is raised to at least this after every RK4 step (0: off)
   double chi_floor = evolution_defaults().chi_floor;
   // time

@@ -194,6 +194,7 @@ void validate_horizon_shift(const Params& p) {
     throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
   (void)choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   (void)choice("--delta-advection", p.delta_advection, stencil_choices);
+  (void)choice("--upwind", p.upwind, upwind_choices);
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");

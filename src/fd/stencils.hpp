@@ -159,20 +159,21 @@ constexpr std::array<Rational, n> difference_weights() {
   return w;
 }
 
-/// lopsided_plus + sign x lopsided_minus of order p on the wide stencil -radius ... radius,
-/// exact (lopsided_plus on -(p/2 - 1) ... p/2 + 1; lopsided_minus(x) = -plus(-x)). Each weight
-/// is computed in one expression: the accumulating form (w[i] = w[i] + ...) gave 0/0 weights
-/// under GCC 12's constant evaluation when Order<p> was instantiated (observed; the cause in
-/// the compiler was not isolated; the tests check every weight against the classic tables).
-template <int p>
-constexpr std::array<Rational, p + 3> combine(int sign) {
-  constexpr int radius = p / 2 + 1, first = -(p / 2 - 1), n_plus = p + 1;
+/// plus + sign x minus on the wide stencil -radius ... radius, exact, for a first-derivative
+/// stencil `plus` on n_plus points from `first` and its mirror image minus(x) = -plus(-x). Each
+/// weight is computed in one expression: the accumulating form (w[i] = w[i] + ...) gave 0/0
+/// weights under GCC 12's constant evaluation when Order<p> was instantiated (observed; the
+/// cause in the compiler was not isolated; the tests check every weight against the classic
+/// tables).
+template <std::size_t n_plus, int first, int radius>
+constexpr std::array<Rational, 2 * radius + 1> combine(int sign) {
   const std::array<Rational, n_plus> plus = fornberg<n_plus>(1, first);
   auto plus_at = [&plus](int x) {
-    return x >= first && x < first + n_plus ? plus[static_cast<std::size_t>(x - first)]
-                                            : Rational(0);
+    return x >= first && x < first + static_cast<int>(n_plus)
+               ? plus[static_cast<std::size_t>(x - first)]
+               : Rational(0);
   };
-  std::array<Rational, p + 3> w{};
+  std::array<Rational, 2 * radius + 1> w{};
   for (int x = -radius; x <= radius; ++x)
     w[static_cast<std::size_t>(x + radius)] = plus_at(x) - Rational(sign) * plus_at(-x);
   return w;
@@ -190,15 +191,29 @@ constexpr bool proportional(const std::array<Rational, n>& a, const std::array<R
 
 } // namespace detail
 
+/// The stencil of the upwind first derivative in the advection terms beta d_r f (`--upwind`);
+/// both lean towards where the flow comes from and reach p/2 + 1 points on that side.
+enum class Upwind {
+  /// order p on -(p/2 - 1) ... p/2 + 1 (p + 1 points): the moving-puncture codes' lopsided
+  /// stencil, e.g. (-3, -10, 18, -6, 1)/12 at 4th order
+  lopsided,
+  /// order p + 1 on -p/2 ... p/2 + 1 (p + 2 points): the upwind-biased stencil, e.g.
+  /// (3, -30, -20, 60, -15, 2)/60 at 4th order; the centred derivative of order p + 2 plus a
+  /// (p+2)-th difference that is 2.5 times weaker than the lopsided one's at 4th order
+  biased,
+};
+
 /// The stencils of one order p (p = 2, 4, 6, 8), all times the power of dx of their derivative:
 ///  - d1, d2: centred first and second derivatives on -p/2 ... p/2;
-///  - lopsided_plus: first derivative on -(p/2 - 1) ... p/2 + 1, leaning towards +x;
-///    lopsided_minus, its mirror image;
+///  - lopsided_plus: first derivative of order p on -(p/2 - 1) ... p/2 + 1, leaning towards +x;
+///    lopsided_minus, its mirror image; biased_plus and biased_minus, of order p + 1 on
+///    -p/2 ... p/2 + 1 and its mirror image (Upwind);
 ///  - difference: the (p+2)-th difference on -(p/2 + 1) ... p/2 + 1 with end weights +1 (the
 ///    Kreiss-Oliger operator's stencil), which annihilates polynomials of degree <= p + 1;
-///  - lopsided_sum: lopsided_plus + lopsided_minus. Their difference is a symmetric stencil
-///    that annihilates degree <= p, i.e. `upwind_ratio` times `difference` (checked here at
-///    compile time), so each upwind derivative is (lopsided_sum +/- upwind_ratio difference) / 2.
+///  - upwind_sum<u>: plus + minus of the upwind pair u. Their difference is a symmetric stencil
+///    that annihilates degree <= p, i.e. `upwind_ratio<u>` times `difference` (checked here at
+///    compile time), so each upwind derivative is (upwind_sum +/- upwind_ratio difference) / 2.
+///    The biased pair's sum is twice the centred derivative of order p + 2 (also checked).
 template <int p>
 struct Order {
   static_assert(valid_order(p), "finite-difference orders are 2, 4, 6 and 8");
@@ -210,12 +225,24 @@ struct Order {
   static constexpr auto d1_exact = fornberg<n_centred>(1, -half);
   static constexpr auto d2_exact = fornberg<n_centred>(2, -half);
   static constexpr auto plus_exact = fornberg<n_centred>(1, -(half - 1));
+  static constexpr auto biased_plus_exact = fornberg<n_centred + 1>(1, -half);
   static constexpr auto difference_exact = detail::difference_weights<n_wide>();
-  static constexpr auto sum_exact = detail::combine<p>(+1);
-  static constexpr auto plus_minus_minus = detail::combine<p>(-1);
-  /// lopsided_plus - lopsided_minus is a multiple of the difference (asserted below)
+  static constexpr auto sum_exact = detail::combine<n_centred, -(half - 1), radius>(+1);
+  static constexpr auto plus_minus_minus = detail::combine<n_centred, -(half - 1), radius>(-1);
+  static constexpr auto biased_sum_exact = detail::combine<n_centred + 1, -half, radius>(+1);
+  static constexpr auto biased_plus_minus_minus = detail::combine<n_centred + 1, -half, radius>(-1);
+  /// each upwind pair's plus - minus is a multiple of the difference (asserted below)
   static constexpr bool upwind_is_difference() {
-    return detail::proportional(plus_minus_minus, difference_exact);
+    return detail::proportional(plus_minus_minus, difference_exact)
+           && detail::proportional(biased_plus_minus_minus, difference_exact);
+  }
+  /// the biased pair's half sum is the centred first derivative of order p + 2
+  static constexpr bool biased_sum_is_centred() {
+    const auto centred = fornberg<n_wide>(1, -radius);
+    for (std::size_t k = 0; k < n_wide; ++k)
+      if (!(biased_sum_exact[k] == Rational(2) * centred[k]))
+        return false;
+    return true;
   }
 
   static constexpr Stencil<n_centred> d1 = Stencil<n_centred>::from(d1_exact, -half);
@@ -224,12 +251,30 @@ struct Order {
       Stencil<n_centred>::from(plus_exact, -(half - 1));
   static constexpr Stencil<n_centred> lopsided_minus =
       Stencil<n_centred>::from(fornberg<n_centred>(1, -(half + 1)), -(half + 1));
+  static constexpr Stencil<n_centred + 1> biased_plus =
+      Stencil<n_centred + 1>::from(biased_plus_exact, -half);
+  static constexpr Stencil<n_centred + 1> biased_minus =
+      Stencil<n_centred + 1>::from(fornberg<n_centred + 1>(1, -(half + 1)), -(half + 1));
   static constexpr Stencil<n_wide> difference = Stencil<n_wide>::from(difference_exact, -radius);
   static constexpr Stencil<n_wide> lopsided_sum = Stencil<n_wide>::from(sum_exact, -radius);
-  /// c of lopsided_plus - lopsided_minus = c difference (the difference's end weight is 1)
+  static constexpr Stencil<n_wide> biased_sum = Stencil<n_wide>::from(biased_sum_exact, -radius);
+  /// c of plus - minus = c difference (the difference's end weight is 1), per upwind pair
   static constexpr Rational upwind_ratio_exact = plus_minus_minus[0];
-  static constexpr double upwind_ratio =
-      static_cast<double>(upwind_ratio_exact.p) / static_cast<double>(upwind_ratio_exact.q);
+  static constexpr Rational biased_ratio_exact = biased_plus_minus_minus[0];
+  template <Upwind u>
+  static constexpr double upwind_ratio_of = u == Upwind::biased
+                                                ? static_cast<double>(biased_ratio_exact.p)
+                                                      / static_cast<double>(biased_ratio_exact.q)
+                                                : static_cast<double>(upwind_ratio_exact.p)
+                                                      / static_cast<double>(upwind_ratio_exact.q);
+  static constexpr double upwind_ratio = upwind_ratio_of<Upwind::lopsided>;
+  template <Upwind u>
+  static constexpr const Stencil<n_wide>& upwind_sum() {
+    if constexpr (u == Upwind::biased)
+      return biased_sum;
+    else
+      return lopsided_sum;
+  }
 
   /// The highest grid mode (-1)^j gives difference = (-1)^radius 2^(2 radius); the dissipation
   /// Q f = sigma/dx dissipation_sign difference(f) / 2^(2 radius) damps it at the rate sigma/dx.
@@ -240,7 +285,10 @@ struct Order {
 
 static_assert(Order<2>::upwind_is_difference() && Order<4>::upwind_is_difference()
                   && Order<6>::upwind_is_difference() && Order<8>::upwind_is_difference(),
-              "lopsided_plus - lopsided_minus must be a multiple of the (p+2)-th difference");
+              "an upwind pair's plus - minus must be a multiple of the (p+2)-th difference");
+static_assert(Order<2>::biased_sum_is_centred() && Order<4>::biased_sum_is_centred()
+                  && Order<6>::biased_sum_is_centred() && Order<8>::biased_sum_is_centred(),
+              "the biased pair's half sum must be the centred derivative of order p + 2");
 
 // The operators of order p, each times dx to its derivative's power.
 
@@ -262,8 +310,21 @@ template <int p>
   return Order<p>::lopsided_minus(f);
 }
 template <int p>
+[[gnu::always_inline]] inline double d1_biased_plus(const double* f) {
+  return Order<p>::biased_plus(f);
+}
+template <int p>
+[[gnu::always_inline]] inline double d1_biased_minus(const double* f) {
+  return Order<p>::biased_minus(f);
+}
+/// plus + minus of the upwind pair u (Order).
+template <int p, Upwind u = Upwind::lopsided>
+[[gnu::always_inline]] inline double upwind_sum(const double* f) {
+  return Order<p>::template upwind_sum<u>()(f);
+}
+template <int p>
 [[gnu::always_inline]] inline double lopsided_sum(const double* f) {
-  return Order<p>::lopsided_sum(f);
+  return upwind_sum<p, Upwind::lopsided>(f);
 }
 /// The (p+2)-th difference (Kreiss-Oliger stencil, without sign and normalisation).
 template <int p>
@@ -271,22 +332,25 @@ template <int p>
   return Order<p>::difference.sum(f);
 }
 
-/// Upwinded advection v f_x from lopsided_sum(f) and difference(f), branch-free:
-///   v (S/2 + sign(v) c D/2) = v S/2 + |v| c D/2,  c = upwind_ratio.
-template <int p>
-[[gnu::always_inline]] inline double advect_from(double beta, double lopsided_sum,
+/// Upwinded advection v f_x from upwind_sum<p, u>(f) and difference(f), branch-free:
+///   v (S/2 + sign(v) c D/2) = v S/2 + |v| c D/2,  c = upwind_ratio_of<u>.
+template <int p, Upwind u = Upwind::lopsided>
+[[gnu::always_inline]] inline double advect_from(double beta, double upwind_sum,
                                                  double difference) {
-  return 0.5 * beta * lopsided_sum
-         + (0.5 * Order<p>::upwind_ratio) * (beta < 0.0 ? -beta : beta) * difference;
+  return 0.5 * beta * upwind_sum
+         + (0.5 * Order<p>::template upwind_ratio_of<u>)*(beta < 0.0 ? -beta : beta) * difference;
 }
 
-/// Upwinded advection v f_x: lopsided towards the direction the flow comes from, times dx.
-/// The shift term beta d_r f of the equations is advection with velocity -beta, so the
-/// stencil leans towards +x where beta > 0.
+/// Upwinded advection v f_x: the upwind stencil u leaning towards the direction the flow comes
+/// from, times dx. The shift term beta d_r f of the equations is advection with velocity
+/// -beta, so the stencil leans towards +x where beta > 0.
 /// (With a branch; the point loops use advect_from.)
-template <int p>
+template <int p, Upwind u = Upwind::lopsided>
 inline double advect(double beta, const double* f) {
-  return beta * (beta > 0.0 ? d1_lopsided_plus<p>(f) : d1_lopsided_minus<p>(f));
+  if constexpr (u == Upwind::biased)
+    return beta * (beta > 0.0 ? d1_biased_plus<p>(f) : d1_biased_minus<p>(f));
+  else
+    return beta * (beta > 0.0 ? d1_lopsided_plus<p>(f) : d1_lopsided_minus<p>(f));
 }
 
 /// 4th-order one-sided (backward) first derivative, times dx; reads f[-4] ... f[0] (the outer

@@ -20,14 +20,14 @@ struct StencilWeights {
         matched(s == AdvectionStencil::matched ? 1.0 : 0.0) {}
 };
 
-/// d_x Delta^r (times dx) by the weighted stencil of order p; `beta_gd`, `beta_full` give the
-/// upwind directions; `diff` is fd::difference<p>(f).
-template <int p>
+/// d_x Delta^r (times dx) by the weighted stencil of order p, upwind pair u; `beta_gd`,
+/// `beta_full` give the upwind directions; `diff` is fd::difference<p>(f).
+template <int p, fd::Upwind u>
 [[gnu::always_inline]] inline double delta_derivative(const StencilWeights& w, const double* f,
                                                       double beta_gd, double beta_full,
                                                       double diff) {
-  const double half_sum = 0.5 * fd::lopsided_sum<p>(f),
-               half_diff = (0.5 * fd::Order<p>::upwind_ratio) * diff;
+  const double half_sum = 0.5 * fd::upwind_sum<p, u>(f),
+               half_diff = (0.5 * fd::Order<p>::template upwind_ratio_of<u>)*diff;
   const double sign_gd = beta_gd > 0.0 ? 1.0 : -1.0, sign_full = beta_full > 0.0 ? 1.0 : -1.0;
   return w.centred * fd::d1_centred<p>(f) + w.upwind_gd * (half_sum + sign_gd * half_diff)
          + w.upwind_full * (half_sum + sign_full * half_diff);
@@ -49,9 +49,9 @@ struct Rows {
 /// stencils (fd::advect_from) and the dissipation.
 using Differences = PerVar;
 
-/// All of point_data at order p, with the per-point grid factors passed in (the hot loop); `ko`
-/// receives the (p+2)-th differences.
-template <int p>
+/// All of point_data at order p with the upwind pair `upwind`, with the per-point grid factors
+/// passed in (the hot loop); `ko` receives the (p+2)-th differences.
+template <int p, fd::Upwind upwind>
 [[gnu::always_inline]] inline PointData gather(const Rows u, std::size_t i, double r, double inv_r,
                                                double inv_dx, double inv_rx, double d2_fx,
                                                Differences& ko) {
@@ -60,8 +60,9 @@ template <int p>
   PointData pd;
   pd.r = r;
   pd.inv_r = inv_r;
-  // beta d_r f, lopsided upwind; the map factor 1/r_x is positive, so the direction is that of
-  // the shift in x as well. Each upwind stencil is the lopsided sum and the (p+2)-th difference.
+  // beta d_r f, upwinded by the pair `upwind`; the map factor 1/r_x is positive, so the direction
+  // is that of the shift in x as well. Each upwind stencil is the pair's sum and the (p+2)-th
+  // difference.
   const double beta_r = u[Var::beta][i] * d1_scale;
 #pragma GCC unroll 16 // unrolled, so that the point loop around it vectorises
   for (const auto& entry : registry) {
@@ -72,31 +73,37 @@ template <int p>
     pd.d[v] = fd::d1_centred<p>(f) * d1_scale;
     pd.dd[v] = fd::d2_centred<p>(f) * d2_scale + fd::d1_centred<p>(f) * inv_dx * d2_fx;
     ko[v] = fd::difference<p>(f);
-    pd.adv[v] = fd::advect_from<p>(beta_r, fd::lopsided_sum<p>(f), ko[v]);
+    pd.adv[v] = fd::advect_from<p, upwind>(beta_r, fd::upwind_sum<p, upwind>(f), ko[v]);
   }
   return pd;
 }
 
-template <int p>
+template <int p, fd::Upwind upwind>
 PointData point_data_at(const State& u, const Grid& grid, std::size_t i) {
   Differences ko;
-  return gather<p>(Rows(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
-                   grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i], ko);
+  return gather<p, upwind>(Rows(u, grid), i, grid.r()[i], grid.inv_r()[i], 1.0 / grid.dx(),
+                           grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i], ko);
+}
+
+template <fd::Upwind upwind>
+PointData point_data_with(const State& u, const Grid& grid, std::size_t i) {
+  switch (grid.fd_order()) {
+  case 2:
+    return point_data_at<2, upwind>(u, grid, i);
+  case 6:
+    return point_data_at<6, upwind>(u, grid, i);
+  case 8:
+    return point_data_at<8, upwind>(u, grid, i);
+  default:
+    return point_data_at<4, upwind>(u, grid, i);
+  }
 }
 
 } // namespace
 
-PointData point_data(const State& u, const Grid& grid, std::size_t i) {
-  switch (grid.fd_order()) {
-  case 2:
-    return point_data_at<2>(u, grid, i);
-  case 6:
-    return point_data_at<6>(u, grid, i);
-  case 8:
-    return point_data_at<8>(u, grid, i);
-  default:
-    return point_data_at<4>(u, grid, i);
-  }
+PointData point_data(const State& u, const Grid& grid, std::size_t i, fd::Upwind upwind) {
+  return upwind == fd::Upwind::biased ? point_data_with<fd::Upwind::biased>(u, grid, i)
+                                      : point_data_with<fd::Upwind::lopsided>(u, grid, i);
 }
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
@@ -127,27 +134,36 @@ void GbssnRhs::split_shift(const State& u, double t) {
 }
 
 void GbssnRhs::operator()(const State& u, State& dudt, double t) {
-  switch (grid_->fd_order()) { // dispatched once per call: each order's loop is its own instance
+  // dispatched once per call: each order's and upwind pair's loop is its own instance
+  if (params_.upwind == fd::Upwind::biased)
+    evaluate_with<fd::Upwind::biased>(u, dudt, t);
+  else
+    evaluate_with<fd::Upwind::lopsided>(u, dudt, t);
+}
+
+template <fd::Upwind upwind>
+void GbssnRhs::evaluate_with(const State& u, State& dudt, double t) {
+  switch (grid_->fd_order()) {
   case 2:
-    evaluate<2>(u, dudt, t);
+    evaluate<2, upwind>(u, dudt, t);
     break;
   case 6:
-    evaluate<6>(u, dudt, t);
+    evaluate<6, upwind>(u, dudt, t);
     break;
   case 8:
-    evaluate<8>(u, dudt, t);
+    evaluate<8, upwind>(u, dudt, t);
     break;
   default:
-    evaluate<4>(u, dudt, t);
+    evaluate<4, upwind>(u, dudt, t);
   }
 }
 
-template <int p>
+template <int p, fd::Upwind upwind>
 void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   dudt.resize(u.size());
   const HorizonShiftParams& hs = params_.horizon_shift;
   if (!hs.active()) {
-    interior<p, false>(u, dudt);
+    interior<p, upwind, false>(u, dudt);
   } else {
     if (source_)
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
@@ -157,19 +173,19 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
     case V::consistent:
     case V::midstep_update: // these two differ only in when and where h_AH is searched
     case V::box_substage:
-      interior<p, true, V::consistent>(u, dudt);
+      interior<p, upwind, true, V::consistent>(u, dudt);
       break;
     case V::no_shift_derivatives:
-      interior<p, true, V::no_shift_derivatives>(u, dudt);
+      interior<p, upwind, true, V::no_shift_derivatives>(u, dudt);
       break;
     case V::no_shift_second_derivatives:
-      interior<p, true, V::no_shift_second_derivatives>(u, dudt);
+      interior<p, upwind, true, V::no_shift_second_derivatives>(u, dudt);
       break;
     case V::delta_rhs_from_gd:
-      interior<p, true, V::delta_rhs_from_gd>(u, dudt);
+      interior<p, upwind, true, V::delta_rhs_from_gd>(u, dudt);
       break;
     case V::driver_full_shift:
-      interior<p, true, V::driver_full_shift>(u, dudt);
+      interior<p, upwind, true, V::driver_full_shift>(u, dudt);
       break;
     }
   }
@@ -212,23 +228,24 @@ template <std::size_t R, std::size_t B>
 /// p.adv[Delta_r], and B's driver term gd.adv_Delta_r, with the `matched` stencil (E6)'s own
 /// term minus beta_H d_r Delta^r centred, so that B - Delta^r sees no lopsided stencil
 /// (AdvectionStencil::matched).
-template <int order>
+template <int order, fd::Upwind upwind>
 [[gnu::always_inline]] inline void
 advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, double d1_scale,
              const StencilWeights& delta_w, const StencilWeights& driver_w) {
   p.adv[Var::Delta_r] =
       p.f[Var::beta] * d1_scale
-      * delta_derivative<order>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
+      * delta_derivative<order, upwind>(delta_w, Delta, gd.beta, p.f[Var::beta], ko_Delta);
   const double beta_H = p.f[Var::beta] - gd.beta;
   gd.adv_Delta_r =
       gd.beta * d1_scale
-          * delta_derivative<order>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta)
+          * delta_derivative<order, upwind>(driver_w, Delta, gd.beta, p.f[Var::beta], ko_Delta)
       + driver_w.matched * (p.adv[Var::Delta_r] - beta_H * d1_scale * fd::d1_centred<order>(Delta));
 }
 
 } // namespace
 
-template <int order, bool with_horizon_shift, HorizonShiftParams::Variant variant>
+template <int order, fd::Upwind upwind, bool with_horizon_shift,
+          HorizonShiftParams::Variant variant>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
@@ -266,7 +283,7 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
 #pragma GCC ivdep
     for (std::size_t i = begin; i < end; ++i) {
       Differences k6;
-      PointData p = gather<order>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
+      PointData p = gather<order, upwind>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
       const double d1_scale = inv_dx * inv_rx[i];
       // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
       // beta_GD alone with the horizon shift (H2).
@@ -278,8 +295,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
         gd.dd_beta = fd::d2_centred<order>(f) * d1_scale * d1_scale
                      + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];
       }
-      advect_Delta<order>(p, gd, in[Var::Delta_r] + i, k6[Var::Delta_r], d1_scale, delta_w,
-                          driver_w);
+      advect_Delta<order, upwind>(p, gd, in[Var::Delta_r] + i, k6[Var::Delta_r], d1_scale, delta_w,
+                                  driver_w);
       Rhs rhs;
       if constexpr (with_horizon_shift) {
         using Variant = HorizonShiftParams::Variant;
@@ -293,8 +310,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
         }
         // beta_GD is the evolved field: (G2) advects it, and it is what dissipation damps
         k6[Var::beta] = fd::difference<order>(f);
-        p.adv[Var::beta] = fd::advect_from<order>(p.f[Var::beta] * d1_scale,
-                                                  fd::lopsided_sum<order>(f), k6[Var::beta]);
+        p.adv[Var::beta] = fd::advect_from<order, upwind>(
+            p.f[Var::beta] * d1_scale, fd::upwind_sum<order, upwind>(f), k6[Var::beta]);
         rhs = gbssn_rhs(p, gauge, gd);
         if constexpr (variant == Variant::delta_rhs_from_gd)
           rhs[Var::Delta_r] = rhs_Delta_r(p, metric_pieces(p), gd);

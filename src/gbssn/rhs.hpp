@@ -1,6 +1,7 @@
 // The right-hand side on the whole grid (method of lines):
 //  - interior points: centred derivatives of the grid's order p = 2, 4, 6 or 8 (chain rule
-//    through the radial map), lopsided derivatives of order p for the beta d_r advection terms,
+//    through the radial map), upwind derivatives for the beta d_r advection terms (lopsided of
+//    order p, or biased of order p + 1: fd::Upwind),
 //    the point-wise equations of gbssn/equations.hpp, plus Kreiss-Oliger dissipation of the
 //    (p+2)-th difference (fd/stencils.hpp);
 //  - outer ghost cells: Sommerfeld condition (Sec. 8) with one-sided derivatives, toward each
@@ -10,6 +11,7 @@
 //    Runge-Kutta stage stays parity-consistent.
 #pragma once
 
+#include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/gauge.hpp"
 #include "gbssn/horizon_shift.hpp"
@@ -47,12 +49,14 @@ struct RhsParams {
   Gauge gauge;
   double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
   AdvectionParams advection;
+  fd::Upwind upwind = fd::Upwind::lopsided; ///< the upwind pair of every advection term
   HorizonShiftParams horizon_shift;
 };
 
 /// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
-/// order p (needs i - p/2 - 1 ... i + p/2 + 1).
-PointData point_data(const State& u, const Grid& grid, std::size_t i);
+/// order p (needs i - p/2 - 1 ... i + p/2 + 1), advection with the upwind pair `upwind`.
+PointData point_data(const State& u, const Grid& grid, std::size_t i,
+                     fd::Upwind upwind = fd::Upwind::lopsided);
 
 class GbssnRhs {
 public:
@@ -84,11 +88,14 @@ public:
 private:
   /// The point loop; the horizon shift and its variant are template parameters, so that each
   /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <int order, bool with_horizon_shift,
+  template <int order, fd::Upwind upwind, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const State& u, State& dudt) const;
-  /// operator() at the grid's finite-difference order p.
-  template <int p>
+  /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.
+  template <fd::Upwind upwind>
+  void evaluate_with(const State& u, State& dudt, double t);
+  /// operator() at the grid's finite-difference order p and the upwind pair `upwind`.
+  template <int p, fd::Upwind upwind>
   void evaluate(const State& u, State& dudt, double t);
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;

@@ -25,6 +25,7 @@ TEST_CASE("evolution_config: each flag reaches its field, areal windows scale wi
   p.non_advective_lapse = true;
   p.cfl = 0.3;
   p.ko_sigma = 0.05;
+  p.upwind = "biased";
   p.chi_floor = 2e-6;
   p.tmax = 7.0;
   p.dt_series = 0.5;
@@ -58,6 +59,7 @@ TEST_CASE("evolution_config: each flag reaches its field, areal windows scale wi
   CHECK_FALSE(c.rhs.gauge.slicing.advective);
   CHECK(c.stepping.cfl == 0.3);
   CHECK(c.rhs.ko_sigma == 0.05);
+  CHECK(c.rhs.upwind == fd::Upwind::biased);
   CHECK(c.chi_floor == 2e-6);
   CHECK(c.tmax == 7.0);
   CHECK(c.dt_series == 0.5);
@@ -102,7 +104,8 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   CHECK(cb.stepping.dt_max == doctest::Approx(dt_max_of_damping(2.0))); // eta = 2/M, M = 1
   CHECK(std::isinf(c.stepping.dt_max)); // a single grid: no largest step
   CHECK(c.chi_floor == d.chi_floor);
-  CHECK(c.rhs.gauge.shift.eta == 1.0); // 2/M
+  CHECK(c.rhs.upwind == fd::Upwind::lopsided); // Sec. 7.4: biased costs at M/8 and shrinks
+  CHECK(c.rhs.gauge.shift.eta == 1.0);         // 2/M
   CHECK(c.rhs.gauge.slicing.mu_L == 2.0);
   CHECK(c.rhs.gauge.shift.xi == 0.75);
   CHECK(c.norms.rmax == doctest::Approx(std::min(10.0 * 2.0, d.grid.rmax / 2.0)));

@@ -1,6 +1,6 @@
 // Finite-difference stencils of every order: the derived weights against the classic tables,
 // exact on polynomials of their degree and not one degree higher, the dissipation's rate, the
-// upwind identity, and the order of convergence on a smooth function.
+// upwind identity (lopsided and biased pairs), and the order of convergence on a smooth function.
 #include "fd/stencils.hpp"
 
 #include <doctest/doctest.h>
@@ -75,6 +75,10 @@ void check_exactness() {
   CHECK(std::abs(fd::d1_lopsided_minus<p>(s.centre()) / h - derivative(c, x0, 1)) < 1e-11 * scale);
   CHECK(std::abs(fd::d2_centred<p>(s1.centre()) / (h * h) - derivative(c1, x0, 2))
         < 1e-9 * (std::abs(derivative(c1, x0, 2)) + 1.0));
+  // the biased upwind pair is exact up to degree p + 1
+  const double scale1 = std::abs(derivative(c1, x0, 1)) + 1.0;
+  CHECK(std::abs(fd::d1_biased_plus<p>(s1.centre()) / h - derivative(c1, x0, 1)) < 1e-10 * scale1);
+  CHECK(std::abs(fd::d1_biased_minus<p>(s1.centre()) / h - derivative(c1, x0, 1)) < 1e-10 * scale1);
   // the (p+2)-th difference annihilates degree p + 1
   CHECK(std::abs(fd::difference<p>(s1.centre())) < 1e-12);
   // and none is exact one degree higher (the checks above can fail): x^(p+1), x^(p+2)
@@ -90,6 +94,8 @@ void check_exactness() {
   const auto sm2 = sample(mono, x0, h);
   CHECK(std::abs(fd::d2_centred<p>(sm2.centre()) / (h * h) - derivative(mono, x0, 2))
         > 1e-3 * std::pow(h, p));
+  CHECK(std::abs(fd::d1_biased_plus<p>(sm2.centre()) / h - derivative(mono, x0, 1))
+        > 1e-3 * std::pow(h, p + 1));
   CHECK(std::abs(fd::difference<p>(sm2.centre())) > 1e-3 * std::pow(h, p + 2));
 }
 
@@ -114,6 +120,24 @@ void check_dissipation_and_upwind() {
     const double from_sums = fd::advect_from<p>(beta, fd::lopsided_sum<p>(f), fd::difference<p>(f));
     CHECK(from_sums == doctest::Approx(fd::advect<p>(beta, f)).epsilon(1e-13).scale(1.0));
   }
+  // the same for the biased pair, whose half sum is the centred derivative of order p + 2
+  using fd::Upwind;
+  const double bplus = fd::d1_biased_plus<p>(f), bminus = fd::d1_biased_minus<p>(f);
+  CHECK(bplus - bminus
+        == doctest::Approx(
+               fd::Order<p>::template upwind_ratio_of<Upwind::biased> * fd::difference<p>(f))
+               .epsilon(1e-13));
+  CHECK(bplus + bminus == doctest::Approx(fd::upwind_sum<p, Upwind::biased>(f)).epsilon(1e-13));
+  if constexpr (p < 8)
+    CHECK(0.5 * (bplus + bminus) == doctest::Approx(fd::d1_centred<p + 2>(f)).epsilon(1e-13));
+  for (double beta : {-2.5, -1e-3, 0.0, 1e-3, 0.7}) {
+    const double from_sums = fd::advect_from<p, Upwind::biased>(
+        beta, fd::upwind_sum<p, Upwind::biased>(f), fd::difference<p>(f));
+    CHECK(from_sums
+          == doctest::Approx(fd::advect<p, Upwind::biased>(beta, f)).epsilon(1e-13).scale(1.0));
+  }
+  // upwind: where beta > 0 the biased stencil reaches one point further towards +x than -x
+  CHECK(fd::Order<p>::biased_plus.first == -fd::Order<p>::half);
 }
 
 /// Order of the error of d1, d2 and the upwind derivative on sin(3x) + x exp(x), fitted over
@@ -125,7 +149,7 @@ void check_convergence() {
   auto f1 = [](double x) { return 3 * std::cos(3 * x) + (1 + x) * std::exp(x); };
   auto f2 = [](double x) { return -9 * std::sin(3 * x) + (2 + x) * std::exp(x); };
   const double x0 = 0.3;
-  std::array<double, 3> e1{}, e2{}, eu{};
+  std::array<double, 3> e1{}, e2{}, eu{}, eb{};
   for (int level = 0; level < 3; ++level) {
     const double h = (p == 2 ? 0.02 : 0.1) / std::pow(2.0, level); // asymptotic for each p
     std::array<double, 13> v{};
@@ -135,10 +159,14 @@ void check_convergence() {
     e1[static_cast<std::size_t>(level)] = std::abs(fd::d1_centred<p>(c) / h - f1(x0));
     e2[static_cast<std::size_t>(level)] = std::abs(fd::d2_centred<p>(c) / (h * h) - f2(x0));
     eu[static_cast<std::size_t>(level)] = std::abs(fd::advect<p>(1.0, c) / h - f1(x0));
+    eb[static_cast<std::size_t>(level)] =
+        std::abs(fd::advect<p, fd::Upwind::biased>(-1.0, c) / -h - f1(x0));
   }
   for (const auto& e : {e1, e2, eu})
     for (std::size_t k = 0; k + 1 < 3; ++k)
       CHECK(std::log2(e[k] / e[k + 1]) == doctest::Approx(p).epsilon(0.1));
+  for (std::size_t k = 0; k + 1 < 3; ++k) // the biased pair: one order more
+    CHECK(std::log2(eb[k] / eb[k + 1]) == doctest::Approx(p + 1).epsilon(0.1));
 }
 
 } // namespace
@@ -155,6 +183,12 @@ TEST_CASE("Fornberg's algorithm gives the classic weights (exact rationals)") {
   CHECK(weights_are(fd::Order<4>::lopsided_minus, {-1, 6, -18, 10, 3}, 12));
   CHECK(weights_are(fd::Order<4>::difference, {1, -6, 15, -20, 15, -6, 1}, 1));
   CHECK(fd::Order<4>::upwind_ratio_exact == Rational(1, 12));
+  // biased (upwind-biased 5th order) on -2 ... 3: (3, -30, -20, 60, -15, 2)/60, ratio 1/30
+  CHECK(weights_are(fd::Order<4>::biased_plus, {3, -30, -20, 60, -15, 2}, 60));
+  CHECK(weights_are(fd::Order<4>::biased_minus, {-2, 15, -60, 20, 30, -3}, 60));
+  CHECK(fd::Order<4>::biased_ratio_exact == Rational(1, 30));
+  // 3rd order on -1 ... 2: (-2, -3, 6, -1)/6
+  CHECK(weights_are(fd::Order<2>::biased_plus, {-2, -3, 6, -1}, 6));
   // 6th order: (-1, 9, -45, 0, 45, -9, 1)/60, (2, -27, 270, -490, 270, -27, 2)/180
   CHECK(weights_are(fd::Order<6>::d1, {-1, 9, -45, 0, 45, -9, 1}, 60));
   CHECK(weights_are(fd::Order<6>::d2, {2, -27, 270, -490, 270, -27, 2}, 180));

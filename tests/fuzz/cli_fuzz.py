@@ -103,6 +103,7 @@ EVOLVE = {
     "--chi-floor": Flag(FLOAT, ("0", "1e-5"), ("1", "0.999999", "1e-300")),
     "--driver-advection": Flag(TEXT, choices=("matched", "upwind-gd", "upwind-full", "centred")),
     "--delta-advection": Flag(TEXT, choices=("upwind-full", "upwind-gd", "centred")),
+    "--upwind": Flag(TEXT, choices=("lopsided", "biased")),
     "--tmax": Flag(FLOAT, ("0", "0.25", "0.5"), ("1e308", "1e9", "4.9e-324")),
     "--dt-series": Flag(FLOAT, ("0.25", "0.1", "1"), ("4.9e-324", "1e-7", "1e308")),
     "--dt-profiles": Flag(FLOAT, ("0.25", "5"), ("4.9e-324", "1e-5", "1e308")),
