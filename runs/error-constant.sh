@@ -6,7 +6,7 @@
 #   bash runs/error-constant.sh          the table of switches (about 20 s)
 #   bash runs/error-constant.sh upwind   --upwind lopsided against biased at M/8 ... M/32 on
 #                                        wormhole and trumpet data, and a stretch and a shrink
-#                                        (about 4 minutes; out/error-constant-upwind/)
+#                                        (about 2 minutes; out/error-constant-upwind/)
 #
 # Output under out/error-constant/, the table on stdout and in out/error-constant/table.txt.
 set -euo pipefail
