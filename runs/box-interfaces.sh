@@ -10,6 +10,8 @@
 #                                          # what a taper of the inner boxes costs
 #   bash runs/box-interfaces.sh trumpet    # the unshifted trumpet on 9 boxes to 1024 M, N = 48, 64, 96
 #   bash runs/box-interfaces.sh widths     # the taper's width in cells, every box, wormhole (10 boxes)
+#   bash runs/box-interfaces.sh five       # the suite's five-box trumpet against uniform grids at
+#                                          # its finest spacing, untapered and at the defaults
 #   bash runs/box-interfaces.sh all
 #
 # Output under out/box-interfaces/, tables on stdout (also in out/box-interfaces/*.txt). The
@@ -152,12 +154,52 @@ widths() {
   } | tee "$out/widths.txt"
 }
 
+five() {
+  # the suite's five-box layout (boxes to 64, 32, 16, 8, 4 M; 1+log trumpet; to 30 M; H over
+  # 3 M <= R <= 12 M): each run against a uniform grid at its finest spacing (rmax 64 M, 16 N
+  # cells), before the taper (--box-taper 0) and with today's defaults, at cfl 0.5
+  common=(--id 1log-trumpet --rmax 64 --tmax 30 --dt-series 0.5 --dt-profiles 30 --norm-Rmin 3)
+  for n in 64 96 128; do
+    build/gbssn1d evolve "${common[@]}" --grid uniform --N $((16 * n)) --out "$out/five-uniform-N$n" \
+      >"$out/five-uniform-N$n.log" 2>&1 &
+    build/gbssn1d evolve "${common[@]}" --grid boxes --levels 5 --N $n --box-taper 0 \
+      --out "$out/five-off-N$n" >"$out/five-off-N$n.log" 2>&1 &
+    wait
+    build/gbssn1d evolve "${common[@]}" --grid boxes --levels 5 --N $n \
+      --out "$out/five-default-N$n" >"$out/five-default-N$n.log" 2>&1
+  done
+  $py - "$out" <<'PY' | tee "$out/five.txt"
+import sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import series
+out = sys.argv[1]
+print("== five boxes to 64 M, 1+log trumpet, RMS over 5-30 M of H_L2_R (3 <= R <= 12 M) and of "
+      "H_L2_ext (1 <= r <= 10 M), max |M_AH - M|; each against the uniform grid at the finest "
+      "spacing")
+print(f"{'N':>4s} {'run':8s} {'H_L2_R':>9s} {'/unif':>6s} {'H_L2_ext':>9s} {'/unif':>6s} "
+      f"{'M_AH err':>9s} {'/unif':>6s}")
+for n in (64, 96, 128):
+    rows = {}
+    for run in ('uniform', 'off', 'default'):
+        s = series(f"{out}/five-{run}-N{n}/timeseries.dat")
+        m = s['t'] >= 5
+        rows[run] = (np.sqrt(np.mean(s['H_L2_R'][m] ** 2)), np.sqrt(np.mean(s['H_L2_ext'][m] ** 2)),
+                     np.max(np.abs(s['M_ah_err'])))
+    u = rows['uniform']
+    for run in ('uniform', 'off', 'default'):
+        r = rows[run]
+        print(f"{n:4d} {run:8s} " + " ".join(f"{x:9.2e} {x / y:6.2f}" for x, y in zip(r, u)))
+PY
+}
+
 case ${1:-wormhole} in
 wormhole) wormhole ;;
 published) published ;;
 shifted) shifted ;;
 trumpet) trumpet ;;
 widths) widths ;;
-all) wormhole; published; shifted; trumpet; widths ;;
-*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|all" >&2; exit 2 ;;
+five) five ;;
+all) wormhole; published; shifted; trumpet; widths; five ;;
+*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|five|all" >&2; exit 2 ;;
 esac
