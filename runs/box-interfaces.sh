@@ -12,6 +12,8 @@
 #   bash runs/box-interfaces.sh widths     # the taper's width in cells, every box, wormhole (10 boxes)
 #   bash runs/box-interfaces.sh five       # the suite's five-box trumpet against uniform grids at
 #                                          # its finest spacing, untapered and at the defaults
+#   bash runs/box-interfaces.sh cells      # the published grid's wormhole run with 2 and 4 times
+#                                          # more cells on every box at the same finest spacing
 #   bash runs/box-interfaces.sh all
 #
 # Output under out/box-interfaces/, tables on stdout (also in out/box-interfaces/*.txt). The
@@ -38,11 +40,11 @@ evolve() { # evolve NAME FLAGS...: one run into out/box-interfaces/NAME
   build/gbssn1d evolve "${cfl[@]}" "$@" --out "$out/$name" >"$out/$name.log" 2>&1 ||
     echo "  ($name stopped: see $out/$name.log)"
 }
-family() { # family NAME "N list" FLAGS...: one converge study
+family() { # family NAME "N list" FLAGS...: one converge study (at cfl ${cfl:-0.25})
   local name=$1 Ns=$2
   shift 2
   rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" --cfl 0.25 "$@" \
+  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" --cfl "${cfl:-0.25}" "$@" \
     >"$out/$name.log" 2>&1 ||
     echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
 }
@@ -193,6 +195,57 @@ for n in (64, 96, 128):
 PY
 }
 
+cells() {
+  # the published grid with wormhole data (8 boxes to 256 M, N = 24, 32, 48) against the same
+  # finest spacing with the outer boxes 2 and 4 times finer (7 boxes at 2N, 6 boxes at 4N: box
+  # l covers r <= 256/2^l M either way) and a uniform grid at the finest spacing; to 100 M, at
+  # the defaults (cfl 0.5, taper from 16 M)
+  common=(--grid boxes --rmax 256 --tmax 100 --dt-series 0.5 --dt-profiles 10)
+  for lk in 8:1 7:2 6:4; do
+    l=${lk%:*} k=${lk#*:}
+    cfl=0.5 family "cells-L$l" "$((24 * k)),$((32 * k)),$((48 * k))" "${common[@]}" --levels "$l"
+  done
+  cfl=0.5 family cells-uniform 3072,4096,6144 --grid uniform --rmax 256 --tmax 100 \
+    --dt-series 0.5 --dt-profiles 10
+  {
+    echo "== wormhole data to 100 M, finest spacing M/12, M/16, M/24: RMS H_L2_R over 10-100 M"
+    for d in L8 L7 L6 uniform; do
+      $py plots/horizon_study.py table "$out/cells-$d" "$out/cells-$d/" --t0 10 --t1 100 | tail -n 1
+    done
+    for n8 in 24 32 48; do
+      echo "== max |M_AH - M| at the finest spacing of 8 boxes at N = $n8 (the pulse returns near 60 M)"
+      windows "0-50 50-60 60-70 70-100" "$out/cells-uniform/N$((128 * n8))" \
+        "$out/cells-L8/N$n8" "$out/cells-L7/N$((2 * n8))" "$out/cells-L6/N$((4 * n8))"
+    done
+  } | tee "$out/cells.txt"
+  # the same question for the cost study's wormhole runs (Sec. 6.4): 9 boxes to 1024 M at
+  # N = 64 (finest M/16) against 8 boxes at 128 and 7 at 256 (the same finest spacing) and the
+  # sinh grid with innermost M/16, to 1000 M, one run at a time (CPU times)
+  common=(--id wormhole --rmax 1024 --tmax 1000 --dt-series 1 --dt-profiles 1000)
+  for lk in 9:64 8:128 7:256; do
+    /usr/bin/time -f "%U %S" -o "$out/layout-L${lk%:*}.time" build/gbssn1d evolve "${common[@]}" \
+      --grid boxes --levels "${lk%:*}" --N "${lk#*:}" --out "$out/layout-L${lk%:*}" --force \
+      >"$out/layout-L${lk%:*}.log" 2>&1
+  done
+  /usr/bin/time -f "%U %S" -o "$out/layout-sinh.time" build/gbssn1d evolve "${common[@]}" \
+    --grid sinh --N 400 --dr-inner 0.0625 --out "$out/layout-sinh" --force \
+    >"$out/layout-sinh.log" 2>&1
+  $py - "$out" <<'PY' | tee -a "$out/cells.txt"
+import sys
+import numpy as np
+sys.path.insert(0, 'plots')
+from gbssn1d_data import series
+out = sys.argv[1]
+print("== wormhole data to 1000 M, rmax 1024 M, finest spacing M/16: RMS H_L2_R over 10-1000 M")
+for name in ('layout-L9', 'layout-L8', 'layout-L7', 'layout-sinh'):
+    s = series(f"{out}/{name}/timeseries.dat")
+    m = s['t'] >= 10
+    cpu = sum(float(x) for x in open(f"{out}/{name}.time").read().split())
+    print(f"{name:12s} CPU {cpu:5.2f} s  H_L2_R {np.sqrt(np.mean(s['H_L2_R'][m] ** 2)):.2e}  "
+          f"max |M_AH - M| {np.max(np.abs(s['M_ah_err'])):.2e}")
+PY
+}
+
 case ${1:-wormhole} in
 wormhole) wormhole ;;
 published) published ;;
@@ -200,6 +253,7 @@ shifted) shifted ;;
 trumpet) trumpet ;;
 widths) widths ;;
 five) five ;;
-all) wormhole; published; shifted; trumpet; widths; five ;;
-*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|five|all" >&2; exit 2 ;;
+cells) cells ;;
+all) wormhole; published; shifted; trumpet; widths; five; cells ;;
+*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|five|cells|all" >&2; exit 2 ;;
 esac
