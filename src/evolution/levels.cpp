@@ -33,6 +33,10 @@ std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::
   std::vector<GbssnRhs> rhs;
   for (std::size_t l = 0; l < layout.levels(); ++l) {
     rhs.emplace_back(layout.grid(l), config.rhs);
+    // quadratic interpolation fills a box's buffer once per step and evolves it: its outer
+    // ghosts then need the boundary condition
+    rhs.back().set_outer_ghosts_from_parent(
+        l > 0 && config.stepping.time != mesh::TimeInterpolation::quadratic);
     if (source)
       rhs.back().set_horizon_source([l, source](const State& u, const Grid& grid, double t,
                                                 std::uint64_t evaluation,

@@ -2,6 +2,7 @@
 
 #include "fd/stencils.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -189,7 +190,13 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
       break;
     }
   }
-  outer_boundary(u, dudt);
+  if (outer_from_parent_)
+    for (std::size_t v = 0; v < n_vars; ++v)
+      std::fill(dudt.begin()
+                    + static_cast<std::ptrdiff_t>(v * grid_->n_total() + grid_->end_interior()),
+                dudt.begin() + static_cast<std::ptrdiff_t>((v + 1) * grid_->n_total()), 0.0);
+  else
+    outer_boundary(u, dudt);
   origin_ghosts(dudt);
   ++evaluations_;
 }

@@ -85,6 +85,11 @@ public:
                                           std::uint64_t evaluation, std::optional<double> held)>;
   void set_horizon_source(HorizonSource source) { source_ = std::move(source); }
 
+  /// A box whose outer ghosts are set from its parent before every stage (mesh::MeshStepper
+  /// with stage values or dense output) needs no d_t there: the Sommerfeld condition is then
+  /// skipped and d_t = 0 is written on those ghosts.
+  void set_outer_ghosts_from_parent(bool from_parent) { outer_from_parent_ = from_parent; }
+
 private:
   /// The point loop; the horizon shift and its variant are template parameters, so that each
   /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
@@ -107,6 +112,7 @@ private:
   std::uint64_t evaluations_ = 0;
   std::optional<double> h_AH_;
   HorizonSource source_;
+  bool outer_from_parent_ = false;
   std::vector<double> profile_;                  ///< f(r_i / w) on every point (fixed by the grid)
   static constexpr std::size_t block_size = 256; ///< points per block of the point loop
   std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs.cpp)

@@ -184,7 +184,8 @@ void MeshStepper::fill_quadratic(std::vector<State>& u, std::size_t l, double t)
 }
 
 void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
-                      const std::function<void(int, State&)>& fill, const State* given_k1) {
+                      const std::function<void(int, State&)>& fill, const State* given_k1,
+                      State* start) {
   // Classical RK4 with the arithmetic of Boost.Odeint's runge_kutta4 (explicit_generic_rk:
   // stage sums 1 x u + (a_ij dt) k_j in the same order, stage times t + c_i dt), so that one
   // level reproduces it bit for bit; `fill` sets the outer ghosts of each stage's input.
@@ -224,8 +225,15 @@ void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
   f(x, k4, t + 1.0 * dt);
   if (on_level_step && dt > 0.0)
     on_level_step(l, t, dt, u, {&k1, &k2, &k3, &k4});
-  for (std::size_t i = 0; i < n; ++i)
-    u[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
+  if (start) { // u -> start, the new state -> u, through x: no copy
+    for (std::size_t i = 0; i < n; ++i)
+      x[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
+    std::swap(*start, u);
+    std::swap(u, x);
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      u[i] = 1.0 * u[i] + b1 * k1[i] + b2 * k2[i] + b3 * k3[i] + b4 * k4[i];
+  }
   evaluations_[l] += given_k1 ? 3 : 4;
 }
 
@@ -236,14 +244,10 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
   Level& L = levels_[l];
   if (l > 0 && quadratic)
     fill_quadratic(u, l, t);
-  if (has_child) {
-    if (quadratic) {
-      if (L.history.size() == 2)
-        L.history.erase(L.history.begin());
-      L.history.push_back({t, u[l]});
-    } else {
-      L.u0 = u[l];
-    }
+  if (has_child && quadratic) {
+    if (L.history.size() == 2)
+      L.history.erase(L.history.begin());
+    L.history.push_back({t, u[l]});
   }
   L.t0 = t;
   L.dt = dt;
@@ -261,7 +265,8 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
                        {w[0], w[1], w[2], w[3], w[4]}, j_begin);
     };
   }
-  rk4(l, u[l], t, dt, fill, k1);
+  // the children's boundaries interpolate between the step's start (L.u0) and its stages
+  rk4(l, u[l], t, dt, fill, k1, has_child && !quadratic ? &L.u0 : nullptr);
   if (after_step)
     after_step(l, u[l]);
   if (has_child) {

@@ -177,9 +177,11 @@ private:
   void advance(std::vector<State>& u, std::size_t l, double t, double dt,
                const State* k1 = nullptr);
   /// RK4 step of level l; `fill(stage, input)` before each RHS evaluation; `given_k1`: the
-  /// first stage, if already evaluated.
+  /// first stage, if already evaluated; `start`: if given, receives the state at t (the new
+  /// state is summed into a scratch array and the arrays are exchanged, instead of a copy).
   void rk4(std::size_t l, State& u, double t, double dt,
-           const std::function<void(int, State&)>& fill, const State* given_k1 = nullptr);
+           const std::function<void(int, State&)>& fill, const State* given_k1 = nullptr,
+           State* start = nullptr);
   /// Fine level l's points [j_begin, N + n_ghost) from the parent's arrays `arrays` combined with
   /// weights w.
   void fill_from_parent(std::size_t l, State& fine, const std::vector<const State*>& arrays,
