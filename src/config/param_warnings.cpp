@@ -97,6 +97,40 @@ void idle_shift_flag_warnings(const Params& p, std::vector<std::string>& w) {
   }
 }
 
+/// The radial spacing at r = M: where the horizon and the puncture's throat are resolved.
+double spacing_near_horizon(const Params& p) {
+  if (p.grid == "boxes")
+    return std::ldexp(p.rmax, -(p.levels.value_or(1) - 1)) / p.N;
+  if (p.grid == "uniform")
+    return p.rmax / p.N;
+  const Grid g(RadialMap::sinh(p.rmax, p.dr_inner, sinh_reference_N), static_cast<std::size_t>(p.N),
+               p.fd_order);
+  const auto& r = g.r();
+  const auto at = std::lower_bound(r.begin(), r.end(), p.M);
+  return g.dr()[static_cast<std::size_t>(std::min(at - r.begin(), std::ptrdiff_t(r.size() - 1)))];
+}
+
+/// The biased upwind stencil is worse than the lopsided one where the throat is under-resolved
+/// (docs/horizon-shift-study.md, Sec. 7.4: H 7 times on the trumpet at M/8, 1.5 times on a
+/// shrink to 0.6 M at M/8 to M/16; 2-8 times better from M/12 otherwise).
+void upwind_warnings(const Params& p, std::vector<std::string>& w) {
+  if (p.upwind != "biased" || p.N <= 0)
+    return;
+  const double dr = spacing_near_horizon(p);
+  if (dr > p.M / 12.0 * (1.0 + 1e-9))
+    w.push_back(fmt::format(
+        "--upwind biased with a spacing of {:.3g} M at r = M (coarser than M/12): it measured 7 "
+        "times the default lopsided stencil's H on the 1+log trumpet at M/8, where it is 2-8 "
+        "times better from M/12 on (docs/horizon-shift-study.md, Sec. 7.4)",
+        dr / p.M));
+  if (p.rahA != 0.0 && p.rah0 < standard_horizon_radius * p.M)
+    w.push_back(fmt::format(
+        "--upwind biased with a shrink (--rah0 {} < {} M): it measured 1.5 times the default "
+        "lopsided stencil's H on a shrink to 0.6 M at M/8 to M/16 (docs/horizon-shift-study.md, "
+        "Sec. 7.4)",
+        num(p.rah0), num(standard_horizon_radius * p.M)));
+}
+
 } // namespace
 
 /// Output of more than this many bytes is announced before the run (with the flag that thins it).
@@ -148,6 +182,7 @@ std::vector<std::string> warnings(const Params& p) {
         num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
         std::ceil(window + speed * p.tmax)));
   box_warnings(p, w);
+  upwind_warnings(p, w);
   idle_shift_flag_warnings(p, w);
   output_size_warning(p, w);
   return w;

@@ -135,3 +135,40 @@ TEST_CASE("a run that will write hundreds of MB says so first, naming the flag t
   CHECK(warned(p).first == 0);
   CHECK(warned(Params{}).first == 0);
 }
+
+TEST_CASE("--upwind biased warns where it measured worse: a throat coarser than M/12, a shrink") {
+  auto warned = [](Params p, const std::string& text) {
+    int n = 0;
+    for (const auto& w : warnings(validated(p)))
+      n += w.find(text) != std::string::npos;
+    return n;
+  };
+  Params p;
+  p.id = "1log-trumpet";
+  p.grid = "uniform";
+  p.rmax = 128.0;
+  p.N = 1024; // M/8
+  p.upwind = "biased";
+  CHECK(warned(p, "spacing of 0.125 M at r = M") == 1);
+  p.N = 1536; // M/12: where biased is better
+  CHECK(warned(p, "--upwind biased") == 0);
+  p.upwind = "lopsided";
+  p.N = 1024;
+  CHECK(warned(p, "--upwind") == 0);
+  Params b; // boxes: the finest box's spacing, 1024/2^8/32 = M/8
+  b.grid = "boxes";
+  b.rmax = 1024.0;
+  b.N = 32;
+  b.upwind = "biased";
+  CHECK(warned(b, "spacing of 0.125 M") == 1);
+  b.N = 64;
+  CHECK(warned(b, "--upwind biased") == 0);
+  Params s; // the default sinh grid: finer than M/12 at r = M
+  s.upwind = "biased";
+  CHECK(warned(s, "--upwind biased") == 0);
+  s.rahA = 0.5;
+  s.rah0 = 0.6;
+  CHECK(warned(s, "with a shrink (--rah0 0.6") == 1);
+  s.rah0 = 1.2;
+  CHECK(warned(s, "--upwind biased") == 0);
+}
