@@ -82,7 +82,7 @@ std::vector<ParamSpec> evolution_specs() {
       {"upwind", &Params::upwind, "Numerics",
        "stencil of every advection term beta d_r f: lopsided (order fd-order, as moving-puncture "
        "codes) | biased (order fd-order + 1, one point more upwind than downwind: at 4th order "
-       "2-7 times lower errors from M/12 (horizon mass, H), but up to 7 times higher on a "
+       "1.5-8 times lower errors from M/12 (horizon mass, H), but up to 7 times higher on a "
        "trumpet at M/8 and 1.5 times on a shrink to 0.6 M; docs/horizon-shift-study.md Sec. 7.4)"},
       {"chi-floor", &Params::chi_floor, "Numerics",
        "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "

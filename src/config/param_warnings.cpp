@@ -112,7 +112,7 @@ double spacing_near_horizon(const Params& p) {
 
 /// The biased upwind stencil is worse than the lopsided one where the throat is under-resolved
 /// (docs/horizon-shift-study.md, Sec. 7.4: H 7 times on the trumpet at M/8, 1.5 times on a
-/// shrink to 0.6 M at M/8 to M/16; 2-8 times better from M/12 otherwise).
+/// shrink to 0.6 M at M/8 to M/16; H 1.5-8 times lower from M/12 otherwise).
 void upwind_warnings(const Params& p, std::vector<std::string>& w) {
   if (p.upwind != "biased" || p.N <= 0)
     return;
@@ -120,7 +120,7 @@ void upwind_warnings(const Params& p, std::vector<std::string>& w) {
   if (dr > p.M / 12.0 * (1.0 + 1e-9))
     w.push_back(fmt::format(
         "--upwind biased with a spacing of {:.3g} M at r = M (coarser than M/12): it measured 7 "
-        "times the default lopsided stencil's H on the 1+log trumpet at M/8, where it is 2-8 "
+        "times the default lopsided stencil's H on the 1+log trumpet at M/8, where it is 1.5-8 "
         "times better from M/12 on (docs/horizon-shift-study.md, Sec. 7.4)",
         dr / p.M));
   if (p.rahA != 0.0 && p.rah0 < standard_horizon_radius * p.M)
