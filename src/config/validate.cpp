@@ -195,6 +195,13 @@ void validate_horizon_shift(const Params& p) {
   (void)choice("--driver-advection", p.driver_advection, driver_stencil_choices);
   (void)choice("--delta-advection", p.delta_advection, stencil_choices);
   (void)choice("--upwind", p.upwind, upwind_choices);
+  if (p.upwind == "biased" && p.rahA != 0.0 && p.rah_variant != "consistent"
+      && p.rah_variant != "midstep-update" && p.rah_variant != "box-substage")
+    throw ParamError("--upwind", p.upwind,
+                     fmt::format("is offered with --rah-variant consistent, midstep-update and "
+                                 "box-substage; --rah-variant {} is a study variant, built with "
+                                 "the lopsided stencil only",
+                                 p.rah_variant));
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
