@@ -5,7 +5,7 @@
 // Equation labels (A1), (E2), (C3), (G1) ... refer to docs/gbssn1d-equations.md; its verified
 // symbolic reference is docs/verify_gbssn1d_equations.py.
 // Everything here is a function of the fields and their radial derivatives at one point;
-// derivatives, upwinded advection and dissipation are computed by the caller (gbssn/rhs.cpp).
+// derivatives, upwinded advection and dissipation are computed by the caller (gbssn/rhs_loop.hpp).
 #pragma once
 
 #include "gbssn/gauge.hpp"

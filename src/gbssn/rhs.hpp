@@ -115,7 +115,7 @@ private:
   bool outer_from_parent_ = false;
   std::vector<double> profile_;                  ///< f(r_i / w) on every point (fixed by the grid)
   static constexpr std::size_t block_size = 256; ///< points per block of the point loop
-  std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs.cpp)
+  std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs_loop.hpp)
   std::vector<double> beta_H_, beta_full_;       ///< scratch of the horizon shift
 };
 
