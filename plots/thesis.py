@@ -15,7 +15,7 @@ norm of H over areal radius 2.5 M <= R <= 12 M: the same place in every gauge):
                   neighbouring members
   finer_earlier   the finer pair's first such time is earlier than the coarser pair's
                   ("the 64-point run is contaminated earlier")
-  from_2M         the first such time (any pair) lies in (0, 5] M ("errors from about 2 M")
+  from_2M         the first such time (any pair) lies in [1, 5] M ("errors from about 2 M")
   shrink_first    (stretch rows) the stretch does not converge over the first 20 M (a pairwise
                   order of its RMS H there below 2.5) while the same configuration's shrink to
                   0.6 M at the same spacings does (both orders at least 2.5)
@@ -34,7 +34,7 @@ WINDOWS = [(0.0, 20.0), (20.0, 100.0)]
 NORM = 'H_L2_R'
 THRESHOLD = 2.5  # design order 4 minus the verdict's tolerance 1.5
 ABOVE_FRACTION = 0.05
-EARLY = 5.0
+LATE_START, EARLY = 1.0, 5.0
 FIGURE_RANGE = 20.0  # the published figures' time range
 
 
@@ -100,7 +100,7 @@ def features(s, shrink):
     f['finer_earlier'] = (len(first) > 1 and not math.isnan(first[-1])
                           and (math.isnan(first[-2]) or first[-1] < first[-2]))
     finite = [x for x in first if not math.isnan(x)]
-    f['from_2M'] = bool(finite) and min(finite) <= EARLY and f['finer_above']
+    f['from_2M'] = bool(finite) and LATE_START <= min(finite) <= EARLY and f['finer_above']
     if shrink is not None:
         early = shrink['orders'][0]
         f['shrink_first'] = (any(p < THRESHOLD for p in s['orders'][0])
@@ -159,7 +159,7 @@ def write_table(out, studies):
         '# t_above_a, _b: the first output time with the finer member\'s norm above the coarser '
         'one\'s; frac_above: the fraction of output times in (0, 20] M so',
         f'# finer_above: frac_above >= {ABOVE_FRACTION} at some pair; finer_earlier: t_above_b < '
-        f't_above_a; from_2M: the first such time <= {EARLY} M; shrink_first: an order over '
+        f't_above_a; from_2M: the first such time in [{LATE_START:g}, {EARLY:g}] M; shrink_first: an order over '
         f'(0, 20] M below {THRESHOLD} while the same configuration\'s shrink to 0.6 M has both '
         f'orders there >= {THRESHOLD}',
         '# verdict: gbssn1d converge\'s class (converges | converges until the round-off floor | '
@@ -194,7 +194,7 @@ def write_signature(out, studies):
     names = {
         'finer_above': 'the finer run\'s H above the coarser one\'s (>= 5% of the times to 20 M)',
         'finer_earlier': 'the finer pair contaminated earlier',
-        'from_2M': 'from about 2 M (first time <= 5 M)',
+        'from_2M': 'from about 2 M (first time in [1, 5] M)',
         'shrink_first': 'the stretch fails while the shrink converges over the first 20 M',
     }
     lines = []
