@@ -42,6 +42,20 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
         "0.25 (orders 0.1-1 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
         "0.25, or the default rk-stages",
         num(p.cfl)));
+  // A held h_AH makes beta_H jump in time at every search; quadratic time interpolation of a
+  // subcycled fine box's boundary straddles the jumps, an error of first order in dt that
+  // takes over under refinement (docs/horizon-shift-study.md, Sec. 13: the published stretch
+  // to 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the
+  // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
+  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.time_interp == "quadratic"
+      && !p.no_subcycling && p.rahA != 0.0 && p.ah_every != "substage")
+    w.push_back(fmt::format(
+        "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
+        "jump in time, and the fine boxes' quadratic time interpolation across the jumps is "
+        "first order in dt (the stretch to 0.89 M loses convergence from M/24-M/32: "
+        "docs/horizon-shift-study.md, Sec. 13); use --ah-every substage (the default), "
+        "--time-interp rk-stages, or --no-subcycling",
+        p.ah_every));
   // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
   // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
   // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at
