@@ -124,9 +124,10 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
 }
 
 /// The study's members and what each samples: the fields at the coarsest member's interior
-/// points (of the composite of its boxes) inside the exterior region.
+/// points (of the composite of its boxes) inside the exterior region; and each member's
+/// smallest cell width (its finest level's: on the sinh grid the innermost cell).
 ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
-  ConvergeStudy s{base, options, converge_members(base, options), {}, {}, {}, {}, 0};
+  ConvergeStudy s{base, options, converge_members(base, options), {}, {}, {}, {}, 0, {}};
   const mesh::MeshLayout coarse_layout = make_layout(evolution_config(s.members.front()));
   const Grid coarse = mesh::Composite(coarse_layout).grid();
   for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
@@ -142,6 +143,10 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   for (double r : s.radii)
     s.samples_key += fmt::format(" {:.17g}", r);
   s.records.resize(s.members.size());
+  for (const Params& p : s.members) { // as each member's headers write dr-min
+    const mesh::MeshLayout layout = make_layout(evolution_config(p));
+    s.dr_min.push_back(layout.grid(layout.levels() - 1).min_spacing());
+  }
   return s;
 }
 
@@ -196,7 +201,6 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   const std::string& ending = e.ending;
   const std::string& judged = v.judged;
   const double t_common = e.t_common;
-  const bool failure = !v.converges;
   if (signal != 0) {
     say("gbssn1d converge: N = {} {}; the partial norms and orders are in {}/convergence.dat\n",
         fmt::join(options.N, ", "), ending, options.out);
@@ -207,11 +211,11 @@ int run_converge(const Params& base, const ConvergeOptions& options,
         fmt::join(options.N, ", "), ending, options.out);
     return 3;
   }
-  if (failure) {
+  if (!v.converges) {
     say("gbssn1d converge: N = {} completed at t = {}, but {}; norms, orders and the verdict in "
         "{}/convergence.dat\n",
         fmt::join(options.N, ", "), t_common, judged, options.out);
-    return 4;
+    return v.kind == ConvergenceClass::pre_asymptotic ? 5 : 4;
   }
   say("gbssn1d converge: N = {} completed at t = {}; {}; norms, orders and the verdict in "
       "{}/convergence.dat\n",

@@ -29,9 +29,11 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
 
 /// Runs the members and writes DIR/N<n>/ (each member's usual output), DIR/convergence.dat,
 /// DIR/scaled_H.dat and DIR/config.toml, and judges the study (study/verdict.hpp): the verdict
-/// goes into convergence.dat's header and onto stderr. Returns 0 (completed, converges), 3 (a
-/// member stopped: non-finite, out of range), 4 (completed, but does not converge at the
-/// expected order), or 128 + n (interrupted by signal n).
+/// goes into convergence.dat's header and onto stderr. Returns 0 (completed; converges, or
+/// converges until the round-off floor), 3 (a member stopped: non-finite, out of range), 4
+/// (completed, but does not converge: the errors do not fall with N), 5 (completed,
+/// pre-asymptotic: the errors fall, but below the expected order), or 128 + n (interrupted by
+/// signal n).
 int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config);
 

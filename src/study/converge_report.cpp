@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -34,7 +35,7 @@ namespace {
 
 /// The norms compared across members: column stem, order stem, value (judged: part of the
 /// verdict; length_power: the quantity's scale is M^length_power, 1/M^2 for H and M_r, 1/M for
-/// G^r, of which kRoundOffFloor is round-off).
+/// G^r, of which round_off_floor(M, dr_min) is round-off).
 struct Norm {
   const char *column, *order;
   double SeriesRow::*value;
@@ -50,9 +51,9 @@ const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
 constexpr int n_norms = static_cast<int>(std::size(norms));
 
 /// Every judged norm at each pair of neighbouring members and every field's differences at
-/// each triple, over the common times.
+/// each triple, over the common times, with the round-off floor of the finest member involved.
 std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   std::vector<OrderSeries> series;
@@ -64,7 +65,8 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
       for (std::size_t q = 0; q < n_times; ++q) {
         s.coarse.push_back(records[k].rows[q].*c.value);
         s.fine.push_back(records[k + 1].rows[q].*c.value);
-        s.floor.push_back(kRoundOffFloor * std::pow(base.M, c.length_power));
+        s.floor.push_back(round_off_floor(base.M, dr_min[k + 1])
+                          * std::pow(base.M, c.length_power));
       }
       series.push_back(std::move(s));
     }
@@ -80,13 +82,14 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
         const auto& c = records[k + 2].field_samples[q];
         s.coarse.push_back(rms_difference(a, b, off, radii.size()));
         s.fine.push_back(rms_difference(b, c, off, radii.size()));
-        // the field's scale: the RMS of its coarsest member's values at the radii; at t = 0
-        // the members start from the same data and differ by the 6th-order interpolation
+        // the field's scale: the RMS of the triple's coarsest member's values at the radii; at
+        // t = 0 the members start from the same data and differ by the 6th-order interpolation
         // onto the coarsest radii alone, which the three-level formula does not describe: not
         // judged
         s.floor.push_back(records.front().rows[q].t == 0.0
                               ? std::numeric_limits<double>::infinity()
-                              : kRoundOffFloor * rms_difference(a, zeros, off, radii.size()));
+                              : round_off_floor(base.M, dr_min[k + 2])
+                                    * rms_difference(a, zeros, off, radii.size()));
       }
       series.push_back(std::move(s));
     }
@@ -96,17 +99,15 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
 } // namespace
 
 StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
   const int signal = e.signal;
   const std::string& failed = e.failed;
   const double t_common = e.t_common;
-  StudyVerdict v{judge_convergence(order_series(s), options.expect_order.value_or(
-                                                        static_cast<double>(base.fd_order))),
-                 true,
-                 {},
-                 {},
-                 {}};
+  StudyVerdict v;
+  v.verdict = judge_convergence(order_series(s),
+                                options.expect_order.value_or(static_cast<double>(base.fd_order)));
   const Verdict& verdict = v.verdict;
+  const ConvergenceClass kind = verdict.kind();
   const auto time_at = [&](std::size_t q) { return time_text(records.front().rows[q].t); };
   const OrderJudgement* failure = verdict.failure();
   std::string& judged = v.judged; // the rule's finding over the common times
@@ -122,32 +123,100 @@ StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e) {
   };
   const auto rms_text = [&](const OrderJudgement& j) {
     std::string text = fmt::format("order of its RMS over time {}", order_text(j.p_rms));
-    if (j.windows_below > 0)
+    if (j.windows_worse > 0)
+      text += fmt::format(", over t = {} ... {} {} ({} of {} windows of the run below 0)",
+                          time_at(j.worse_begin), time_at(j.worse_end), order_text(j.worse_order),
+                          j.windows_worse, j.windows);
+    else if (j.windows_below > 0)
       text +=
           fmt::format(", over t = {} ... {} {} ({} of {} windows of the run below {})",
                       time_at(j.window_begin), time_at(j.window_end), order_text(j.window_order),
                       j.windows_below, j.windows, order_text(verdict.threshold));
     return text;
   };
+  // the floor of member k relative to the quantities' scales, and its finest spacing
+  const auto floor_text = [&](std::size_t k) {
+    return fmt::format("dr_min = M/{:.4g}, floor {:.2g} of the scale", base.M / dr_min[k],
+                       round_off_floor(base.M, dr_min[k]));
+  };
+  // the items whose finer member lay at the floor, grouped by that (finest) member and by
+  // resolutions; neighbours at the floor at the same times share their count
+  const auto floor_finding = [&] {
+    std::string text;
+    for (std::size_t k = members.size(); k-- > 0;) {
+      std::vector<std::string> sets; // per resolutions: "H_L2_ext, M_L2_ext at N = ... (...)"
+      std::vector<std::vector<double>> seen;
+      for (const auto& first : verdict.items) {
+        if (first.at_floor == 0 || first.N.back() != s.Nd(k)
+            || std::find(seen.begin(), seen.end(), first.N) != seen.end())
+          continue;
+        seen.push_back(first.N);
+        std::string set, names;
+        const OrderJudgement* last = nullptr;
+        const auto close = [&] {
+          if (last)
+            set += fmt::format("{}{} ({} of {} times from t = {})", set.empty() ? "" : ", ", names,
+                               last->at_floor, last->at_floor + last->judged,
+                               time_at(last->first_floor));
+          names.clear();
+        };
+        for (const auto& j : verdict.items) {
+          if (j.at_floor == 0 || j.N != first.N)
+            continue;
+          if (last
+              && (j.at_floor != last->at_floor || j.judged != last->judged
+                  || j.first_floor != last->first_floor))
+            close();
+          names += (names.empty() ? "" : ", ") + j.quantity;
+          last = &j;
+        }
+        close();
+        sets.push_back(fmt::format("{} at {}", set, resolutions_text(first.N)));
+      }
+      if (!sets.empty())
+        text += fmt::format("{}N = {} ({}): {}", text.empty() ? "" : "; ", members[k].N,
+                            floor_text(k), fmt::join(sets, "; "));
+    }
+    return fmt::format("the round-off floor (the finer value within {:g} times eps (M/dr_min)^2 "
+                       "of its scale; those times not judged) reached by {}",
+                       kFloorFactor, text);
+  };
   if (failure) {
     std::size_t more = 0;
     for (const auto& i : verdict.items)
-      more += i.converges ? 0 : 1;
-    judged = fmt::format("does not converge: {} at {}: {}; {} (expected order {}){}",
-                         failure->quantity, resolutions_text(failure->N), dips(*failure),
-                         rms_text(*failure), verdict.design,
-                         more > 1 ? fmt::format(" (and {} more quantity/resolution sets; see the "
-                                                "order lines)",
-                                                more - 1)
-                                  : std::string());
-  } else if (const OrderJudgement* w = verdict.weakest()) {
-    judged = fmt::format("converges: every monitored order of an RMS over time (norms: also over "
-                         "each tenth of the run) at least {} (expected order {}); the lowest over "
-                         "time is {} ({} at {})",
-                         order_text(verdict.threshold), verdict.design, order_text(w->p_rms),
-                         w->quantity, resolutions_text(w->N));
+      more += i.kind == kind ? 1 : 0;
+    const std::string why =
+        kind == ConvergenceClass::pre_asymptotic ? ""
+        : failure->p_rms < kFallingOrder
+            ? fmt::format("the order of its RMS over time is below {:g} (its error does not fall "
+                          "with N); ",
+                          kFallingOrder)
+            : fmt::format("over t = {} ... {} (a tenth of the run) the finer member is worse "
+                          "(RMS order below 0); ",
+                          time_at(failure->worse_begin), time_at(failure->worse_end));
+    judged = fmt::format(
+        "{}: {} at {}: {}{}; {} (expected order {}){}{}", class_words(kind), failure->quantity,
+        resolutions_text(failure->N), why, dips(*failure), rms_text(*failure), verdict.design,
+        more > 1
+            ? fmt::format(" (and {} more quantity/resolution sets; see the order lines)", more - 1)
+            : std::string(),
+        kind == ConvergenceClass::pre_asymptotic
+            ? fmt::format("; the errors fall with N (every order of an RMS over time at least "
+                          "{:g}, no tenth of the run where the finer member is worse)",
+                          kFallingOrder)
+            : std::string());
   } else {
-    judged = "converges at round-off: no monitored difference is above the round-off floor";
+    const OrderJudgement* w = verdict.weakest();
+    const std::string orders =
+        w ? fmt::format("every judged order of an RMS over time (norms: also over each tenth of "
+                        "the run) at least {} (expected order {}); the lowest over time is {} ({} "
+                        "at {})",
+                        order_text(verdict.threshold), verdict.design, order_text(w->p_rms),
+                        w->quantity, resolutions_text(w->N))
+          : "no monitored value lies above its round-off floor: nothing is judged";
+    judged = kind == ConvergenceClass::to_floor
+                 ? fmt::format("{}: {}; {}", class_words(kind), orders, floor_finding())
+                 : fmt::format("{}: {}", class_words(kind), orders);
   }
   v.verdict_text = signal != 0 ? "not judged: the study was interrupted"
                    : !failed.empty()
@@ -158,20 +227,28 @@ StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e) {
   std::string& order_lines = v.order_lines;
   order_lines = fmt::format(
       "verdict: {}\nverdict rule: for each norm at each pair of neighbouring members, and each "
-      "field's differences at each triple, at the times where the coarse value is above "
-      "{:g} of its scale (1/M^2 for H and M_r, 1/M for G^r, the field's RMS for fields), the "
-      "order of the RMS over those times (for norms also of the RMS over each tenth of them) "
-      "must be at least {} (expected order {} - {}); H_L2_int (inside the horizon) is not judged, "
-      "nor are "
-      "field differences at t = 0 (the same data, interpolated)\n",
-      v.verdict_text, kRoundOffFloor, order_text(verdict.threshold), verdict.design,
-      kOrderTolerance);
+      "field's differences at each triple, at the times where the finer value is above {:g} "
+      "times the round-off floor of the finest member, eps (M/dr_min)^2 of its scale (1/M^2 for "
+      "H and M_r, 1/M for G^r, the field's RMS for fields), the order of the RMS over those "
+      "times (for norms also of the RMS over each tenth of them): converges if each is at least "
+      "{} (expected order {} - {}), until the round-off floor if so and some times were at the "
+      "floor; pre-asymptotic if some is below that but every RMS order over time is at least "
+      "{:g} and no tenth's below 0; does not converge otherwise; H_L2_int (inside the horizon) is "
+      "not judged, nor are field differences at t = 0 (the same data, interpolated)\n",
+      v.verdict_text, kFloorFactor, order_text(verdict.threshold), verdict.design, kOrderTolerance,
+      kFallingOrder);
   for (const auto& j : verdict.items)
-    order_lines += fmt::format("order {} {}: {}; {} of {} judged times below {}{}: {}\n",
-                               j.quantity, resolutions_text(j.N), rms_text(j), j.below, j.judged,
-                               order_text(verdict.threshold), j.judged > 0 ? ", " + dips(j) : "",
-                               j.converges ? "converges" : "does not converge");
-  v.converges = failure == nullptr;
+    order_lines += fmt::format(
+        "order {} {}: {}; {} of {} judged times below {}{}{}: {}\n", j.quantity,
+        resolutions_text(j.N), rms_text(j), j.below, j.judged, order_text(verdict.threshold),
+        j.judged > 0 ? ", " + dips(j) : "",
+        j.at_floor > 0
+            ? fmt::format("; {} time{} at the round-off floor {:.2g} from t = {}", j.at_floor,
+                          j.at_floor == 1 ? "" : "s", j.floor_value, time_at(j.first_floor))
+            : "",
+        class_words(j.kind));
+  v.kind = kind;
+  v.converges = verdict.converges();
   return v;
 }
 
@@ -202,7 +279,7 @@ StudyEnding study_ending(const ConvergeStudy& s) {
 
 void write_convergence_dat(const ConvergeStudy& s, const std::string& base_config,
                            const StudyEnding& e, const StudyVerdict& v) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   const std::string& status_line = e.status_line;
@@ -259,7 +336,7 @@ void write_convergence_dat(const ConvergeStudy& s, const std::string& base_confi
 }
 
 void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, const StudyEnding& e) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   const std::string& status_line = e.status_line;

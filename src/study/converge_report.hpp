@@ -15,7 +15,7 @@
 namespace gbssn1d {
 
 /// A study as run: its members, what each samples (the fields at the common radii: the
-/// coarsest member's exterior points) and what each recorded.
+/// coarsest member's exterior points), what each recorded, and each one's smallest cell width.
 struct ConvergeStudy {
   const Params& base;
   const ConvergeOptions& options;
@@ -25,6 +25,8 @@ struct ConvergeStudy {
   std::string samples_key; ///< saved samples are reused only for the same key
   std::vector<MemberRecord> records;
   std::size_t n_times = 0; ///< output times common to all members
+  /// each member's smallest cell width (its finest level's), which sets its round-off floor
+  std::vector<double> dr_min;
   double Nd(std::size_t k) const { return static_cast<double>(members[k].N); }
 };
 
@@ -42,7 +44,8 @@ StudyEnding study_ending(const ConvergeStudy& s);
 /// interruptions), the `order` lines of convergence.dat's header.
 struct StudyVerdict {
   Verdict verdict;
-  bool converges = true; ///< no item below the threshold
+  ConvergenceClass kind = ConvergenceClass::converges; ///< the study's class (verdict.hpp)
+  bool converges = true; ///< classes 1 and 2: every judged order meets the threshold
   std::string judged, verdict_text, order_lines;
 };
 StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e);

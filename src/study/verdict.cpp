@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,6 +30,25 @@ double order_at(const std::vector<double>& N, double coarse, double fine) {
   return coarse / fine >= three_level_ratio(30.0, N[0], N[1], N[2]) ? inf : -inf;
 }
 
+double round_off_floor(double M, double dr_min) {
+  const double ratio = M / dr_min;
+  return std::numeric_limits<double>::epsilon() * ratio * ratio;
+}
+
+std::string class_words(ConvergenceClass c) {
+  switch (c) {
+  case ConvergenceClass::converges:
+    return "converges";
+  case ConvergenceClass::to_floor:
+    return "converges until the round-off floor";
+  case ConvergenceClass::pre_asymptotic:
+    return "pre-asymptotic";
+  case ConvergenceClass::diverges:
+    break;
+  }
+  return "does not converge";
+}
+
 Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_order) {
   Verdict v;
   v.design = design_order;
@@ -41,9 +61,18 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     std::vector<std::size_t> times; // the judged times
     for (std::size_t t = 0; t < s.coarse.size(); ++t) {
       const double c = s.coarse[t], f = s.fine[t];
-      if (!std::isfinite(c) || !(c > s.floor[t]))
-        continue; // round-off (or no value): not judged
-      times.push_back(t);
+      // no value, not to be judged, or no error at all (G^r of the initial data): neither
+      // judged nor at the floor
+      if (!std::isfinite(c) || !std::isfinite(s.floor[t]) || (c == 0.0 && f == 0.0))
+        continue;
+      if (f <= kFloorFactor * s.floor[t]) { // the finer member at round-off: not judged
+        if (j.at_floor++ == 0) {
+          j.first_floor = t;
+          j.floor_value = s.floor[t];
+        }
+        continue;
+      }
+      times.push_back(t); // (a non-finite finer value too: it fails)
       const double p = order_at(s.N, c, f);
       if (p < j.worst) {
         j.worst = p;
@@ -68,6 +97,7 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     if (j.judged == 0) {
       j.p_rms = std::numeric_limits<double>::quiet_NaN();
       j.worst = std::numeric_limits<double>::quiet_NaN();
+      j.kind = j.at_floor > 0 ? ConvergenceClass::to_floor : ConvergenceClass::converges;
     } else {
       j.p_rms = rms_order(0, j.judged);
       // consecutive windows of (about) a tenth of the judged times each
@@ -80,12 +110,29 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
           j.window_end = times[end - 1];
           j.window_order = p;
         }
+        if (p < 0.0 && j.windows_worse++ == 0) {
+          j.worse_begin = times[begin];
+          j.worse_end = times[end - 1];
+          j.worse_order = p;
+        }
       }
-      j.converges = !(j.p_rms < v.threshold) && j.windows_below == 0;
+      const bool falls = !(j.p_rms < kFallingOrder) && j.windows_worse == 0;
+      const bool meets = !(j.p_rms < v.threshold) && j.windows_below == 0;
+      j.kind = !falls           ? ConvergenceClass::diverges
+               : !meets         ? ConvergenceClass::pre_asymptotic
+               : j.at_floor > 0 ? ConvergenceClass::to_floor
+                                : ConvergenceClass::converges;
     }
     v.items.push_back(std::move(j));
   }
   return v;
+}
+
+ConvergenceClass Verdict::kind() const {
+  ConvergenceClass worst = ConvergenceClass::converges;
+  for (const auto& j : items)
+    worst = std::max(worst, j.kind);
+  return worst;
 }
 
 bool Verdict::converges() const {
@@ -93,8 +140,11 @@ bool Verdict::converges() const {
 }
 
 const OrderJudgement* Verdict::failure() const {
+  const ConvergenceClass k = kind();
+  if (k != ConvergenceClass::pre_asymptotic && k != ConvergenceClass::diverges)
+    return nullptr;
   for (const auto& j : items)
-    if (!j.converges)
+    if (j.kind == k)
       return &j;
   return nullptr;
 }
@@ -102,7 +152,7 @@ const OrderJudgement* Verdict::failure() const {
 const OrderJudgement* Verdict::weakest() const {
   const OrderJudgement* w = nullptr;
   for (const auto& j : items)
-    if (j.converges && j.judged > 0 && (!w || j.p_rms < w->p_rms))
+    if (j.converges() && j.judged > 0 && (!w || j.p_rms < w->p_rms))
       w = &j;
   return w;
 }

@@ -1,18 +1,28 @@
 // The verdict of a convergence study: does each monitored quantity converge at (near) the
-// design order, at the times where its error is above round-off? The rule, for one quantity and
-// one pair (norms, exact value 0) or triple (field differences) of resolutions:
-//  - judged times: those where the coarse value (the coarser norm, or |f_a - f_b|) is finite and
-//    above `floor` (round-off: 1e-10 of the quantity's scale);
+// design order, at the times where its error is above round-off? For one quantity and one pair
+// (norms, exact value 0) or triple (field differences) of resolutions:
+//  - judged times: those where the finer value (the finer norm, or |f_b - f_c|) is above
+//    kFloorFactor times the round-off floor of the finest member involved (round_off_floor:
+//    eps (M/dr_min)^2 of the quantity's scale) and the coarse value is finite. The other times
+//    are "at the floor" (their orders measure round-off, not truncation error), not judged;
+//    times where both values are exactly 0 (G^r of the initial data) are neither;
 //  - the order of the RMS over the judged times (the norms', or the differences', RMS over time,
-//    then the two- or three-level formula) must be at least design - 1.5;
-//  - for constraint norms, so must the order of the RMS over each tenth of the judged times
-//    (consecutive windows): a finer member whose constraint grows late, or for a tenth of the
-//    run, fails even where the early errors dominate the whole run's RMS, while the order at
-//    single times does not decide. Field differences are judged by the whole run's RMS only:
-//    their three-level orders over short windows swing where a gauge pulse crosses the
-//    comparison window (1+log trumpet, M/15 to M/30: K's order 0.8-1 at 12-14 M, 3.9 over the
-//    run).
-// A study converges when every monitored quantity at every pair (triple) does.
+//    then the two- or three-level formula), and for constraint norms the order of the RMS over
+//    each tenth of the judged times (consecutive windows): a finer member whose constraint grows
+//    late, or for a tenth of the run, is caught even where the early errors dominate the whole
+//    run's RMS, while the order at single times does not decide. Field differences are judged
+//    by the whole run's RMS only: their three-level orders over short windows swing where a
+//    gauge pulse crosses the comparison window (1+log trumpet, M/15 to M/30: K's order 0.8-1 at
+//    12-14 M, 3.9 over the run).
+// The quantity's class, and the study's (the worst of its quantities' at all pairs/triples):
+//  1. converges: every judged order at least design - kOrderTolerance (the threshold), no time
+//     at the floor;
+//  2. converges until the round-off floor: the same, but the finer member lay at the floor at
+//     some times (or at all of them);
+//  3. pre-asymptotic: the errors fall with N (the whole run's RMS order at least kFallingOrder,
+//     and no window's RMS order below 0: no tenth of the run where the finer member is worse),
+//     but some judged order is below the threshold;
+//  4. does not converge: the whole run's RMS order below kFallingOrder, or a window's below 0.
 #pragma once
 
 #include <cstddef>
@@ -21,12 +31,23 @@
 
 namespace gbssn1d {
 
-/// Below design - kOrderTolerance an order counts as "not converging".
+/// Below design - kOrderTolerance an order counts as "not converging (yet)".
 inline constexpr double kOrderTolerance = 1.5;
 /// The number of consecutive windows of judged times whose RMS orders are judged too.
 inline constexpr std::size_t kWindows = 10;
-/// Relative round-off floor of the coarse value: kRoundOffFloor times the quantity's scale.
-inline constexpr double kRoundOffFloor = 1e-10;
+/// Errors fall with N when the whole run's RMS order is at least this (and no window's RMS
+/// order is below 0).
+inline constexpr double kFallingOrder = 1.0;
+/// A time is judged only where the finer value is above kFloorFactor times the round-off floor.
+inline constexpr double kFloorFactor = 10.0;
+
+/// The round-off floor of a member, relative to the quantity's scale (1/M^2 for H and M_r, 1/M
+/// for G^r, the field's RMS for field differences): the round-off of a second difference at
+/// the member's finest spacing, eps_machine (M/dr_min)^2. Calibration: the measured floor of
+/// the standard gauge's H_L2_R (stationary 1+log trumpet, default sinh grid) was 3-8e-11 at
+/// N = 3200 (dr_min = M/400) and 1.2-2.4e-10 at N = 6400 (M/800); the estimate gives 3.5e-11
+/// and 1.4e-10.
+double round_off_floor(double M, double dr_min);
 
 /// One quantity at one pair (2 resolutions: values with exact value 0, order
 /// ln(E_a/E_b)/ln(b/a)) or triple (3 resolutions: coarse = |f_a - f_b|, fine = |f_b - f_c|) of
@@ -36,16 +57,29 @@ struct OrderSeries {
   std::vector<double> N;      ///< 2 or 3 resolutions, increasing
   std::vector<double> coarse; ///< per time
   std::vector<double> fine;   ///< per time
-  std::vector<double> floor;  ///< per time: a coarse value at or below it is not judged
-  bool windowed = true;       ///< norms: also judge the RMS over each tenth of the times
+  /// per time: the round-off floor of the finest member (absolute); a fine value at or below
+  /// kFloorFactor times it is at the floor; a non-finite floor: the time is not judged, nor
+  /// counted at the floor (field differences at t = 0)
+  std::vector<double> floor;
+  bool windowed = true; ///< norms: also judge the RMS over each tenth of the times
 };
+
+/// The classes of a verdict, best first (a study's is the worst of its items').
+enum class ConvergenceClass { converges, to_floor, pre_asymptotic, diverges };
+
+/// The class's words, the verdict's first: "converges", "converges until the round-off floor",
+/// "pre-asymptotic", "does not converge".
+std::string class_words(ConvergenceClass c);
 
 /// What the rule found for one OrderSeries.
 struct OrderJudgement {
   std::string quantity;
   std::vector<double> N;
   std::size_t judged = 0;        ///< times above the floor
-  std::size_t below = 0;         ///< of those, with order below the threshold
+  std::size_t at_floor = 0;      ///< times with the finer value at the floor (not judged)
+  std::size_t first_floor = 0;   ///< time index of the first of those
+  double floor_value = 0.0;      ///< the floor (absolute) there
+  std::size_t below = 0;         ///< of the judged times, those with order below the threshold
   double p_rms = 0.0;            ///< order of the RMS over the judged times (NaN: none judged)
   std::size_t first_below = 0;   ///< time index of the first order below the threshold
   double first_order = 0.0;      ///< that order
@@ -56,15 +90,27 @@ struct OrderJudgement {
   std::size_t window_begin = 0;  ///< time indices of the first window below: first time
   std::size_t window_end = 0;    ///< and last time
   double window_order = 0.0;     ///< its RMS order
-  bool converges = true;
+  std::size_t windows_worse = 0; ///< windows with RMS order below 0 (the finer member worse)
+  std::size_t worse_begin = 0;   ///< time indices of the first of those: first time
+  std::size_t worse_end = 0;     ///< and last time
+  double worse_order = 0.0;      ///< its RMS order
+  ConvergenceClass kind = ConvergenceClass::converges;
+  /// Classes 1 and 2: every judged order meets the threshold.
+  bool converges() const {
+    return kind == ConvergenceClass::converges || kind == ConvergenceClass::to_floor;
+  }
 };
 
 struct Verdict {
   double design = 4.0;    ///< the order expected
   double threshold = 2.5; ///< design - kOrderTolerance
   std::vector<OrderJudgement> items;
+  /// The study's class: the worst of its items' (converges for no items).
+  ConvergenceClass kind() const;
+  /// Classes 1 and 2.
   bool converges() const;
-  /// The first item that does not converge (in the order given), or nullptr.
+  /// The first item (in the order given) of the study's class when that is pre-asymptotic or
+  /// does not converge: the item to name; nullptr when the study converges.
   const OrderJudgement* failure() const;
   /// The converging item with the lowest RMS order, or nullptr if none was judged.
   const OrderJudgement* weakest() const;

@@ -1,5 +1,7 @@
 // The verdict of a convergence study (study/verdict.hpp) on made-up norms and differences:
-// what it accepts, what it refuses, and what it names.
+// what it accepts, what it refuses, what it names, and its four classes on both sides of each
+// boundary (the whole run's RMS order 1, a window's RMS order 0, the finer value 10 times the
+// round-off floor).
 #include "study/verdict.hpp"
 
 #include <doctest/doctest.h>
@@ -54,7 +56,8 @@ TEST_CASE("verdict: a finer member whose norm grows from some time on is named, 
   CHECK(f->worst < -5.0);
   CHECK(f->below == 11);
   CHECK(resolutions_text(f->N) == "N = 200 and 400");
-  CHECK(v.items[0].converges); // the coarser pair is fine
+  CHECK(v.items[0].converges());                 // the coarser pair is fine
+  CHECK(v.kind() == ConvergenceClass::diverges); // the finer member worse over a tenth of the run
 }
 
 TEST_CASE("verdict: a dip at single times is tolerated, a tenth of the run below is not") {
@@ -68,6 +71,7 @@ TEST_CASE("verdict: a dip at single times is tolerated, a tenth of the run below
   CHECK(ok.items[0].windows == 10);
   const Verdict v = judge_convergence({longer}, 4.0);
   CHECK_FALSE(v.converges());
+  CHECK(v.kind() == ConvergenceClass::pre_asymptotic); // order 2 there: still falling
   const OrderJudgement& j = *v.failure();
   CHECK(j.first_below == 8);
   CHECK(j.windows_below >= 1);
@@ -76,15 +80,19 @@ TEST_CASE("verdict: a dip at single times is tolerated, a tenth of the run below
 }
 
 TEST_CASE("verdict: times at round-off are not judged") {
-  // a coarse norm of 1e-13 with a floor of 1e-10: no time is judged, nothing fails
+  // a finer norm of 1e-13 with a floor of 1: no time is judged, nothing fails
   OrderSeries s = norm_pair(100, 200, 4.0, 1.0);
   for (auto& f : s.fine)
     f *= 1e3; // a "non-converging" finer value, but all at round-off
   const Verdict v = judge_convergence({s}, 4.0);
   CHECK(v.converges());
   CHECK(v.items[0].judged == 0);
+  CHECK(v.items[0].at_floor == 41);
   CHECK(std::isnan(v.items[0].p_rms));
   CHECK(v.weakest() == nullptr);
+  // nothing judged at all, but the finer member at the floor: converges until the floor
+  CHECK(v.kind() == ConvergenceClass::to_floor);
+  CHECK(class_words(v.kind()) == "converges until the round-off floor");
 }
 
 TEST_CASE("verdict: field differences over three resolutions") {
@@ -115,6 +123,8 @@ TEST_CASE("verdict: field differences over three resolutions") {
   const Verdict brief = judge_convergence({s}, 4.0);
   CHECK(brief.items[0].windows == 0);
   CHECK(brief.converges() == (brief.items[0].p_rms >= 2.5));
+  CHECK(brief.items[0].p_rms == doctest::Approx(1.97).epsilon(0.01));
+  CHECK(brief.kind() == ConvergenceClass::pre_asymptotic); // falling, below 2.5
   CHECK(resolutions_text(v.failure()->N) == "N = 100, 150 and 200");
 }
 
@@ -123,4 +133,138 @@ TEST_CASE("verdict: a non-finite finer value never passes") {
   s.fine[40] = std::numeric_limits<double>::quiet_NaN();
   CHECK(order_at(s.N, s.coarse[40], s.fine[40]) == -std::numeric_limits<double>::infinity());
   CHECK(judge_convergence({s}, 4.0).items[0].below == 1);
+}
+
+namespace {
+
+/// A norm pair at N = 100, 200, 41 times: the finer value ratio times the coarser (order
+/// -log2(ratio)), with times [from, to) at ratio_there instead.
+OrderSeries ratio_pair(double ratio, std::size_t from = 0, std::size_t to = 0,
+                       double ratio_there = 1.0) {
+  OrderSeries s{"H_L2_ext", {100, 200}, {}, {}, {}};
+  for (std::size_t q = 0; q <= 40; ++q) {
+    const double c = 1e-4 * (1.0 + 0.3 * std::sin(0.5 * static_cast<double>(q)));
+    s.coarse.push_back(c);
+    s.fine.push_back(c * (q >= from && q < to ? ratio_there : ratio));
+    s.floor.push_back(1e-16);
+  }
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("verdict classes: the whole run's RMS order 0.99 does not converge, 1.01 is "
+          "pre-asymptotic") {
+  const Verdict low = judge_convergence({ratio_pair(std::pow(2.0, -0.99))}, 4.0);
+  CHECK(low.items[0].p_rms == doctest::Approx(0.99));
+  CHECK(low.kind() == ConvergenceClass::diverges);
+  CHECK(class_words(low.kind()) == "does not converge");
+  CHECK(low.failure() == &low.items[0]);
+  const Verdict high = judge_convergence({ratio_pair(std::pow(2.0, -1.01))}, 4.0);
+  CHECK(high.items[0].p_rms == doctest::Approx(1.01));
+  CHECK(high.kind() == ConvergenceClass::pre_asymptotic);
+  CHECK(class_words(high.kind()) == "pre-asymptotic");
+  CHECK_FALSE(high.converges());
+  CHECK(high.failure() == &high.items[0]);
+  // at 2.51 it converges (the threshold 2.5 is the other boundary), at 2.49 it does not yet
+  CHECK(judge_convergence({ratio_pair(std::pow(2.0, -2.51))}, 4.0).kind()
+        == ConvergenceClass::converges);
+  CHECK(judge_convergence({ratio_pair(std::pow(2.0, -2.49))}, 4.0).kind()
+        == ConvergenceClass::pre_asymptotic);
+  // field differences (not windowed): the same boundary at order 1
+  OrderSeries f{"alpha", {100, 150, 200}, {}, {}, {}, false};
+  for (double p : {0.99, 1.01}) {
+    f.coarse.assign(20, std::pow(100.0, -p) - std::pow(150.0, -p));
+    f.fine.assign(20, std::pow(150.0, -p) - std::pow(200.0, -p));
+    f.floor.assign(20, 1e-16);
+    const Verdict v = judge_convergence({f}, 4.0);
+    INFO(p);
+    CHECK(v.items[0].p_rms == doctest::Approx(p).epsilon(1e-6));
+    CHECK(v.kind() == (p < 1 ? ConvergenceClass::diverges : ConvergenceClass::pre_asymptotic));
+  }
+}
+
+TEST_CASE("verdict classes: a tenth of the run at RMS order -0.1 does not converge, at +0.1 is "
+          "pre-asymptotic") {
+  // order 4 but over the third window (times 8 to 11 of 41), where the finer member is 2^0.1
+  // times worse, or 2^0.1 times better, than the coarser
+  const Verdict worse = judge_convergence({ratio_pair(1.0 / 16, 8, 12, std::pow(2.0, 0.1))}, 4.0);
+  const OrderJudgement& w = worse.items[0];
+  CHECK(w.p_rms > 1.0); // the whole run's errors fall
+  CHECK(w.windows_worse == 1);
+  CHECK(w.worse_order == doctest::Approx(-0.1));
+  CHECK(w.worse_begin == 8);
+  CHECK(w.worse_end == 11);
+  CHECK(worse.kind() == ConvergenceClass::diverges);
+  const Verdict better = judge_convergence({ratio_pair(1.0 / 16, 8, 12, std::pow(2.0, -0.1))}, 4.0);
+  CHECK(better.items[0].p_rms > 1.0);
+  CHECK(better.items[0].windows_worse == 0);
+  CHECK(better.items[0].windows_below == 1);
+  CHECK(better.kind() == ConvergenceClass::pre_asymptotic);
+  // one diverging item outweighs a pre-asymptotic one before it: it is the one named
+  const Verdict both =
+      judge_convergence({ratio_pair(1.0 / 4), ratio_pair(1.0 / 16, 8, 12, 1.1)}, 4.0);
+  CHECK(both.kind() == ConvergenceClass::diverges);
+  CHECK(both.failure() == &both.items[1]);
+}
+
+TEST_CASE("verdict classes: a finer value 9 times its floor is at the floor, 11 times is judged") {
+  // the finer member worse than the coarser (order < 0) at every time: at 9 times its floor
+  // that is round-off (converges until the floor); at 11 times it is judged, and fails
+  for (double factor : {9.0, 11.0}) {
+    OrderSeries s = ratio_pair(1.5);
+    for (std::size_t q = 0; q < s.fine.size(); ++q)
+      s.floor[q] = s.fine[q] / factor;
+    const Verdict v = judge_convergence({s}, 4.0);
+    INFO(factor);
+    CHECK(v.items[0].judged == (factor < 10 ? 0U : 41U));
+    CHECK(v.items[0].at_floor == (factor < 10 ? 41U : 0U));
+    CHECK(v.kind() == (factor < 10 ? ConvergenceClass::to_floor : ConvergenceClass::diverges));
+  }
+  // converging at order 4 until the finer member reaches the floor at t = 15: those times are
+  // not judged, and the verdict says the floor was reached
+  OrderSeries s = ratio_pair(1.0 / 16);
+  for (std::size_t q = 30; q < s.fine.size(); ++q) {
+    s.fine[q] = s.coarse[q]; // round-off: as large as the coarser value
+    s.floor[q] = s.fine[q] / 9.0;
+  }
+  const Verdict v = judge_convergence({s, ratio_pair(1.0 / 16)}, 4.0);
+  CHECK(v.items[0].judged == 30);
+  CHECK(v.items[0].at_floor == 11);
+  CHECK(v.items[0].first_floor == 30);
+  CHECK(v.items[0].floor_value == s.floor[30]);
+  CHECK(v.items[0].p_rms == doctest::Approx(4.0));
+  CHECK(v.items[0].kind == ConvergenceClass::to_floor);
+  CHECK(v.items[1].kind == ConvergenceClass::converges);
+  CHECK(v.kind() == ConvergenceClass::to_floor);
+  CHECK(v.converges());
+  CHECK(v.failure() == nullptr);
+  // without any time at the floor: converges
+  CHECK(judge_convergence({ratio_pair(1.0 / 16)}, 4.0).kind() == ConvergenceClass::converges);
+  CHECK(class_words(ConvergenceClass::converges) == "converges");
+}
+
+TEST_CASE("verdict: exact zeros are neither judged nor at the floor; a non-finite finer value "
+          "is judged") {
+  OrderSeries s = ratio_pair(1.0 / 16);
+  s.coarse[0] = s.fine[0] = 0.0; // G^r of the initial data
+  s.fine[1] = std::numeric_limits<double>::quiet_NaN();
+  const Verdict v = judge_convergence({s}, 4.0);
+  CHECK(v.items[0].judged == 40);
+  CHECK(v.items[0].at_floor == 0);
+  CHECK(v.kind() == ConvergenceClass::diverges);
+  // no time at all: nothing judged, nothing at the floor
+  const Verdict none = judge_convergence({OrderSeries{"H_L2_ext", {100, 200}, {}, {}, {}}}, 4.0);
+  CHECK(none.kind() == ConvergenceClass::converges);
+  CHECK(none.weakest() == nullptr);
+}
+
+TEST_CASE("the round-off floor: eps (M/dr_min)^2, as measured on the stationary trumpet") {
+  // measured (H_L2_R, standard gauge, default sinh grid): 3-8e-11 at dr_min = M/400,
+  // 1.2-2.4e-10 at M/800
+  CHECK(round_off_floor(1.0, 1.0 / 400) == doctest::Approx(3.55e-11).epsilon(0.01));
+  CHECK(round_off_floor(1.0, 1.0 / 800) == doctest::Approx(1.42e-10).epsilon(0.01));
+  // relative to the quantity's scale: the same at M = 2 with every length doubled
+  CHECK(round_off_floor(2.0, 2.0 / 400) == doctest::Approx(round_off_floor(1.0, 1.0 / 400)));
+  CHECK(round_off_floor(1.0, 0.1) == doctest::Approx(100 * 2.220446e-16));
 }
