@@ -244,7 +244,7 @@ TEST_CASE("verdict classes: a finer value 9 times its floor is at the floor, 11 
   CHECK(class_words(ConvergenceClass::converges) == "converges");
 }
 
-TEST_CASE("verdict: exact zeros are neither judged nor at the floor; a non-finite finer value "
+TEST_CASE("verdict: exact zeros are neither judged nor at the floor, a non-finite finer value "
           "is judged") {
   OrderSeries s = ratio_pair(1.0 / 16);
   s.coarse[0] = s.fine[0] = 0.0; // G^r of the initial data
