@@ -15,8 +15,8 @@ with convergence.dat. `table` prints a row per family:
   - p_min, p_max: the smallest and largest pairwise order over the output times in [t0, t1];
   - ratio_N: rms_N over the standard family's at the same N (the cost of the gauge in error).
 Families whose members stopped early say so (`ended t = ...`).
-`threshold` prints, for each family on a uniform grid of --rmax, the coarsest spacing
-rmax/N_k from which every three consecutive resolutions converge: both pairwise orders of the
+`threshold` prints, for each family, the coarsest spacing (each member's smallest cell width
+from its header, or rmax/N_k with --rmax) from which every three consecutive resolutions converge: both pairwise orders of the
 time averages at least --min-order, and every pairwise order at the output times in [t0, t1]
 between --min-order - 1 and --max-order (an order far from the design order at some time is a
 cancellation, not convergence), for the triple starting at N_k and every finer one.
@@ -26,15 +26,18 @@ time step) needed to reach an RMS of the norm of --H-target and a largest |M_AH 
 members (or extrapolating from the finest two at their order, marked '>'), and its ratio to
 the standard family's: below 1, the gauge saves resolution.
 `figure` draws the norm against t for each family, one panel each, a curve per resolution
-(a sequential colormap: darker is finer).
+(a sequential colormap: darker is finer), labelled with each member's smallest cell width,
+under a title that says what the family ran (data, grid, horizon shift, flags).
 """
 import argparse
 import math
 import os
+import textwrap
 
 import numpy as np
 
-from gbssn1d_data import axis_label, parse, read_text, sequential_colors, style
+from gbssn1d_data import (axis_label, header_params, params_of, parse, read_text,
+                          run_description, sequential_colors, style)
 
 
 def load(directory, key):
@@ -60,6 +63,34 @@ def end_times(directory):
             columns, blocks = parse(read_text(path))
             ends[int(name[1:])] = blocks[0][1][-1, columns.index('t')]
     return ends
+
+
+def spacing_label(directory, N, rmax=None):
+    """'M/12': the member's smallest cell width from its header (dr-min: the finest box's
+    spacing on boxes, the innermost cell's on the sinh grid), or rmax/N when --rmax is given."""
+    if rmax:
+        return f'M/{N / rmax:g}'
+    head = header_params(read_text(os.path.join(directory, f'N{N}', 'timeseries.dat')))
+    M = float(head.get('M', 1.0))
+    return f"M/{M / float(head['dr-min']):.3g}"
+
+
+# the flags that tell the study's horizon-shift configurations apart, as a panel title names them
+TITLE_FLAGS = ['rah-profile', 'rah-width', 'rah-normal', 'driver-advection', 'time-interp',
+               'ah-every', 'rah-variant', 'ko-sigma', 'cfl']
+
+
+def family_title(directory):
+    """What a family ran, in words: the data, the grid and the horizon shift (from its
+    config.toml), then its horizon-shift and numerical flags."""
+    path = os.path.join(directory, 'config.toml')
+    if not os.path.exists(path):
+        return os.path.basename(os.path.normpath(directory))
+    p = params_of(read_text(path).splitlines())
+    p.pop('N', None)  # the members' N are in the legend
+    flags = ', '.join(f'{k} {p[k]}' for k in TITLE_FLAGS if k in p)
+    return '\n'.join(textwrap.fill(part, 70) for part in
+                     run_description([p]).split('; ') + ([flags] if flags else []))
 
 
 def rms(t, v, t0, t1):
@@ -127,7 +158,7 @@ def threshold(args):
         if start is None:
             print(f"{name}: none of N = {','.join(map(str, Ns))}")
         else:
-            print(f"{name}: from M/{Ns[start] / args.rmax:g} (N = {Ns[start]})")
+            print(f"{name}: from {spacing_label(d, Ns[start], args.rmax)} (N = {Ns[start]})")
 
 
 def member_costs(directory, t1):
@@ -222,9 +253,8 @@ def figure(args):
         colors = sequential_colors(len(Ns))  # darker is finer
         for color, N in zip(colors, Ns):
             t, v = fam[N]
-            spacing = f' (M/{N / args.rmax:g})' if args.rmax > 0 else ''
-            ax.semilogy(t, v, color=color, label=f'N = {N}{spacing}')
-        ax.set_title(os.path.basename(os.path.normpath(d)), fontsize=9)
+            ax.semilogy(t, v, color=color, label=f'N = {N} ({spacing_label(d, N, args.rmax)})')
+        ax.set_title(family_title(d), fontsize=7)
         ax.set_xlabel(axis_label('t'))
         ax.legend(fontsize=7)
     labels = {'H_L2_R': 'L2 norm of H, 2.5 M <= R <= 12 M', 'H_L2_ext': 'L2 norm of H (coordinate window)',
@@ -248,15 +278,17 @@ def main():
     f.add_argument('families', nargs='+')
     f.add_argument('--cols', type=int, default=3)
     f.add_argument('-o', '--output', required=True)
-    f.add_argument('--rmax', type=float, default=200.0,
-                   help='outer radius of the uniform grids, for the spacing in the legend (0: none)')
+    f.add_argument('--rmax', type=float, default=None,
+                   help='outer radius of uniform grids, for the spacing rmax/N in the legend '
+                        '(default: each member\'s smallest cell width from its header)')
     th = sub.add_parser('threshold')
     th.add_argument('families', nargs='+')
     th.add_argument('--min-order', type=float, default=3.5)
     th.add_argument('--max-order', type=float, default=6.0,
                     help='largest pairwise order at an output time counted as convergence '
                          '(the design order + 2; 6 for 4th-order runs)')
-    th.add_argument('--rmax', type=float, default=200.0)
+    th.add_argument('--rmax', type=float, default=None,
+                    help='spacing as rmax/N (default: each member\'s smallest cell width)')
     c = sub.add_parser('cost')
     c.add_argument('std')
     c.add_argument('families', nargs='+')

@@ -234,10 +234,14 @@ def figures(out, studies, plt):
     by = {s['name']: s for s in studies}
 
     def have(*names):
-        return all(n in by for n in names)
+        missing = [n for n in names if n not in by]
+        if missing:
+            print(f"a figure left out: no row {', '.join(missing)}")
+        return not missing
 
     # Figs. 3.2-3.4: the horizon's coordinate radius
-    if have('maximal-standard-thesis', 'maximal-h0.89-thesis', 'maximal-h0.6-thesis'):
+    if have(*[f'maximal-{h}-{kind}' for h in ('standard', 'h0.89', 'h0.6')
+              for kind in ('thesis', 'defaults')]):
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
         for ax, kind in zip(axes, ['thesis', 'defaults']):
             for name, label, color in [('standard', 'standard gauge', gd.QUALITATIVE[0]),

@@ -60,7 +60,9 @@ trumpet)
   ;;
 thesis)
   # 7 boxes to 128 M with 48, 64 and 96 points across each box (N = 24, 32, 48 cells on r >= 0):
-  # finest spacing M/12, M/16, M/24
+  # finest spacing M/12, M/16, M/24, with this project's numerics (RK4 stage values at the fine
+  # boundaries, h_AH at every substage); the published configuration itself, with every
+  # mechanism switched on and off, is runs/thesis.sh
   boxes=(--grid boxes --levels 7 --rmax 128 --tmax 100 --dt-series 0.5 --dt-profiles 10)
   published=(--rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd)
   for id in 1log-trumpet maximal-trumpet; do
