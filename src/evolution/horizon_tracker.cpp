@@ -67,13 +67,26 @@ std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, 
   // its own stage state, the other boxes read its latest value
   if (layout_.levels() > 1 && level != this->level())
     return shared_;
+  std::optional<MarginalSurface> found;
   try {
-    const auto found = find_horizon_near(u, grid, config_.horizon_search.finder, seed);
-    shared_ = found ? std::optional<double>(found->r) : std::nullopt;
-    return shared_;
+    found = find_horizon_near(u, grid, config_.horizon_search.finder, seed);
   } catch (const HorizonFinderError& e) {
     throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
   }
+  if (!found && shared_)
+    lost(level, t, *shared_);
+  shared_ = found ? std::optional<double>(found->r) : std::nullopt;
+  return shared_;
+}
+
+void HorizonTracker::lost(std::size_t l, double t, double last) const {
+  const Grid& grid = layout_.grid(l);
+  throw HorizonLostError(fmt::format(
+      "the apparent horizon was lost at t = {:.6g} (last found at r_AH = {:.6g}, {:.3g} cells of "
+      "dr = {:.3g} from the origin{}): none is left on the grid, and the horizon shift beta_H "
+      "would switch off with it",
+      t, last, last / grid.min_spacing(), grid.min_spacing(),
+      layout_.levels() > 1 ? fmt::format(", level {}", l) : std::string()));
 }
 
 std::optional<double> HorizonTracker::extrapolated_at(double t) const {
@@ -98,7 +111,9 @@ void HorizonTracker::search_at_step(double t) {
   if (mode_ != Mode::extrapolated || !config_.horizon_search.in_window(t))
     return;
   const auto found = search(level(), extrapolated_at(t).value_or(config_.rhs.horizon_shift.h), t);
-  if (!found) { // beta_H = 0 until a horizon is found again
+  if (!found && !history_.empty())
+    lost(level(), t, history_.back()[1]);
+  if (!found) { // none yet: beta_H = 0 until a horizon is found
     history_.clear();
   } else {
     if (!history_.empty() && history_.back()[0] == t)
@@ -117,8 +132,10 @@ void HorizonTracker::update_held(double t) {
     return;
   const std::size_t l = level();
   const auto found = search(l, rhs_[l].horizon_radius().value_or(config_.rhs.horizon_shift.h), t);
-  // Without a horizon the held value is dropped: beta_H = 0 until one is found. Every level
-  // holds the same value.
+  if (!found && rhs_[l].horizon_radius())
+    lost(l, t, *rhs_[l].horizon_radius());
+  // Before a horizon is first found none is held: beta_H = 0 until one is. Every level holds the
+  // same value.
   shared_ = found ? std::optional<double>(found->r) : std::nullopt;
   for (auto& rhs : rhs_)
     rhs.set_horizon_radius(shared_);

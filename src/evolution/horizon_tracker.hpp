@@ -12,6 +12,8 @@
 //   extrapolated  boxes, searches every substage (the default): a search on the box holding the
 //                 horizon after each step of the hierarchy, and h_AH at any stage's time from the
 //                 Lagrange polynomial through the last (up to) four radii (error O(dt^4)).
+// Until a first horizon is found beta_H = 0; a horizon found and then lost by a search stops the
+// run (HorizonLostError), rather than letting beta_H switch off unsaid.
 #pragma once
 
 #include "evolution/evolution_config.hpp"
@@ -24,6 +26,15 @@
 #include <vector>
 
 namespace gbssn1d {
+
+/// The apparent horizon the horizon shift was following is no longer found: beta_H would switch
+/// off and the run go on in another gauge without a word, so the run stops instead, as on a
+/// finder failure (a HorizonFinderError: exit status 3, the output up to then kept). The message
+/// names the time and the last radius.
+class HorizonLostError : public HorizonFinderError {
+public:
+  using HorizonFinderError::HorizonFinderError;
+};
 
 class HorizonTracker {
 public:
@@ -74,6 +85,8 @@ private:
   std::optional<MarginalSurface> search(std::size_t l, double seed, double t) const;
   void update_held(double t);
   void search_at_step(double t);
+  /// Throws HorizonLostError: at time t no horizon was found on level l, last at radius `last`.
+  [[noreturn]] void lost(std::size_t l, double t, double last) const;
 
   const EvolutionConfig& config_;
   const mesh::MeshLayout& layout_;

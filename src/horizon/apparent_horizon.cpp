@@ -96,7 +96,11 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
   return result;
 }
 
-constexpr std::size_t k_first = 3; // skip the innermost cells: Theta_+ ~ 2/r there
+/// The scan reaches the interval between the first two interior cells: Theta_+ there takes the
+/// derivatives the evolution takes at those cells, whose stencils read the origin's parity ghosts
+/// (filled on every state the evolution holds); a sphere through the origin itself (r = 0,
+/// between the first cell and its mirror) is not a surface.
+constexpr std::size_t k_first = 0;
 
 } // namespace
 

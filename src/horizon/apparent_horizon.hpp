@@ -45,8 +45,10 @@ struct HorizonFinderParams {
   double r_min = 0.0;       ///< scan only r >= r_min (keeps clear of the puncture)
 };
 
-/// Finds every marginally trapped sphere on the grid (interior points; the innermost three
-/// cells are skipped, where Theta_+ ~ 2/r is not resolved).
+/// Finds every marginally trapped sphere on the grid, between the first and the last interior
+/// cell. Theta_+ at the first cells is differenced as the evolution differences them, through
+/// the origin ghosts: `u` must have them filled by parity (fill_origin_ghosts), as every state
+/// of a run has.
 HorizonSearch find_horizons(const State& u, const Grid& grid, const HorizonFinderParams& params);
 
 /// The apparent horizon only, searched first within `window` cells of `r_seed` (the previous

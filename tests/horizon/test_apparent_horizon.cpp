@@ -126,3 +126,32 @@ TEST_CASE("with several marginal surfaces the horizon is the outermost outer one
   CHECK(found.horizon()->r == doctest::Approx(outer).epsilon(1e-7));
   CHECK(found.horizon()->mass == doctest::Approx(R(outer) / 2).epsilon(1e-7));
 }
+
+// The finder scans down to the first interior cell: at N = 96 over 16 M (spacing M/6) the
+// wormhole's throat, r = M/2, lies between the third and fourth cells (r = 0.417 and 0.583),
+// inside the three innermost cells the finder once skipped. Theta_+ there is differenced through
+// the origin's parity ghosts as the evolution differences it; the root agrees with a fine grid's.
+TEST_CASE("the finder reaches the first cells: the wormhole's throat at N = 96 over 16 M") {
+  Params p = grid_params("wormhole", 96);
+  p.rmax = 16.0;
+  const Simulation coarse = simulation(p);
+  const double dr = coarse.grid().dr()[coarse.grid().first_interior()];
+  REQUIRE(coarse.grid().r()[coarse.grid().first_interior() + 2] < 0.5);
+  REQUIRE(coarse.grid().r()[coarse.grid().first_interior() + 3] > 0.5);
+  const auto found = find_horizons(coarse.state(), coarse.grid(), {});
+  REQUIRE(found.horizon().has_value());
+  const double r_coarse = found.horizon()->r;
+  p.N = 960;
+  const Simulation fine = simulation(p);
+  const auto fine_found = find_horizons(fine.state(), fine.grid(), {});
+  REQUIRE(fine_found.horizon().has_value());
+  MESSAGE("r_AH = " << r_coarse << " at M/6, " << fine_found.horizon()->r << " at M/60");
+  CHECK(r_coarse > 2.5 * dr);
+  CHECK(r_coarse < 3.5 * dr);
+  CHECK(std::abs(fine_found.horizon()->r - 0.5) < 1e-6);
+  CHECK(std::abs(r_coarse - fine_found.horizon()->r) < 0.1 * dr);
+  // the search near a seed reaches them too
+  const auto near = find_horizon_near(coarse.state(), coarse.grid(), {}, 0.5);
+  REQUIRE(near.has_value());
+  CHECK(near->r == r_coarse);
+}
