@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
+#include "config/folder_lock.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/console.hpp"
@@ -89,7 +90,13 @@ int evolve(Params p, bool print_config) {
         signal_name(signal));
     return 128 + signal;
   }
-  create_output_dir("--out", dir);
+  // one writer per folder, from here to the process's end; then the emptiness check again, under
+  // the lock: another process may have written the folder since validate_output_dir
+  const FolderLock lock("--out", dir);
+  if (!p.force && !folder_is_empty(dir))
+    throw ParamError("--out", p.out,
+                     "exists and is not empty: another process wrote it meanwhile (use --force "
+                     "to overwrite)");
   const std::string config = config_text(p);
   write_file_atomically(dir / "config.toml", header_text("") + config);
   if (hAH_content)
@@ -216,6 +223,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
   check_resume_dir(dir_name);
+  const FolderLock lock("DIR", dir); // one writer per folder, from before anything is read
   // a key added since the run was recorded means what the run did without it
   std::vector<std::string> args{"--config", (dir / "config.toml").string()};
   for (const auto& a : absent_key_args(file_text(dir / "config.toml")))

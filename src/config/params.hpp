@@ -145,6 +145,8 @@ std::vector<std::string> warnings(const Params& p);
 /// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
 /// --force; not writable; a path the file system cannot take). Creates nothing.
 void validate_output_dir(const Params& p);
+/// Whether a folder holds nothing but (perhaps) its lock file (config/folder_lock.hpp).
+bool folder_is_empty(const std::filesystem::path& dir);
 
 /// Refuses (ParamError naming `flag`) a path the file system cannot take: a name in it longer
 /// than 255 bytes or the whole longer than 4095, a loop of symbolic links, a part that is not a

@@ -1,5 +1,7 @@
 #include "config/params.hpp"
 
+#include "config/folder_lock.hpp"
+
 #include "config/numbers.hpp"
 #include "config/param_rules.hpp"
 
@@ -306,6 +308,17 @@ void validate(const Params& p) {
   validate_horizon_shift(p);
   validate_grid_and_steps(p);
 }
+bool folder_is_empty(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::directory_iterator it(dir, ec);
+  if (ec)
+    return false; // unreadable: not known to be empty
+  for (const auto& entry : it)
+    if (entry.path().filename() != folder_lock_name)
+      return false;
+  return true;
+}
+
 void validate_output_dir(const Params& p) {
   namespace fs = std::filesystem;
   if (p.out.empty())
@@ -316,7 +329,14 @@ void validate_output_dir(const Params& p) {
   if (fs::exists(dir, ec)) {
     if (!fs::is_directory(dir, ec))
       throw ParamError("--out", p.out, "exists and is not a directory");
-    if (!fs::is_empty(dir, ec) && !p.force)
+    if (const std::optional<long> pid = folder_lock_holder(dir))
+      throw ParamError("--out", p.out,
+                       *pid > 0 ? fmt::format("is being written by another gbssn1d process (pid "
+                                              "{}): wait for it to end, or give another folder",
+                                              *pid)
+                                : "is being written by another gbssn1d process: wait for it to "
+                                  "end, or give another folder");
+    if (!folder_is_empty(dir) && !p.force)
       throw ParamError("--out", p.out, "exists and is not empty (use --force to overwrite)");
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
       throw ParamError("--out", p.out, "is not writable");

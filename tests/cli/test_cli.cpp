@@ -2,7 +2,10 @@
 // naming the parameter and nothing written, and config files that repeat a run exactly.
 #include "../test_support.hpp"
 #include "config/config_file.hpp"
+#include "config/folder_lock.hpp"
 #include "config/params.hpp"
+
+#include <fmt/format.h>
 
 #include <doctest/doctest.h>
 
@@ -1013,4 +1016,51 @@ TEST_CASE("a resumed run's progress line counts its speed from the resume, not f
   const double true_speed = (600.0 - 150.0) / wall; // the checkpoint is at t = 150
   CHECK(speed < 1.6 * true_speed);                  // from t = 0 it read 2.2 times this
   CHECK(speed > 0.5 * true_speed);
+}
+
+TEST_CASE("one writer per folder: a folder another process writes is refused by evolve and "
+          "resume, with or without --force, nothing written; the lock ends with its holder") {
+  const fs::path out = scratch("locked");
+  {
+    const gbssn1d::FolderLock held("--out", out); // this process holds it
+    for (const char* force : {"", "--force "}) {
+      const Result r = run(std::string("evolve --tmax 0 ") + force + "--out " + out.string());
+      INFO(r.err);
+      CHECK(r.status == 2);
+      CHECK(count_lines(r.err) == 1);
+      CHECK(r.err.find("--out") != std::string::npos);
+      CHECK(r.err.find(fmt::format("being written by another gbssn1d process (pid {})",
+                                   static_cast<long>(::getpid())))
+            != std::string::npos);
+      CHECK(gbssn1d::folder_is_empty(out)); // only the lock file
+    }
+  }
+  // released: the folder (holding the old lock file only) counts as empty
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --N 100 --rmax 20 --tmax 1 "
+              "--checkpoint-every 0.5 --out "
+              + out.string())
+              .status
+          == 0);
+  REQUIRE(fs::exists(out / "checkpoint.bin"));
+  const std::string series = slurp(out / "timeseries.dat");
+  {
+    const gbssn1d::FolderLock held("DIR", out);
+    const Result r = run("resume " + out.string() + " --tmax 2");
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("being written by another gbssn1d process") != std::string::npos);
+    CHECK(slurp(out / "timeseries.dat") == series);
+  }
+  CHECK(run("resume " + out.string() + " --tmax 2").status == 0);
+  CHECK(slurp(out / "timeseries.dat") != series);
+  // a lock file that is a symbolic link is refused, not followed
+  const fs::path other = scratch("locked-link");
+  fs::create_directories(other);
+  fs::create_symlink(scratch("elsewhere") / "x", other / gbssn1d::folder_lock_name);
+  const Result r = run("evolve --tmax 0 --force --out " + other.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("symbolic link") != std::string::npos);
+  CHECK_FALSE(fs::exists(scratch("elsewhere")));
+  fs::remove_all(out);
+  fs::remove_all(other);
 }
