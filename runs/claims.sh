@@ -12,12 +12,13 @@
 # doc's number within one unit of its last digit; a cost ratio (CPU times of runs one at a
 # time) within 25% of it.
 set -euo pipefail
+caller=$PWD
 cd "$(dirname "$0")/.."
 doc=docs/horizon-shift-study.md
 self_test=false
 while [ $# -gt 0 ]; do
   case "$1" in
-    --doc) doc=${2:?--doc needs a file}; shift ;;
+    --doc) doc=${2:?--doc needs a file}; [[ $doc = /* ]] || doc=$caller/$doc; shift ;;
     --self-test) self_test=true ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "usage: $0 [--doc FILE] [--self-test]" >&2; exit 2 ;;
@@ -25,6 +26,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 [ -x build/gbssn1d ] || { echo "claims: build/gbssn1d is missing (bash .ci/build)" >&2; exit 2; }
+[ -f "$doc" ] && [ -r "$doc" ] || { echo "claims: --doc $doc: no such readable file" >&2; exit 2; }
 py=python3
 [ -x /usr/bin/python3 ] && py=/usr/bin/python3
 out=out/claims

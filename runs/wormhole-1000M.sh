@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Runs runs/wormhole-1000M.toml into out/wormhole-1000M and compares its lapse with the
-# stationary 1+log trumpet; writes out/wormhole-1000M/*.png. Needs a build (tests/run or
-# runs/demo do that).
+# stationary 1+log trumpet; writes out/wormhole-1000M/*.png. Builds the program first if
+# build/gbssn1d is missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 out=out/wormhole-1000M
 rm -rf "$out" out/trumpet-reference
 /usr/bin/time -f "wall %e s" build/gbssn1d evolve --config runs/wormhole-1000M.toml --out "$out"
