@@ -261,10 +261,11 @@ TEST_CASE("verdict: exact zeros are neither judged nor at the floor, a non-finit
 
 TEST_CASE("the round-off floor: eps (M/dr_min)^2, as measured on the stationary trumpet") {
   // measured (H_L2_R, standard gauge, default sinh grid): 3-8e-11 at dr_min = M/400,
-  // 1.2-2.4e-10 at M/800
-  CHECK(round_off_floor(1.0, 1.0 / 400) == doctest::Approx(3.55e-11).epsilon(0.01));
-  CHECK(round_off_floor(1.0, 1.0 / 800) == doctest::Approx(1.42e-10).epsilon(0.01));
+  // 1.2-2.4e-10 at M/800 (relative comparisons: doctest's Approx would pass any two numbers
+  // this small)
+  CHECK(round_off_floor(1.0, 1.0 / 400) / 3.55e-11 == doctest::Approx(1.0).epsilon(0.01));
+  CHECK(round_off_floor(1.0, 1.0 / 800) / 1.42e-10 == doctest::Approx(1.0).epsilon(0.01));
   // relative to the quantity's scale: the same at M = 2 with every length doubled
-  CHECK(round_off_floor(2.0, 2.0 / 400) == doctest::Approx(round_off_floor(1.0, 1.0 / 400)));
-  CHECK(round_off_floor(1.0, 0.1) == doctest::Approx(100 * 2.220446e-16));
+  CHECK(round_off_floor(2.0, 2.0 / 400) / round_off_floor(1.0, 1.0 / 400) == doctest::Approx(1.0));
+  CHECK(round_off_floor(1.0, 0.1) / 2.220446e-14 == doctest::Approx(1.0).epsilon(1e-6));
 }
