@@ -1,5 +1,6 @@
 #include "io/horizon_file.hpp"
 
+#include "config/params.hpp"
 #include "io/table.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
@@ -8,10 +9,36 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 namespace gbssn1d {
+
+namespace {
+
+/// The text of cell `column` on line `line` of `path` (for messages).
+std::string cell_text(const std::string& path, std::size_t line, std::size_t column) {
+  std::ifstream in(path);
+  std::string text;
+  for (std::size_t k = 0; k < line && std::getline(in, text); ++k) {
+  }
+  std::istringstream words(text);
+  std::string word;
+  for (std::size_t c = 0; c <= column && words >> word; ++c) {
+  }
+  return word;
+}
+
+/// Why a cell that is not a finite number is refused: "t = 'nan' is not finite",
+/// "r_ah = 'ok' is not a number".
+std::string not_finite(const char* name, const std::string& text) {
+  return fmt::format("{} = '{}' is not {}", name, printable(text),
+                     table_cell(text).kind == TableCell::Kind::number ? "finite" : "a number");
+}
+
+} // namespace
 
 std::function<double(double)> read_horizon_history(const std::string& path, double t_end) {
   // A regular file of sane size, checked before reading (/dev/zero would be read for ever).
@@ -25,20 +52,39 @@ std::function<double(double)> read_horizon_history(const std::string& path, doub
   Table table;
   try {
     table = read_table(path);
-  } catch (const std::runtime_error&) {
-    throw HorizonFileError("cannot be read");
+  } catch (const TableError& e) {
+    throw HorizonFileError(e.reason());
   }
   const auto col_t = table.column("t"), col_r = table.column("r_ah");
   if (!col_t || !col_r)
     throw HorizonFileError("needs the columns 't' and 'r_ah'");
   std::vector<double> t, r_ah;
-  for (const auto& row : table.rows) {
+  for (std::size_t k = 0; k < table.rows.size(); ++k) {
+    const auto& row = table.rows[k];
+    const std::size_t line = table.lines[k];
     if (row.size() <= std::max(*col_t, *col_r))
-      throw HorizonFileError(fmt::format("has a short data row (row {})", t.size() + 1));
-    if (!std::isfinite(row[*col_r]))
-      throw HorizonFileError(fmt::format("has no horizon (r_ah = NaN) at t = {}", row[*col_t]));
-    t.push_back(row[*col_t]);
-    r_ah.push_back(row[*col_r]);
+      throw HorizonFileError(fmt::format("line {}: a short data row (no {} column)", line,
+                                         row.size() <= *col_t ? "t" : "r_ah"));
+    const double t_k = row[*col_t], r_k = row[*col_r];
+    if (!std::isfinite(t_k))
+      throw HorizonFileError(
+          fmt::format("line {}: {}", line, not_finite("t", cell_text(path, line, *col_t))));
+    if (!t.empty() && !(t_k > t.back()))
+      throw HorizonFileError(fmt::format(
+          "line {}: t = {} does not follow t = {} of the row before (times must increase)", line,
+          t_k, t.back()));
+    if (!std::isfinite(r_k)) {
+      const std::string text = cell_text(path, line, *col_r);
+      if (std::isnan(r_k) && table_cell(text).kind == TableCell::Kind::number)
+        throw HorizonFileError(
+            fmt::format("line {}: has no horizon (r_ah = nan) at t = {}", line, t_k));
+      throw HorizonFileError(fmt::format("line {}: {}", line, not_finite("r_ah", text)));
+    }
+    if (!(r_k > 0.0))
+      throw HorizonFileError(
+          fmt::format("line {}: r_ah = {} is not a radius (must be positive)", line, r_k));
+    t.push_back(t_k);
+    r_ah.push_back(r_k);
   }
   if (t.size() < 5)
     throw HorizonFileError("needs at least 5 rows");
@@ -49,7 +95,7 @@ std::function<double(double)> read_horizon_history(const std::string& path, doub
   for (std::size_t k = 1; k < t.size(); ++k)
     if (std::abs(t[k] - t[0] - static_cast<double>(k) * dt) > 1e-9 * (1.0 + std::abs(t[k])))
       throw HorizonFileError(
-          fmt::format("its times are not equally spaced (row {}: t = {})", k, t[k]));
+          fmt::format("line {}: t = {}: its times are not equally spaced", table.lines[k], t[k]));
   if (t.front() > 0.0 || t.back() < t_end - 1e-9 * (1.0 + t_end))
     throw HorizonFileError(
         fmt::format("covers t = {} ... {}, not the run's 0 ... {}", t.front(), t.back(), t_end));

@@ -1,12 +1,37 @@
 #include "io/table.hpp"
 
+#include "config/numbers.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
-#include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
-#include <stdexcept>
 
 namespace gbssn1d {
+
+TableCell table_cell(std::string_view text) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::string_view body = text;
+  if (!body.empty() && (body.front() == '-' || body.front() == '+'))
+    body.remove_prefix(1);
+  const bool number_like =
+      !body.empty() && ((body.front() >= '0' && body.front() <= '9') || body.front() == '.');
+  if (number_like) {
+    if (const auto value = parse_decimal<double>(text))
+      return {TableCell::Kind::number, *value};
+    return {TableCell::Kind::malformed, nan};
+  }
+  // the words fmt writes for non-finite doubles
+  const bool negative = !text.empty() && text.front() == '-';
+  if (body == "nan")
+    return {TableCell::Kind::number, negative ? -nan : nan};
+  if (body == "inf")
+    return {TableCell::Kind::number, negative ? -inf : inf};
+  return {TableCell::Kind::word, nan};
+}
 
 std::optional<std::size_t> Table::column(const std::string& name) const {
   const auto it = std::find(columns.begin(), columns.end(), name);
@@ -18,7 +43,7 @@ std::optional<std::size_t> Table::column(const std::string& name) const {
 Table read_table(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in)
-    throw std::runtime_error("cannot open " + path.string());
+    throw TableError(printable(path.string()), "cannot be opened");
   Table table;
   std::vector<std::string> names;
   // gbssn1d writes the column names first and its version line second; in other tables (and
@@ -30,7 +55,9 @@ Table read_table(const std::filesystem::path& path) {
   const bool names_first = !first.empty() && first[0] == '#' && second.rfind("# gbssn1d", 0) == 0;
   in.clear();
   in.seekg(0);
+  std::size_t line_number = 0;
   for (std::string line; std::getline(in, line);) {
+    ++line_number;
     if (line.empty()) {
       if (!table.rows.empty())
         break; // end of the first block
@@ -50,9 +77,20 @@ Table read_table(const std::filesystem::path& path) {
       table.columns = names;
     std::istringstream words(line);
     std::vector<double> row;
-    for (std::string w; words >> w;)
-      row.push_back(std::strtod(w.c_str(), nullptr));
+    for (std::string w; words >> w;) {
+      const TableCell cell = table_cell(w);
+      if (cell.kind == TableCell::Kind::malformed) {
+        const std::size_t c = row.size();
+        throw TableError(
+            printable(path.string()),
+            fmt::format("line {}: '{}'{} is not a number (a decimal number, nan or inf)",
+                        line_number, printable(w),
+                        c < table.columns.size() ? " in column " + table.columns[c] : ""));
+      }
+      row.push_back(cell.value);
+    }
     table.rows.push_back(std::move(row));
+    table.lines.push_back(line_number);
   }
   return table;
 }
