@@ -196,24 +196,47 @@ void check_resume_dir(const std::string& dir_name) {
 }
 
 /// The run's parameters with --rah-hAH-file naming the copy the run took at its start, whatever
-/// the flag's path names now (said if that differs).
-Params with_kept_horizon_file(const Params& p, const std::filesystem::path& dir) {
+/// the flag's path names now (said if that differs). Every run that used the file kept a copy:
+/// without it (deleted, not a regular file, unreadable) the folder is refused, naming the copy,
+/// rather than continued with whatever the flag's path holds now.
+Params with_kept_horizon_file(const Params& p, const std::string& dir_name) {
   namespace fs = std::filesystem;
   Params run_params = p;
-  if (const std::filesystem::path copy = dir / prescribed_horizon_copy;
-      !p.rah_hAH_file.empty() && p.rahA != 0.0 && fs::is_regular_file(copy)) {
-    std::optional<std::string> now;
-    try {
-      now = prescribed_horizon_content(p);
-    } catch (const ParamError&) {
-    }
-    if (!now || *now != file_text(copy))
-      say("gbssn1d: note: --rah-hAH-file {} is not what the run read at its start (edited, "
-          "missing, or another file from this folder); it continues with the copy it took then, "
-          "{}\n",
-          printable(p.rah_hAH_file), copy.string());
-    run_params.rah_hAH_file = copy.string();
+  if (p.rah_hAH_file.empty() || p.rahA == 0.0)
+    return run_params;
+  const fs::path copy = fs::path(dir_name) / prescribed_horizon_copy;
+  const auto refuse = [&](const std::string& why) {
+    return ParamError(
+        "DIR", printable(dir_name),
+        fmt::format("its copy of --rah-hAH-file, {}, {}: a run continues only with the copy it "
+                    "took at its start, not with what {} holds now (put the file the run started "
+                    "with there to resume)",
+                    printable(copy.string()), why, printable(p.rah_hAH_file)));
+  };
+  std::error_code ec;
+  const fs::file_status st = fs::status(copy, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw refuse("cannot be examined: " + ec.message());
+  if (!fs::exists(st))
+    throw refuse("is missing");
+  if (!fs::is_regular_file(st))
+    throw refuse("is not a regular file");
+  std::ifstream in(copy, std::ios::binary);
+  std::ostringstream kept;
+  kept << in.rdbuf();
+  if (!in || in.bad())
+    throw refuse("cannot be read");
+  std::optional<std::string> now;
+  try {
+    now = prescribed_horizon_content(p);
+  } catch (const ParamError&) {
   }
+  if (!now || *now != kept.str())
+    say("gbssn1d: note: --rah-hAH-file {} is not what the run read at its start (edited, "
+        "missing, or another file from this folder); it continues with the copy it took then, "
+        "{}\n",
+        printable(p.rah_hAH_file), copy.string());
+  run_params.rah_hAH_file = copy.string();
   return run_params;
 }
 
@@ -260,7 +283,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
                      fmt::format("is before the last output at t = {}: resuming would cut "
                                  "the output written after it",
                                  written.t_last));
-  const Params run_params = with_kept_horizon_file(p, dir);
+  const Params run_params = with_kept_horizon_file(p, dir_name);
   Simulation sim(evolution_config(run_params));
   try {
     sim.restore(c);
