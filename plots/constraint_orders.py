@@ -6,7 +6,10 @@
 
 For a quantity whose exact value is zero the order between resolutions N1 < N2 is
 p = ln(E1/E2) / ln(N2/N1) (equations document, Sec. 15); N is read from each file's header.
-Prints the norms and the pairwise orders at the chosen times; with -o also draws the norms
+Rows are paired by time: the times all runs have (matched within 1e-6 of the smallest output
+step), so runs of different --dt-series or tmax compare at the same times; runs that share no
+time are refused. Prints how many common times there are, the norms and the pairwise orders at
+the chosen times; with -o also draws the norms
 against t with the Richardson-scaled finer norms dashed (top: at order --scale they lie on the
 coarsest curve) and the pairwise orders against t (bottom). Works on `gbssn1d converge`
 output: constraint_orders.py OUT/N*/timeseries.dat.
@@ -18,6 +21,34 @@ import numpy as np
 
 from gbssn1d_data import (axis_label, column, common_params, header_params, parse, read_text,
                           run_description, sequential_colors, set_titles, style)
+
+
+def common_rows(runs, paths):
+    """The times every run has (within 1e-6 of the smallest output step) and each run's values
+    there: runs of other output steps (--dt-series) or lengths are paired by time, not by row.
+    Refuses runs that share no time, naming their files."""
+    steps = [np.min(np.diff(t)) for t, _ in runs if len(t) > 1]
+    positive = [step for step in steps if step > 0]
+    scale = min(positive) if positive else max(1.0, max(abs(t[0]) for t, _ in runs if len(t)))
+    tol = 1e-6 * scale
+    t0 = runs[0][0]
+    keep = np.ones(len(t0), dtype=bool)
+    picks = []
+    for t, _ in runs:
+        if len(t) == 0:
+            keep[:] = False
+            picks.append(np.zeros(len(t0), dtype=int))
+            continue
+        i = np.clip(np.searchsorted(t, t0), 1, max(len(t) - 1, 1))
+        lower = np.clip(i - 1, 0, len(t) - 1)
+        upper = np.clip(i, 0, len(t) - 1)
+        nearest = np.where(np.abs(t[lower] - t0) <= np.abs(t[upper] - t0), lower, upper)
+        keep &= np.abs(t[nearest] - t0) <= tol
+        picks.append(nearest)
+    if not keep.any():
+        raise SystemExit('no times common to all runs (paired within '
+                         f'{tol:.3g} of each other): ' + ', '.join(paths))
+    return t0[keep], [e[pick[keep]] for (_, e), pick in zip(runs, picks)], tol
 
 
 def main():
@@ -39,15 +70,14 @@ def main():
         n = int(params_list[-1]['N'])
         columns, blocks = parse(text)
         data = blocks[0][1]
-        runs.append((n, column(columns, data, 't'), column(columns, data, a.y)))
+        runs.append((n, column(columns, data, 't'), column(columns, data, a.y), path))
     runs.sort(key=lambda run: run[0])
-    t = runs[0][1]
-    length = min(len(run[1]) for run in runs)
-    t = t[:length]
-    E = [run[2][:length] for run in runs]
+    t, E, tol = common_rows([(run[1], run[2]) for run in runs], [run[3] for run in runs])
     Ns = [run[0] for run in runs]
     orders = [np.log(E[k] / E[k + 1]) / math.log(Ns[k + 1] / Ns[k]) for k in range(len(runs) - 1)]
     print(f'# {a.y} at N = {" ".join(map(str, Ns))} and pairwise orders')
+    print(f'# rows paired by time: {len(t)} times common to all {len(runs)} runs (of '
+          f'{", ".join(str(len(run[1])) for run in runs)} rows; matched within {tol:.3g})')
     print('# t ' + ' '.join(f'{a.y}_N{n}' for n in Ns) + ' ' +
           ' '.join(f'p_{Ns[k]}_{Ns[k + 1]}' for k in range(len(Ns) - 1)))
     for tw in [float(v) for v in a.times.split(',')]:

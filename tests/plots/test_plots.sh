@@ -16,6 +16,32 @@ for n in 60 90 120; do
     --out "$dir/conv$n" 2>/dev/null
 done
 "$py" "$plots/constraint_orders.py" "$dir"/conv{60,90,120}/timeseries.dat -o "$dir/orders.png" >/dev/null
+# constraint_orders.py pairs rows by time: members written at other --dt-series (0.25, 0.1) give
+# the orders of members written at the same one (paired by row index they gave others), and it
+# says how many common times it used; members that share no time are refused, naming the files
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 90 --rmax 20 --tmax 2 --dt-series 0.25 \
+  --out "$dir/convdt90" 2>/dev/null
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 120 --rmax 20 --tmax 2 --dt-series 0.1 \
+  --out "$dir/convdt120" 2>/dev/null
+"$py" "$plots/constraint_orders.py" "$dir"/conv{60,90,120}/timeseries.dat --times 0.5,1,1.5,2 \
+  > "$dir/orders_same.txt"
+"$py" "$plots/constraint_orders.py" "$dir/conv60/timeseries.dat" "$dir/convdt90/timeseries.dat" \
+  "$dir/convdt120/timeseries.dat" --times 0.5,1,1.5,2 -o "$dir/orders_mixed.png" \
+  > "$dir/orders_mixed.txt"
+grep -q "^# rows paired by time: 5 times common to all 3 runs (of 5, 9, 21 rows" "$dir/orders_mixed.txt" \
+  || { echo "constraint_orders.py: not 5 common times"; cat "$dir/orders_mixed.txt"; exit 1; }
+[ "$(grep -c '^[0-9]' "$dir/orders_same.txt")" -eq 4 ]
+diff <(grep -v '^# rows paired' "$dir/orders_same.txt") <(grep -v '^# rows paired' "$dir/orders_mixed.txt") \
+  || { echo "constraint_orders.py: other --dt-series gave other orders"; exit 1; }
+{ grep '^#' "$dir/conv90/timeseries.dat"; grep -v '^#' "$dir/conv90/timeseries.dat" | sed -n '2p;4p'; } \
+  > "$dir/odd_times.dat"   # t = 0.5, 1.5 only
+{ grep '^#' "$dir/conv60/timeseries.dat"; grep -v '^#' "$dir/conv60/timeseries.dat" | sed -n '1p;3p;5p'; } \
+  > "$dir/even_times.dat"  # t = 0, 1, 2
+if "$py" "$plots/constraint_orders.py" "$dir/even_times.dat" "$dir/odd_times.dat" 2>"$dir/err" >/dev/null; then
+  echo "constraint_orders.py: members without a common time accepted"; exit 1
+fi
+grep -q "no times common to all runs" "$dir/err" && grep -q "odd_times.dat" "$dir/err" \
+  && grep -q "even_times.dat" "$dir/err"
 "$py" "$plots/plot_horizons.py" "$dir"/conv{60,90,120}/horizon.dat --label-by N -o "$dir/horizons.png"
 # a box run: its composite profiles (with the level column) and horizon.dat read by the same
 # scripts; the error-profile script on three box resolutions
@@ -27,7 +53,7 @@ done
 "$py" "$plots/compare_trumpet.py" "$dir/boxes32/profiles.dat" "$dir/ref/profiles.dat" -o "$dir/boxes_cmp.png" >/dev/null
 "$py" "$plots/plot_horizons.py" "$dir"/boxes{16,24,32}/horizon.dat --label-by N -o "$dir/boxes_horizons.png"
 "$py" "$plots/error_profiles.py" "$dir"/boxes{16,24,32} -y a --times 1,2 -o "$dir/boxes_error.png" >/dev/null
-for f in series stdin profiles cmp orders horizons boxes_profiles boxes_cmp boxes_horizons boxes_error; do
+for f in series stdin profiles cmp orders orders_mixed horizons boxes_profiles boxes_cmp boxes_horizons boxes_error; do
   [ -s "$dir/$f.png" ] || { echo "plot $f.png missing or empty"; exit 1; }
   head -c 8 "$dir/$f.png" | grep -q PNG || { echo "$f.png is not a PNG"; exit 1; }
 done
