@@ -60,7 +60,7 @@ std::optional<long> folder_lock_holder(const std::filesystem::path& dir) {
   return holder;
 }
 
-FolderLock::FolderLock(const std::string& flag, const std::filesystem::path& dir) {
+FolderLock::FolderLock(const std::string& flag, const std::filesystem::path& dir, LockMode mode) {
   create_output_dir(flag, dir);
   const std::filesystem::path file = dir / folder_lock_name;
   const std::lock_guard guard(held_mutex);
@@ -75,10 +75,11 @@ FolderLock::FolderLock(const std::string& flag, const std::filesystem::path& dir
                                   : fmt::format("cannot make its lock file {}: {}",
                                                 folder_lock_name, std::strerror(err)));
   }
-  struct flock l = whole_file(F_WRLCK);
+  const short type = mode == LockMode::exclusive ? F_WRLCK : F_RDLCK;
+  struct flock l = whole_file(type);
   if (::fcntl(fd_, F_SETLK, &l) != 0) {
     const int err = errno;
-    struct flock who = whole_file(F_WRLCK);
+    struct flock who = whole_file(type);
     const bool known = ::fcntl(fd_, F_GETLK, &who) == 0 && who.l_type != F_UNLCK;
     ::close(fd_);
     fd_ = -1;

@@ -21,12 +21,17 @@ inline constexpr const char* folder_lock_name = ".gbssn1d.lock";
 /// process holds it (no lock file, or one nobody holds). Takes no lock.
 std::optional<long> folder_lock_holder(const std::filesystem::path& dir);
 
+/// exclusive: the one writer of the folder; shared: one of several writers that may work side
+/// by side (a sweep's member tasks), which together exclude an exclusive holder.
+enum class LockMode { exclusive, shared };
+
 /// Holds the lock of `dir` (created, with its parents, if missing) until destroyed. Throws
-/// ParamError(flag, dir, ...) when another process holds it, or when the lock file is a
-/// symbolic link or cannot be made.
+/// ParamError(flag, dir, ...) when another process holds it (in a mode that excludes this
+/// one), or when the lock file is a symbolic link or cannot be made.
 class FolderLock {
 public:
-  FolderLock(const std::string& flag, const std::filesystem::path& dir);
+  FolderLock(const std::string& flag, const std::filesystem::path& dir,
+             LockMode mode = LockMode::exclusive);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;

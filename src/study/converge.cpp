@@ -7,6 +7,7 @@
 #include "core/stop_signal.hpp"
 
 #include "config/config_file.hpp"
+#include "config/folder_lock.hpp"
 #include "config/params.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
@@ -71,7 +72,7 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
   }
   try {
     const Params& p = members[k];
-    create_output_dir("--out", p.out);
+    const FolderLock member_lock("--out", p.out); // one writer per member folder too
     Simulation sim(evolution_config(p));
     sim.on_series = [&](Simulation& s) {
       const std::vector<DerivedProfiles> levels_d = s.level_profiles();
@@ -179,7 +180,7 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
 int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config) {
   ConvergeStudy s = plan_study(base, options);
-  create_output_dir("--out", options.out);
+  const FolderLock lock("--out", options.out); // one writer per study folder
   std::mutex log_mutex;
   install_stop_handlers(); // members stop between steps; the partial files stay
   run_tasks(s.members.size(), options.jobs, [&](std::size_t k) { run_member(s, k, log_mutex); });

@@ -1,5 +1,7 @@
 #include "study/sweep.hpp"
 
+#include "config/folder_lock.hpp"
+
 #include "study/sweep_process.hpp"
 #include "study/sweep_store.hpp"
 #include "study/sweep_summary.hpp"
@@ -61,6 +63,9 @@ int run_one_member(const SweepOptions& options, const std::vector<SweepAxis>& ax
   const SweepMember& m = *it;
   const fs::path dir(options.out);
   check_earlier_inputs(dir, {&m}, options.out);
+  // member tasks of one sweep run side by side; a whole sweep of the folder excludes them
+  const FolderLock lock("--out", dir, LockMode::shared);
+  check_earlier_inputs(dir, {&m}, options.out); // again, under the lock
   const fs::path status_file = dir / "logs" / (m.name + ".status");
   MemberOutcome o;
   if (member_done(status_file)) {
@@ -291,6 +296,10 @@ private:
 int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepMember>& members, const std::string& exe) {
   const fs::path dir(options.out);
+  check_earlier_inputs(dir, all_of(members), options.out);
+  // one sweep of a folder at a time (and no member tasks beside it); then the earlier inputs
+  // again, under the lock: a sweep of other inputs may have finished meanwhile
+  const FolderLock lock("--out", dir);
   check_earlier_inputs(dir, all_of(members), options.out);
   create_output_dir("--out", dir / "logs");
   record_axis_order(options.out, axes);

@@ -1064,3 +1064,42 @@ TEST_CASE("one writer per folder: a folder another process writes is refused by 
   fs::remove_all(out);
   fs::remove_all(other);
 }
+
+TEST_CASE("one writer per folder: converge and a whole sweep are refused on a folder another "
+          "process writes; a sweep's member tasks share their folder, and exclude a whole sweep") {
+  const fs::path study = scratch("locked-study");
+  const std::string common = " --id 1log-trumpet --grid uniform --N 40,60,80 --rmax 20 --tmax 0.5";
+  {
+    const gbssn1d::FolderLock held("--out", study);
+    const Result r = run("converge --out " + study.string() + common);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("being written by another gbssn1d process") != std::string::npos);
+    CHECK(gbssn1d::folder_is_empty(study));
+  }
+  const fs::path sweep = scratch("locked-sweep");
+  const std::string axes =
+      " --sweep rahA=0,0.5 --id 1log-trumpet --grid uniform --N 100 --rmax 20 --tmax 0.5";
+  {
+    // a member task of this sweep runs (shared), a whole sweep of the folder does not
+    const gbssn1d::FolderLock task("--out", sweep, gbssn1d::LockMode::shared);
+    const Result whole = run("sweep --out " + sweep.string() + axes);
+    INFO(whole.err);
+    CHECK(whole.status == 2);
+    CHECK(whole.err.find("being written by another gbssn1d process") != std::string::npos);
+    const Result member = run("sweep --out " + sweep.string() + axes + " --member rahA=0");
+    INFO(member.err);
+    CHECK(member.status == 0);
+  }
+  {
+    // a whole sweep holds its folder: a member task is refused
+    const gbssn1d::FolderLock whole("--out", sweep);
+    const Result member = run("sweep --out " + sweep.string() + axes + " --member rahA=0.5");
+    INFO(member.err);
+    CHECK(member.status == 2);
+    CHECK(member.err.find("being written by another gbssn1d process") != std::string::npos);
+    CHECK_FALSE(fs::exists(sweep / "logs" / "rahA=0.5.status"));
+  }
+  fs::remove_all(study);
+  fs::remove_all(sweep);
+}
