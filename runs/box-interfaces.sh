@@ -46,7 +46,7 @@ family() { # family NAME "N list" FLAGS...: one converge study (at cfl ${cfl:-0.
   rm -rf "${out:?}/$name"
   build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" --cfl "${cfl:-0.25}" "$@" \
     >"$out/$name.log" 2>&1 ||
-    echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
+    echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
 }
 # max |M_AH - M| per time window of each run's timeseries.dat; the first run is the reference
 windows() { # windows "t0-t1 ..." REFERENCE RUN...

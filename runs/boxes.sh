@@ -33,7 +33,7 @@ family() { # family NAME "N list" [evolve flags]: one converge run into out/boxe
   shift 2
   rm -rf "${out:?}/$name"
   build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" "${cfl[@]}" "$@" >"$out/$name.log" 2>&1 ||
-    echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
+    echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
 }
 table() { $py plots/horizon_study.py table "$@"; }
 

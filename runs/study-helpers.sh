@@ -9,7 +9,7 @@ family() {
   shift
   rm -rf "${out:?}/$name"
   build/gbssn1d converge --N 1600,2400,3200 -j "$(nproc)" --out "$out/$name" "${common[@]}" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped, or the study does not converge (exit 4), see $out/$name.log)"
+    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
 }
 
 # `evolve_run NAME FLAGS...` starts one `gbssn1d evolve` in the background, into $out/NAME, its
