@@ -1,5 +1,7 @@
 #include "cli/cli.hpp"
 
+#include "study/verdict.hpp"
+
 #include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
@@ -255,9 +257,14 @@ void add_resume(CLI::App& app, ResumeArgs& a) {
 
 int run_converge_command(ConvergeArgs& a) {
   if (a.expect_order_opt->count() > 0) {
-    if (!std::isfinite(a.expect_order) || a.expect_order <= 0.0 || a.expect_order > 30.0)
+    // the threshold, --expect-order - kOrderTolerance, must stay positive: at or below 0 a
+    // study whose errors do not fall would meet it
+    if (!std::isfinite(a.expect_order) || a.expect_order <= kOrderTolerance
+        || a.expect_order > 30.0)
       throw ParamError("--expect-order", fmt::format("{}", a.expect_order),
-                       "must be a number in (0, 30]");
+                       fmt::format("must be a number in ({}, 30]: the verdict's threshold, "
+                                   "--expect-order - {}, must stay positive",
+                                   kOrderTolerance, kOrderTolerance));
     a.options.expect_order = a.expect_order;
   }
   return converge(a.options, a.N_list, a.factors, a.fields, a.scaled_times,
