@@ -10,6 +10,15 @@
 
 namespace gbssn1d {
 
+std::uint64_t fnv1a(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
 namespace {
 
 // Format 3: the magic line (with the format's number), the fields below in order (native byte
@@ -21,15 +30,6 @@ constexpr std::string_view magic_2 = "gbssn1d checkpoint 2\n";
 constexpr std::string_view magic_prefix = "gbssn1d checkpoint ";
 /// The largest checkpoint read (16 GiB: a grid of 2e8 points); anything larger is not one.
 constexpr std::uintmax_t max_file_bytes = std::uintmax_t{1} << 34;
-
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 /// Reads fields from the checked bytes; never past their end.
 class Reader {

@@ -14,9 +14,14 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gbssn1d {
+
+/// The FNV-1a 64-bit hash of bytes: the checksum of checkpoint.bin and of a converge member's
+/// converge_samples.bin.
+std::uint64_t fnv1a(std::string_view bytes);
 
 struct Checkpoint {
   std::string config;    ///< the run's configuration (config.toml text)

@@ -35,23 +35,31 @@ namespace fs = std::filesystem;
 namespace {
 
 /// A member with a checkpoint of its own configuration, and the samples saved with it, is
-/// continued from there: `sim` restored, `rec` the saved samples; nothing otherwise.
+/// continued from there: `sim` restored, `rec` the saved samples; nothing otherwise, with the
+/// reason in `afresh` when a checkpoint was there but is not used.
 std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const std::string& config,
-                                        const std::string& samples_key, MemberRecord& rec) {
+                                        const std::string& samples_key, MemberRecord& rec,
+                                        std::string& afresh) {
   const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
   std::optional<Checkpoint> from;
   if (fs::is_regular_file(fs::path(p.out) / "checkpoint.bin")) {
     try {
       Checkpoint c = read_checkpoint(fs::path(p.out) / "checkpoint.bin");
-      if (config_differences(c.config, config, {"tmax", "out", "force"}).empty() && c.t <= p.tmax)
-        if (auto saved = read_samples(samples_file, samples_key, c.step)) {
-          Output::check_resumable(p.out, c.marks);
-          sim.restore(c);
-          rec = std::move(*saved);
-          from = std::move(c);
-        }
-    } catch (const CheckpointError&) { // not resumable: the member starts afresh
-    } catch (const OutputError&) {
+      if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty() || c.t > p.tmax)
+        afresh = "its checkpoint belongs to other inputs";
+      else if (auto saved = read_samples(samples_file, samples_key, c.step)) {
+        Output::check_resumable(p.out, c.marks);
+        sim.restore(c);
+        rec = std::move(*saved);
+        from = std::move(c);
+      } else {
+        afresh = "its converge_samples.bin does not belong to its checkpoint (missing, another "
+                 "step or fields, or its checksum does not match)";
+      }
+    } catch (const CheckpointError& e) { // not resumable: the member starts afresh
+      afresh = e.what();
+    } catch (const OutputError& e) {
+      afresh = e.what();
     }
   }
   return from;
@@ -95,7 +103,12 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
       write_samples(samples_file, samples_key, c.step, rec);
     };
     // A member with a checkpoint of this configuration, and its samples, continues from it.
-    const std::optional<Checkpoint> from = resume_member(sim, p, config, samples_key, rec);
+    std::string afresh;
+    const std::optional<Checkpoint> from = resume_member(sim, p, config, samples_key, rec, afresh);
+    if (!afresh.empty()) {
+      const std::lock_guard lock(log_mutex);
+      say("gbssn1d converge: member N = {} starts afresh: {}\n", p.N, afresh);
+    }
     std::optional<Output> out_storage;
     if (from) {
       const std::lock_guard lock(log_mutex);

@@ -1,9 +1,12 @@
 #include "study/converge_records.hpp"
 
+#include "evolution/checkpoint.hpp"
 #include "io/output.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <sstream>
 
 namespace gbssn1d {
 
@@ -25,12 +28,31 @@ void write_samples(const fs::path& file, const std::string& key, std::int64_t st
       put(&n, sizeof(n));
       put(v.data(), n * sizeof(double));
     }
+  const std::uint64_t hash = fnv1a(blob);
+  put(&hash, sizeof(hash));
   write_file_atomically(file, blob);
 }
 
 std::optional<MemberRecord> read_samples(const fs::path& file, const std::string& key,
                                          std::int64_t step) {
-  std::ifstream in(file, std::ios::binary);
+  std::string bytes;
+  {
+    std::ifstream f(file, std::ios::binary);
+    std::ostringstream text;
+    text << f.rdbuf();
+    if (!f)
+      return std::nullopt;
+    bytes = text.str();
+  }
+  // the checksum over every byte before it: a flipped or cut byte is not reused
+  std::uint64_t stored = 0;
+  if (bytes.size() < sizeof(stored))
+    return std::nullopt;
+  std::memcpy(&stored, bytes.data() + bytes.size() - sizeof(stored), sizeof(stored));
+  bytes.resize(bytes.size() - sizeof(stored));
+  if (fnv1a(bytes) != stored)
+    return std::nullopt;
+  std::istringstream in(bytes);
   auto get = [&](void* p, std::size_t n) {
     return static_cast<bool>(in.read(static_cast<char*>(p), static_cast<std::streamsize>(n)));
   };
@@ -60,6 +82,8 @@ std::optional<MemberRecord> read_samples(const fs::path& file, const std::string
         return std::nullopt;
     }
   }
+  if (in.peek() != std::char_traits<char>::eof())
+    return std::nullopt; // bytes left over: not what write_samples wrote
   return rec;
 }
 

@@ -23,11 +23,13 @@ struct MemberRecord {
 /// A member's samples saved with each of its checkpoints (DIR/N<n>/converge_samples.bin), so
 /// that a rerun of the study continues the member from the checkpoint: what was sampled (`key`:
 /// the fields and the radii, which depend on the study's coarsest member), the step they belong
-/// to, then the rows and the samples, each list as a count and raw doubles. Samples of another
-/// key are never reused.
+/// to, then the rows and the samples, each list as a count and raw doubles, then the FNV-1a
+/// 64-bit hash of every byte before it. Samples of another key, or whose hash does not match
+/// (a flipped or cut byte), are never reused.
 void write_samples(const std::filesystem::path& file, const std::string& key, std::int64_t step,
                    const MemberRecord& rec);
-/// The samples saved with the checkpoint at `step`, or nothing (missing, other step, broken).
+/// The samples saved with the checkpoint at `step`, or nothing (missing, other step, checksum
+/// wrong, broken).
 std::optional<MemberRecord> read_samples(const std::filesystem::path& file, const std::string& key,
                                          std::int64_t step);
 /// The RMS of a - b over [offset, offset + count).

@@ -713,6 +713,29 @@ TEST_CASE("converge: samples saved with a member's checkpoint are reused only fo
   fs::remove_all(fresh);
 }
 
+TEST_CASE("converge: a member's saved samples with a flipped byte are not reused: the member "
+          "starts afresh, says so, and the study's numbers are an uninterrupted study's") {
+  const fs::path a = scratch("converge_flip");
+  const std::string cmd = "converge --N 32,48,64 --grid uniform --rmax 20 --tmax 3 "
+                          "--checkpoint-every 1 --out "
+                          + a.string();
+  const int first = run(cmd).status;
+  REQUIRE((first == 0 || first == 4 || first == 5));
+  const std::string before = without_out(a / "convergence.dat");
+  const fs::path samples = a / "N48" / "converge_samples.bin";
+  std::string bytes = slurp(samples);
+  REQUIRE(bytes.size() > 64);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
+  std::ofstream(samples, std::ios::binary) << bytes;
+  const Result rerun = run(cmd + " --force");
+  INFO(rerun.err);
+  CHECK(rerun.status == first);
+  CHECK(rerun.err.find("member N = 48 starts afresh") != std::string::npos);
+  CHECK(rerun.err.find("checksum") != std::string::npos);
+  CHECK(without_out(a / "convergence.dat") == before);
+  fs::remove_all(a);
+}
+
 // A closed terminal (SIGHUP) and a batch scheduler's warning ahead of its time limit (SIGUSR1,
 // SIGUSR2) stop a run as SIGTERM does: the step finished, a checkpoint, the end line, 128 + n.
 TEST_CASE("SIGTERM in a run's first milliseconds: nothing written, or a folder that resumes") {
