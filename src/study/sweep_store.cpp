@@ -109,9 +109,38 @@ std::optional<RecordedStatus> recorded_status(const fs::path& status_file) {
   return r;
 }
 
-bool member_done(const fs::path& status_file) {
-  const auto r = recorded_status(status_file);
-  return r && (r->status == "ok" || r->status == "invalid" || r->status == "blew-up");
+std::optional<std::string> member_output_problem(const fs::path& dir, const std::string& name,
+                                                 const std::string& status) {
+  if (status != "ok" && status != "blew-up")
+    return std::nullopt;
+  std::error_code ec;
+  if (!fs::is_directory(dir / name, ec))
+    return fmt::format("its folder {} is missing", (dir / name).string());
+  const fs::path series = dir / name / "timeseries.dat";
+  if (!fs::is_regular_file(series, ec))
+    return fmt::format("its {} is missing", series.string());
+  // the end line the run wrote last: read the file's tail only
+  std::ifstream in(series, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
+  in.seekg(from);
+  std::string tail(static_cast<std::size_t>(size - from), '\0');
+  in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+  while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r'))
+    tail.pop_back();
+  const std::string last =
+      tail.substr(tail.rfind('\n') == std::string::npos ? 0 : tail.rfind('\n') + 1);
+  const std::string want = status == "ok" ? "# end: completed" : "# end: stopped";
+  if (!in || last.rfind(want, 0) != 0)
+    return fmt::format("its {} is cut short (it does not end with '{}')", series.string(), want);
+  return std::nullopt;
+}
+
+bool member_done(const fs::path& dir, const std::string& name) {
+  const auto r = recorded_status(dir / "logs" / (name + ".status"));
+  return r && (r->status == "ok" || r->status == "invalid" || r->status == "blew-up")
+         && !member_output_problem(dir, name, r->status);
 }
 
 std::string token(std::string s) {

@@ -23,8 +23,17 @@ std::optional<RecordedStatus> recorded_status(const std::filesystem::path& statu
 /// which a rerun would only repeat. A member that failed (a write error, killed by a signal of
 /// its own such as the kernel's out-of-memory SIGKILL) or was interrupted is not: a rerun of
 /// the sweep, or its requeued task line, runs it again, from its checkpoint where it has one.
-/// A missing, empty or broken status file counts as not done.
-bool member_done(const std::filesystem::path& status_file);
+/// A missing, empty or broken status file counts as not done, and so does a member recorded
+/// ok or blew-up whose output is not there (member_output_problem): its folder deleted, its
+/// timeseries.dat missing or cut short.
+bool member_done(const std::filesystem::path& dir, const std::string& name);
+
+/// Why the output of member `name` of the sweep in `dir`, recorded with `status`, is not what
+/// that status says it wrote (ok: a timeseries.dat ending "# end: completed"; blew-up: one
+/// ending "# end: stopped"), or nothing when it is (or the status writes no output).
+std::optional<std::string> member_output_problem(const std::filesystem::path& dir,
+                                                 const std::string& name,
+                                                 const std::string& status);
 
 /// `s` as one word of a status file or summary.dat: blanks as '_', empty as '-'.
 std::string token(std::string s);

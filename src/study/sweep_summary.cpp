@@ -247,6 +247,11 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
       statuses[k] = why ? "invalid" : "missing";
       reasons[k] = why ? token(*why) : "-";
     }
+    // a member recorded ok or blew-up whose output is gone or cut short is not a result
+    if (const auto why = member_output_problem(dir, members[k].name, statuses[k])) {
+      statuses[k] = "missing";
+      reasons[k] = token(*why);
+    }
     results[k] = read_result(dir / members[k].name / "timeseries.dat");
   }
   const std::vector<double> orders = final_H_orders(members, resolution_axis, statuses, results);

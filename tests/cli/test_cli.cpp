@@ -1126,3 +1126,35 @@ TEST_CASE("one writer per folder: converge and a whole sweep are refused on a fo
   fs::remove_all(study);
   fs::remove_all(sweep);
 }
+
+TEST_CASE("sweep: a member recorded ok whose folder is gone or whose timeseries.dat is cut short "
+          "is missing, not ok: --collect says so (exit 1: not complete), a rerun runs it again") {
+  const fs::path dir = scratch("sweep_gone");
+  const std::string cmd = "sweep --out " + dir.string()
+                          + " --sweep rahA=0,0.5 --id 1log-trumpet --grid uniform --N 100 "
+                            "--rmax 20 --tmax 1";
+  REQUIRE(run(cmd).status == 0);
+  const std::string complete = slurp(dir / "rahA=0" / "timeseries.dat");
+  fs::remove_all(dir / "rahA=0.5");
+  {
+    // cut short: the end line and the last rows gone (a copy interrupted, a full disk)
+    std::ofstream(dir / "rahA=0" / "timeseries.dat") << complete.substr(0, complete.size() / 2);
+  }
+  const Result collect = run(cmd + " --collect");
+  INFO(collect.err);
+  CHECK(collect.status == 1); // members missing: collect again once they have run
+  CHECK(collect.err.find("2 missing") != std::string::npos);
+  const std::string summary = slurp(dir / "summary.dat");
+  CHECK(summary.find("0 missing") != std::string::npos);
+  CHECK(summary.find("0.5 missing") != std::string::npos);
+  CHECK(summary.find("is_cut_short") != std::string::npos);
+  CHECK(summary.find("is_missing") != std::string::npos);
+  const Result rerun = run(cmd);
+  INFO(rerun.err);
+  CHECK(rerun.status == 0);
+  CHECK(rerun.err.find("rahA=0.5 was recorded ok, but its folder") != std::string::npos);
+  CHECK(rerun.err.find("rahA=0 was recorded ok, but its") != std::string::npos);
+  CHECK(slurp(dir / "rahA=0" / "timeseries.dat") == complete);
+  CHECK(slurp(dir / "summary.dat").find("missing") == std::string::npos);
+  fs::remove_all(dir);
+}
