@@ -338,10 +338,20 @@ void validate_output_dir(const Params& p) {
                                   "end, or give another folder");
     if (!folder_is_empty(dir) && !p.force)
       throw ParamError("--out", p.out, "exists and is not empty (use --force to overwrite)");
+    // gbssn1d writes no file through a symbolic link: with --force, a link where it writes
+    // would send a file elsewhere (or be replaced): refused, whichever file it stands for
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+      if (entry.is_symlink(ec))
+        throw ParamError("--out", p.out,
+                         fmt::format("holds a symbolic link, {}: gbssn1d writes no file through "
+                                     "a link; remove it, or give another --out",
+                                     printable(entry.path().filename().string())));
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
       throw ParamError("--out", p.out, "is not writable");
     return;
   }
+  if (fs::is_symlink(fs::symlink_status(dir, ec)))
+    throw ParamError("--out", p.out, "is a symbolic link to nothing (its target does not exist)");
   // The nearest existing ancestor must be a writable directory.
   fs::path parent = fs::absolute(dir, ec).parent_path();
   while (!parent.empty() && !fs::exists(parent, ec))

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
@@ -40,14 +41,36 @@ std::vector<std::string> horizon_columns() {
           "r_root2", "R_root2", "r_root3", "R_root3", "level"};
 }
 
+namespace {
+
+/// `path` opened for writing (created, or emptied) without following a symbolic link: a link
+/// there is refused, naming it, rather than written through.
+std::FILE* open_for_writing(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw OutputError(
+        errno == ELOOP
+            ? fmt::format("cannot write {}: it is a symbolic link (gbssn1d writes "
+                          "no file through a link)",
+                          path.string())
+            : fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(errno)));
+  std::FILE* f = ::fdopen(fd, "w");
+  if (!f) {
+    const int err = errno;
+    ::close(fd);
+    throw OutputError(
+        fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(err)));
+  }
+  return f;
+}
+
+} // namespace
+
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
   // a temporary file, flushed to disk, then renamed over the old one: a reader (or a run killed
   // meanwhile) sees the old file or the new one, never a mixture
   const std::filesystem::path tmp = path.string() + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f)
-    throw OutputError(
-        fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
+  std::FILE* f = open_for_writing(tmp);
   const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0
                   && ::fsync(::fileno(f)) == 0;
   std::fclose(f);
@@ -88,10 +111,7 @@ std::string header_with_columns(const std::string& parameter_header,
 DataFile::DataFile(const std::filesystem::path& path, const std::string& parameter_header,
                    const std::vector<std::string>& columns)
     : path_(path) {
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_)
-    throw OutputError(
-        fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(errno)));
+  file_ = open_for_writing(path);
   const std::string text = header_with_columns(parameter_header, columns);
   std::fputs(text.c_str(), file_);
   header_size_ = text.size();
@@ -116,10 +136,7 @@ DataFile::DataFile(const std::filesystem::path& path, const std::string& paramet
   }
   const std::string head = header_with_columns(parameter_header, columns);
   const std::filesystem::path tmp = path.string() + ".resume";
-  file_ = std::fopen(tmp.c_str(), "w");
-  if (!file_)
-    throw OutputError(
-        fmt::format("cannot open {} for writing: {}", tmp.string(), std::strerror(errno)));
+  file_ = open_for_writing(tmp);
   write(head.data(), head.size());
   write(body.data(), body.size());
   header_size_ = head.size();

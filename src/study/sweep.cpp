@@ -194,6 +194,22 @@ int emit_tasks(const SweepOptions& options, const std::vector<SweepAxis>& axes,
   std::size_t emitted = 0;
   const std::string lines = task_lines(options, members, evolve_args, exe, emitted);
   const std::string abs_out = fs::absolute(options.out).lexically_normal().string();
+  if (abs_out.find_first_of("\n\r") != std::string::npos)
+    throw ParamError("--out", printable(options.out),
+                     "holds a line break, which would split its task lines");
+  // `-`: the lines go to standard output (a pipe into a scheduler), not to a file named '-'
+  if (options.emit_tasks == "-") {
+    if (std::fwrite(lines.data(), 1, lines.size(), stdout) != lines.size()
+        || std::fflush(stdout) != 0)
+      throw OutputError(fmt::format("--emit-tasks -: the command lines could not be written to "
+                                    "standard output: {}",
+                                    std::strerror(errno)));
+    record_axis_order(options.out, axes);
+    say("gbssn1d sweep: {} member command lines written to standard output (of {} members); "
+        "then `gbssn1d sweep ... --collect` with the same flags builds summary.dat\n",
+        emitted, members.size());
+    return 0;
+  }
   check_path("--emit-tasks", options.emit_tasks);
   // the task file must not take the place of the folder its lines run members into
   {
@@ -205,9 +221,6 @@ int emit_tasks(const SweepOptions& options, const std::vector<SweepAxis>& axes,
                          "names --out's folder (or one it lies in): the task lines would take "
                          "its place");
   }
-  if (abs_out.find_first_of("\n\r") != std::string::npos)
-    throw ParamError("--out", printable(options.out),
-                     "holds a line break, which would split its task lines");
   // an existing file is not overwritten unless it holds these very lines (a rerun of the
   // same emit); a device or FIFO (/dev/stdout into a pipe) is written to as it is
   if (fs::is_regular_file(options.emit_tasks)) {

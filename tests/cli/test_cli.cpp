@@ -1158,3 +1158,42 @@ TEST_CASE("sweep: a member recorded ok whose folder is gone or whose timeseries.
   CHECK(slurp(dir / "summary.dat").find("missing") == std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("--force into a folder holding a symbolic link is refused, naming the link, and the "
+          "file it points at is left alone; --out a dangling link is refused as one") {
+  const fs::path out = scratch("forced_link"), outside = scratch("outside_file");
+  fs::create_directories(out);
+  std::ofstream(outside) << "precious\n";
+  fs::create_symlink(outside, out / "horizon.dat");
+  const Result r = run("evolve --tmax 0 --force --out " + out.string());
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find("holds a symbolic link, horizon.dat") != std::string::npos);
+  CHECK(slurp(outside) == "precious\n");
+  CHECK_FALSE(fs::exists(out / "config.toml"));
+  // --out itself a link to nothing
+  const fs::path dangling = scratch("dangling_out");
+  fs::create_symlink(scratch("nowhere"), dangling);
+  const Result d = run("evolve --tmax 0 --out " + dangling.string());
+  INFO(d.err);
+  CHECK(d.status == 2);
+  CHECK(d.err.find("symbolic link to nothing") != std::string::npos);
+  CHECK_FALSE(fs::exists(scratch("nowhere")));
+  fs::remove_all(out);
+  fs::remove(outside);
+  fs::remove(dangling);
+}
+
+TEST_CASE("sweep --emit-tasks - writes the task lines to standard output, not to a file named -") {
+  const fs::path dir = scratch("emit_stdout", true);
+  const Result r = run("sweep --out " + (dir / "sw").string()
+                       + " --sweep rahA=0,0.5 --id 1log-trumpet --tmax 1 --emit-tasks -");
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(count_lines(r.out) == 2);
+  CHECK(r.out.find("--member rahA=0.5") != std::string::npos);
+  CHECK_FALSE(fs::exists(fs::current_path() / "-"));
+  CHECK_FALSE(fs::exists(dir / "-"));
+  fs::remove_all(dir);
+}

@@ -2,6 +2,7 @@
 // timeseries.dat compared with the quantity computed directly from the state.
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
+#include "io/output.hpp"
 
 #include "../test_support.hpp"
 
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <unistd.h>
@@ -110,4 +113,27 @@ TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)
   CHECK(blocks[2] == "1.4");
   CHECK(blocks[3] == "2.1");
   CHECK(blocks.back() == "3.05");
+}
+
+TEST_CASE("output files are never written through a symbolic link: a link where a file goes is "
+          "an error naming it, and its target is left alone") {
+  const auto dir = gbssn1d::testing::scratch("output_links", true);
+  const auto target = dir / "target.txt";
+  std::ofstream(target) << "precious\n";
+  std::filesystem::create_symlink(target, dir / "timeseries.dat");
+  std::filesystem::create_symlink(target, dir / "config.toml.tmp");
+  for (auto write :
+       {std::function<void()>([&] { DataFile(dir / "timeseries.dat", "", {"t"}); }),
+        std::function<void()>([&] { write_file_atomically(dir / "config.toml", "N = 1\n"); })}) {
+    try {
+      write();
+      FAIL("written through a link");
+    } catch (const OutputError& e) {
+      CHECK(std::string(e.what()).find("symbolic link") != std::string::npos);
+    }
+  }
+  std::ifstream in(target);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text == "precious\n");
+  std::filesystem::remove_all(dir);
 }
