@@ -27,7 +27,8 @@ import time
 
 import numpy as np
 
-from gbssn1d_data import parse, read_text, style, qualitative_colors, line_styles
+from gbssn1d_data import (DataError, line_styles, parse, qualitative_colors, read_text,
+                          run_script, style)
 
 KINDS = {
     'boxes': (['--grid', 'boxes', '--levels', '9'], [32, 48, 64, 96]),
@@ -38,7 +39,10 @@ GAUGES = {'standard': [], 'stretched': ['--rahA', '0.5', '--rah0', '0.89']}
 
 
 def rms_H(path, t0, t1):
-    columns, blocks = parse(read_text(path))
+    columns, blocks = parse(read_text(path), path)
+    missing = [c for c in ('t', 'H_L2_R') if c not in columns]
+    if missing:
+        raise DataError(f"no column {', '.join(missing)}", path)
     data = blocks[0][1]
     t = data[:, columns.index('t')]
     H = data[:, columns.index('H_L2_R')]
@@ -93,6 +97,10 @@ def main():
     ap.add_argument('--id', default='1log-trumpet',
                     help='initial data: 1log-trumpet (default), wormhole or maximal-trumpet')
     args = ap.parse_args()
+    if shutil.which(args.bin) is None or os.path.isdir(args.bin):
+        raise DataError('no such program (--bin: the gbssn1d executable)', args.bin)
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        raise DataError('is not a folder (--out)', args.out)
     os.makedirs(args.out, exist_ok=True)
     kinds = args.kinds.split(',')
     gauges = args.gauges.split(',')
@@ -144,4 +152,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

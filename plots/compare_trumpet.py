@@ -12,8 +12,8 @@ import argparse
 
 import numpy as np
 
-from gbssn1d_data import (column, header_params, parse, read_text, run_description, set_titles,
-                          style)
+from gbssn1d_data import (column, header_params, parse, read_text, run_description, run_script,
+                          set_titles, style)
 
 
 def main():
@@ -26,11 +26,11 @@ def main():
     ap.add_argument('--title', help='default: the lapse at the time compared against the '
                                     'trumpet; what was run is written below it')
     a = ap.parse_args()
-    cols_t, blocks_t = parse(read_text(a.trumpet))
+    cols_t, blocks_t = parse(read_text(a.trumpet), a.trumpet)
     Rt = column(cols_t, blocks_t[0][1], 'R_areal')
     at = column(cols_t, blocks_t[0][1], 'alpha')
     run_text = read_text(a.run)
-    cols, blocks = parse(run_text)
+    cols, blocks = parse(run_text, a.run)
     times = np.array([t for t, _ in blocks])
     t, data = blocks[-1] if a.time is None else blocks[int(np.argmin(abs(times - a.time)))]
     r = column(cols, data, 'r')
@@ -68,4 +68,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

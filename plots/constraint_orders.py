@@ -19,8 +19,9 @@ import math
 
 import numpy as np
 
-from gbssn1d_data import (axis_label, column, common_params, header_params, parse, read_text,
-                          run_description, sequential_colors, set_titles, style)
+from gbssn1d_data import (DataError, axis_label, column, common_params, header_params, parse,
+                          read_text, run_description, run_script, sequential_colors,
+                          set_titles, style)
 
 
 def common_rows(runs, paths):
@@ -66,9 +67,12 @@ def main():
     runs, params_list = [], []
     for path in a.files:
         text = read_text(path)
+        columns, blocks = parse(text, path)
         params_list.append(header_params(text))
-        n = int(params_list[-1]['N'])
-        columns, blocks = parse(text)
+        try:
+            n = int(params_list[-1]['N'])
+        except (KeyError, ValueError):
+            raise DataError('no N (a whole number) in the header', path) from None
         data = blocks[0][1]
         runs.append((n, column(columns, data, 't'), column(columns, data, a.y), path))
     runs.sort(key=lambda run: run[0])
@@ -116,4 +120,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

@@ -17,7 +17,7 @@ import re
 
 import numpy as np
 
-from gbssn1d_data import parse, read_text, sequential_colors, style
+from gbssn1d_data import DataError, parse, read_text, run_script, sequential_colors, style
 
 
 def header_value(text, key):
@@ -45,11 +45,12 @@ def main():
     times = [float(x) for x in args.times.split(',')]
     runs = []
     for d in args.runs:
-        text = read_text(os.path.join(d, 'profiles.dat'))
-        columns, blocks = parse(text)
+        path = os.path.join(d, 'profiles.dat')
+        text = read_text(path)
+        columns, blocks = parse(text, path)
         n = header_value(text, 'N')
         if n is None:
-            raise SystemExit(f'{d}: no N in the header')
+            raise DataError('no N in the header', path)
         runs.append((d, n, columns, blocks))
     n0 = runs[0][1]
     import matplotlib
@@ -83,4 +84,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

@@ -9,16 +9,74 @@ import sys
 import numpy as np
 
 
+class DataError(SystemExit):
+    """Input that is not gbssn1d output: a missing file, a folder, a binary file, a line that
+    is not what the file's format allows. Its text is one line, '<script>: <file>: <why>';
+    run_script() writes it to stderr and exits with status 2, without a traceback (a script not
+    run through run_script() still prints the line, as SystemExit, and exits with status 1)."""
+
+    def __init__(self, why, path=None, table_ok=True):
+        super().__init__(why)
+        self.why, self.path = why, path
+        self.table_ok = table_ok  # parse_table() may still read the text as a table of words
+
+    def line(self):
+        where = f'{display_name(self.path)}: ' if self.path is not None else ''
+        return f'{script_name()}: {where}{self.why}'
+
+    @property
+    def code(self):  # what the interpreter prints for an uncaught SystemExit
+        return self.line()
+
+    def __str__(self):
+        return self.line()
+
+
+def script_name():
+    """The running script's file name, as argparse names it in its messages."""
+    return os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else 'python3'
+
+
+def display_name(path):
+    return 'standard input' if path == '-' else str(path)
+
+
+def run_script(main, *args):
+    """Runs a script's main(*args): input that is not gbssn1d output (DataError) ends the
+    script with one line '<script>: <file>: <why>' on stderr and exit status 2, no traceback."""
+    try:
+        return main(*args)
+    except DataError as e:
+        sys.stdout.flush()
+        sys.stderr.write(e.line() + '\n')
+        sys.exit(2)
+
+
 def read_text(path):
-    """The text of a path, or of standard input for '-'."""
-    if path == '-':
-        return sys.stdin.read()
-    with open(path) as f:
-        return f.read()
+    """The text of a path, or of standard input for '-'. A path that cannot be read as text
+    (missing, a folder, unreadable, binary) raises DataError naming it."""
+    try:
+        if path == '-':
+            text = sys.stdin.buffer.read().decode('utf-8')
+        else:
+            with open(path, encoding='utf-8') as f:
+                text = f.read()
+    except FileNotFoundError:
+        raise DataError('no such file', path) from None
+    except IsADirectoryError:
+        raise DataError('is a folder, not a file', path) from None
+    except UnicodeDecodeError:
+        raise DataError('not a text file (binary?)', path) from None
+    except OSError as e:
+        raise DataError(e.strerror or str(e), path) from None
+    if '\0' in text:
+        raise DataError('not a text file (binary?)', path)
+    return text
 
 
-def parse(text):
-    """Returns (columns, blocks): blocks is a list of (t or None, 2D array)."""
+def parse(text, path=None):
+    """Returns (columns, blocks): blocks is a list of (t or None, 2D array). Text that is not
+    gbssn1d output raises DataError (naming path, the file the text came from)."""
     columns, blocks = None, []
     t, rows = None, []
 
@@ -45,7 +103,11 @@ def parse(text):
         if s.startswith('#'):
             if s.startswith('# t ='):
                 close()
-                t = float(s.split('=')[1])
+                try:
+                    t = float(s.partition('=')[2])
+                except ValueError:
+                    raise DataError(f"line {k + 1}: '{s}' is not a block's time "
+                                    "('# t = <number>')", path, table_ok=False) from None
             elif (not names_first and rows == [] and not blocks
                   and not s.startswith('# end:')):
                 columns = s[1:].split()
@@ -56,24 +118,27 @@ def parse(text):
             row = None
         if row is None or (columns is not None and len(row) != len(columns)):
             if k == last:  # a file cut mid-line (a killed run): keep what is complete
-                sys.stderr.write('note: dropped an incomplete last line\n')
+                where = f'{display_name(path)}: ' if path is not None else ''
+                sys.stderr.write(f'note: {where}dropped an incomplete last line\n')
                 continue
-            raise SystemExit(f'line {k + 1} is not a row of {len(columns or [])} numbers')
+            raise DataError(f'line {k + 1} is not a row of {len(columns or [])} numbers', path)
         rows.append(row)
     close()
     if columns is None or not blocks:
-        raise SystemExit('no gbssn1d data found (no column header or no rows)')
+        raise DataError('no gbssn1d data found (no column header or no rows)', path)
     return columns, blocks
 
 
-def parse_table(text):
+def parse_table(text, path=None):
     """(columns, data) of any output file, summary.dat included: parse() for numeric files;
     for a table with words (a sweep's status and reason) the numeric columns as floats and the
     word columns as NaN. Returns the first block only."""
     try:
-        columns, blocks = parse(text)
+        columns, blocks = parse(text, path)
         return columns, blocks[0][1]
-    except SystemExit:
+    except DataError as e:
+        if not e.table_ok:  # a malformed file, not a table with words
+            raise
         lines = [l for l in text.splitlines() if l.strip()]
         names = lines[0][1:].split() if lines and lines[0].startswith('#') else None
         rows = [l.split() for l in lines if not l.startswith('#')]
@@ -93,7 +158,7 @@ def series(path):
     when the file does not exist (a run that stopped before writing it)."""
     if not os.path.exists(path):
         return None
-    columns, data = parse_table(read_text(path))
+    columns, data = parse_table(read_text(path), path)
     return {c: data[:, i] for i, c in enumerate(columns)}
 
 
@@ -103,7 +168,7 @@ def blocks(path):
     profiles.dat has one block per output time, scaled_H.dat one per --scaled-times;
     timeseries.dat and the other one-table files give one block with t = None. The loader the
     README documents for numpy users (numpy.genfromtxt reads a file's blocks as one table)."""
-    columns, parsed = parse(read_text(path))
+    columns, parsed = parse(read_text(path), path)
     dtype = [(c, float) for c in columns]
     return [(t, np.array([tuple(row) for row in data], dtype=dtype)) for t, data in parsed]
 
@@ -119,6 +184,16 @@ def column(columns, data, name):
 # take a sequential colormap instead, where darker means later or finer.
 QUALITATIVE = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#8c564b', '#17becf']
 LINESTYLES = ['-', '--', ':', '-.']
+
+
+def pyplot():
+    """matplotlib.pyplot (non-interactive, styled): imported once the input is read, so that
+    input that is not gbssn1d output is refused without waiting for matplotlib."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    style(plt)
+    return plt
 
 
 def style(plt):

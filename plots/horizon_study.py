@@ -36,13 +36,16 @@ import textwrap
 
 import numpy as np
 
-from gbssn1d_data import (axis_label, header_params, params_of, parse, read_text,
-                          run_description, sequential_colors, style)
+from gbssn1d_data import (DataError, axis_label, header_params, params_of, parse, read_text,
+                          run_description, run_script, sequential_colors, style)
 
 
 def load(directory, key):
     """{N: (t, norm)} of one converge directory."""
-    columns, blocks = parse(read_text(os.path.join(directory, 'convergence.dat')))
+    path = os.path.join(directory, 'convergence.dat')
+    columns, blocks = parse(read_text(path), path)
+    if 't' not in columns:
+        raise DataError('no column t', path)
     data = blocks[0][1]
     t = data[:, columns.index('t')]
     out = {}
@@ -50,7 +53,7 @@ def load(directory, key):
         if c.startswith(key + '_N'):
             out[int(c[len(key) + 2:])] = (t, data[:, columns.index(c)])
     if not out:
-        raise SystemExit(f"{directory}: no column {key}_N<n>")
+        raise DataError(f'no column {key}_N<n>', path)
     return out
 
 
@@ -60,7 +63,7 @@ def end_times(directory):
     for name in os.listdir(directory):
         path = os.path.join(directory, name, 'timeseries.dat')
         if name.startswith('N') and os.path.exists(path):
-            columns, blocks = parse(read_text(path))
+            columns, blocks = parse(read_text(path), path)
             ends[int(name[1:])] = blocks[0][1][-1, columns.index('t')]
     return ends
 
@@ -174,7 +177,7 @@ def member_costs(directory, t1):
             if line.startswith('# ') and ' = ' in line:
                 k, v = line[2:].split(' = ', 1)
                 params[k.strip()] = v.strip().strip('"')
-        columns, blocks = parse(text)
+        columns, blocks = parse(text, path)
         data = blocks[0][1]
         t = data[:, columns.index('t')]
         n = int(name[1:])
@@ -303,4 +306,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

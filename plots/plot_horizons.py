@@ -19,14 +19,9 @@ import sys
 
 import numpy as np
 
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.lines as mlines
-import matplotlib.pyplot as plt
-
 from gbssn1d_data import (LINESTYLES, QUALITATIVE, axis_label, column, header_params,
-                          label_keys, parse, read_text, run_description, run_label,
-                          sequential_colors, shifted, sort_key, style)
+                          label_keys, parse, pyplot, read_text, run_description, run_label,
+                          run_script, sequential_colors, shifted, sort_key)
 
 
 def phrase(key, value):
@@ -37,7 +32,7 @@ def load(paths, y):
     runs = []
     for path in paths:
         text = read_text(path)
-        columns, blocks = parse(text)
+        columns, blocks = parse(text, path)
         data = blocks[0][1]
         values = column(columns, data, y)
         found = np.isfinite(values).any()
@@ -52,6 +47,7 @@ def load(paths, y):
 def layout(runs, keys):
     """How the runs are drawn: a list of panels (title, runs) and, per run, 'color', 'ls' and
     'label' set; returns (panels, figure legend handles or None)."""
+    import matplotlib.lines as mlines
     per_panel = len(QUALITATIVE)
     if len(runs) <= per_panel:  # one panel, a colour per run
         for run, color in zip(runs, QUALITATIVE):
@@ -121,8 +117,9 @@ def main():
                          'else the column\'s name; what was run is written below it')
     ap.add_argument('-o', '--output', required=True)
     a = ap.parse_args()
-    style(plt)
     runs = load(a.files, a.y)
+    plt = pyplot()
+    import matplotlib.lines as mlines
     wanted = a.label_by.split(',')
     params_list = [r['params'] for r in runs]
     keys = [k for k in wanted if len({p.get(k) for p in params_list}) > 1]
@@ -186,4 +183,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

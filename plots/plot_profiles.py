@@ -6,15 +6,12 @@
 """
 import argparse
 
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.pyplot as plt
 import numpy as np
 
 from gbssn1d_data import (axis_label, column, finish, header_params, label_keys, legend_name,
-                          line_styles, log_axis_label, parse, qualitative_colors, read_text,
-                          run_description, run_labels, sequential_colors, several_label, sort_key,
-                          style)
+                          line_styles, log_axis_label, parse, pyplot, qualitative_colors, read_text,
+                          run_description, run_labels, run_script, sequential_colors, several_label,
+                          sort_key)
 
 
 def main():
@@ -36,6 +33,7 @@ def main():
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
     a = ap.parse_args()
     texts = [read_text(path) for path in a.files]
+    parsed = [parse(text, path) for path, text in zip(a.files, texts)]
     params_list = [header_params(text) for text in texts]
     labels = run_labels(a.files, params_list, a.label)
     # the runs in the order of the parameters that tell them apart (N = 600, 900, 1200 rather
@@ -43,15 +41,14 @@ def main():
     keys = label_keys(params_list)
     order = sorted(range(len(a.files)),
                    key=lambda k: [sort_key(params_list[k].get(key)) for key in keys])
-    texts, params_list, labels = ([seq[k] for k in order] for seq in (texts, params_list, labels))
-    style(plt)
+    parsed, params_list, labels = ([seq[k] for k in order] for seq in (parsed, params_list, labels))
+    plt = pyplot()
     fig, ax = plt.subplots()
     # Curves are (file, column) series at several times: with one time, a colour per series;
     # with several, a sequential colour per time (darker is later) and a line style per series.
     n_series = len(a.files) * len(a.y)
     series = 0
-    for k, text in enumerate(texts):
-        columns, blocks = parse(text)
+    for k, (columns, blocks) in enumerate(parsed):
         times = np.array([t if t is not None else 0.0 for t, _ in blocks])
         wanted = [float(v) for v in a.times.split(',')] if a.times else sorted({times[0], times[-1]})
         if len(wanted) == 1:
@@ -89,4 +86,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

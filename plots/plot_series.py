@@ -16,14 +16,10 @@ import sys
 
 import numpy as np
 
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.pyplot as plt
-
 from gbssn1d_data import (axis_label, column, common_params, finish, header_params, legend_name,
-                          line_styles, log_axis_label, parse_table, qualitative_colors, read_text,
-                          run_description, run_labels, sequential_colors, several_label, shifted,
-                          style)
+                          line_styles, log_axis_label, parse_table, pyplot, qualitative_colors,
+                          read_text, run_description, run_labels, run_script,
+                          sequential_colors, several_label, shifted)
 
 
 def sweep_line(text):
@@ -50,10 +46,11 @@ def main():
     ap.add_argument('-o', '--output', required=True, help='PNG file to write')
     a = ap.parse_args()
     texts = [read_text(path) for path in a.files]
+    tables = [parse_table(text, path) for path, text in zip(a.files, texts)]
     params_list = [header_params(text) for text in texts]
     shared = common_params(params_list)
     labels = run_labels(a.files, params_list, a.label)
-    style(plt)
+    plt = pyplot()
     fig, ax = plt.subplots()
     # one file: a colour per column; several: a colour per file and a line style per column
     if len(a.files) == 1:
@@ -65,8 +62,7 @@ def main():
         styles = line_styles(len(a.y), 'columns')
         column_colors = None
     targets = {}  # the horizon shift's target h: {h: colours of the runs aiming at it}
-    for k, (path, text, params) in enumerate(zip(a.files, texts, params_list)):
-        columns, data = parse_table(text)
+    for k, (path, (columns, data), params) in enumerate(zip(a.files, tables, params_list)):
         for j, y in enumerate(a.y):
             values = column(columns, data, y)
             if not np.isfinite(values).any():
@@ -95,4 +91,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

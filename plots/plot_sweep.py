@@ -16,24 +16,30 @@ import math
 import os
 import sys
 
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.colors as mcolors
-import matplotlib.pyplot as plt
-import matplotlib.ticker as mticker
 import numpy as np
 
-from gbssn1d_data import (axis_label, header_params, params_of, read_text, run_description,
-                          style, window)
+from gbssn1d_data import (DataError, axis_label, header_params, params_of, pyplot, read_text,
+                          run_description, run_script, window)
 
 
 def load(path):
-    lines = [l for l in read_text(path).splitlines() if l.strip()]
-    names = lines[0][1:].split()
+    """(column names, rows of words, the text) of a sweep's summary.dat."""
+    text = read_text(path)
+    lines = [l for l in text.splitlines() if l.strip()]
+    names = lines[0][1:].split() if lines and lines[0].startswith('#') else []
     rows = [l.split() for l in lines if not l.startswith('#')]
     if 'status' not in names or not rows:
-        raise SystemExit(f'{path} is not a sweep summary (no status column or no rows)')
-    return names, rows
+        raise DataError('not a sweep summary (no status column or no rows)', path)
+    for k, row in enumerate(rows):
+        if len(row) != len(names):
+            raise DataError(f'row {k + 1} has {len(row)} fields, not the {len(names)} columns',
+                            path)
+    needed = [c for c in ('M_ah_err_max', 'H_L2_R_max') if c not in names]
+    if 'rah0' in names and 'r_ah_final' not in names:
+        needed.append('r_ah_final')
+    if needed:
+        raise DataError(f"not a sweep summary (no column {', '.join(needed)})", path)
+    return names, rows, text
 
 
 def number(word):
@@ -93,7 +99,7 @@ def main():
     ap.add_argument('-y', default='rah0', help='swept column on the y axis (default rah0)')
     ap.add_argument('-o', '--output', required=True)
     a = ap.parse_args()
-    names, rows = load(a.summary)
+    names, rows, text = load(a.summary)
     col = {n: k for k, n in enumerate(names)}
     swept = names[:col['status']]
     for axis in (a.x, a.y):
@@ -123,7 +129,9 @@ def main():
     ]
     if not h_of:
         quantities = quantities[1:]
-    style(plt)
+    plt = pyplot()
+    import matplotlib.colors as mcolors
+    import matplotlib.ticker as mticker
     fig, axes = plt.subplots(1, len(quantities), figsize=(4.6 * len(quantities), 4.2),
                              squeeze=False)
     for ax, (title, bar_label, value, note) in zip(axes[0], quantities):
@@ -168,7 +176,7 @@ def main():
             bar.ax.yaxis.set_minor_formatter(mticker.NullFormatter())
             bar.ax.tick_params(labelsize=9)
             bar.set_label(bar_label, fontsize=9)
-    header = [l for l in read_text(a.summary).splitlines() if l.startswith('# sweep over')]
+    header = [l for l in text.splitlines() if l.startswith('# sweep over')]
     ran = run_description(members)
     ends = {p.get('tmax') for p in members}
     if ran and len(ends) == 1 and None not in ends:
@@ -183,4 +191,4 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    run_script(main)

@@ -19,7 +19,7 @@ import gbssn1d_data as data  # noqa: E402
 
 def end_line(run):
     """(completed, t, r) from the last line of a run's timeseries.dat and its log."""
-    log = open(run + '.log').read() if os.path.exists(run + '.log') else ''
+    log = data.read_text(run + '.log') if os.path.exists(run + '.log') else ''
     m = re.search(r'non-finite at t = ([0-9.e+-]+), r = ([0-9.e+-]+) in (\w+)', log)
     if m:
         return False, float(m.group(1)), float(m.group(2)), m.group(3)
@@ -58,7 +58,7 @@ def onset(out):
         path = os.path.join(out, f'sinh-upwind-gd-N{n}', 'profiles.dat')
         if not os.path.exists(path):
             continue
-        columns, blocks = data.parse(data.read_text(path))
+        columns, blocks = data.parse(data.read_text(path), path)
         amp = []
         for t, d in blocks:
             B = d[:, columns.index('B')]
@@ -74,7 +74,7 @@ def onset(out):
     if os.path.exists(pred):
         print('\npredicted by docs/hyperbolicity.py (spacing factor, t_onset, radius of the '
               'largest rate, rate):')
-        print(open(pred).read().rstrip())
+        print(data.read_text(pred).rstrip())
 
 
 def rms_H(run):
@@ -126,7 +126,15 @@ def converge(out):
               + '; '.join(f'{o:.2f} ({f})' for o, f in low))
 
 
-if __name__ == '__main__':
+def main():
     if len(sys.argv) != 3 or sys.argv[1] not in ('onset', 'converge'):
         sys.exit(__doc__)
-    {'onset': onset, 'converge': converge}[sys.argv[1]](sys.argv[2])
+    out = sys.argv[2]
+    if not os.path.isdir(out):
+        raise data.DataError('no such folder' if not os.path.exists(out)
+                             else 'is not a folder (a runs/refinement.sh output folder)', out)
+    {'onset': onset, 'converge': converge}[sys.argv[1]](out)
+
+
+if __name__ == '__main__':
+    data.run_script(main)

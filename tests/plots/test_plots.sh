@@ -145,3 +145,57 @@ assert [t for t, _ in scaled] == [1.0] and 'H_N40' in scaled[0][1].dtype.names, 
 assert blocks(f"{d}/run/timeseries.dat")[0][0] is None
 print("blocks() gives each block of profiles.dat and scaled_H.dat with its time")
 PY
+# Input that is not gbssn1d output: a missing file, a folder, a binary file, a profiles.dat whose
+# block line is '# t = abc'. Every script says so in one line '<script>: <file>: <why>' on
+# stderr, exit status 2, no traceback (they raised FileNotFoundError, IsADirectoryError,
+# UnicodeDecodeError, ValueError). Layout: hostile/KIND/{profiles,convergence}.dat and
+# hostile/KIND/sinh-upwind-gd-N1200/profiles.dat are each of that kind (hostile/missing is none)
+refused() {  # refused FILE COMMAND...: exit 2, one line naming FILE, no traceback
+  local file=$1 status=0
+  shift
+  "$@" >/dev/null 2>"$dir/err" </dev/null || status=$?
+  if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || grep -q Traceback "$dir/err" \
+     || ! grep -qF ": $file: " "$dir/err" || ! grep -q '^[a-z_]*\.py: ' "$dir/err"; then
+    echo "not refused in one line naming $file (exit $status): ${*:2}"; cat "$dir/err"; exit 1
+  fi
+}
+h=$dir/hostile
+mkdir -p "$h"/{folder,binary,badt}/sinh-upwind-gd-N1200
+for f in profiles.dat convergence.dat sinh-upwind-gd-N1200/profiles.dat; do
+  mkdir "$h/folder/$f"
+  cp /bin/true "$h/binary/$f"
+  sed 's/^# t = 1$/# t = abc/' "$dir/run/profiles.dat" >"$h/badt/$f"
+  grep -q '^# t = abc$' "$h/badt/$f"
+done
+# the shared reader on each kind; then each other script on '# t = abc' (the file's name reaches
+# the parser) and on one of the others in turn (its main is wrapped)
+for kind in missing folder binary badt; do
+  f=$h/$kind/profiles.dat
+  refused "$f" "$py" "$plots/plot_series.py" "$f" -y alpha -o "$dir/x.png"
+  refused "$f" "$py" "$plots/plot_profiles.py" "$f" -y alpha -o "$dir/x.png"
+done
+others=(missing folder binary) i=0
+for script in plot_horizons plot_sweep constraint_orders compare_trumpet error_profiles \
+              horizon_study refinement_study; do
+  for kind in badt "${others[i++ % 3]}"; do
+    f=$h/$kind/profiles.dat
+    case $script in
+      plot_horizons) refused "$f" "$py" "$plots/$script.py" "$f" -o "$dir/x.png" ;;
+      plot_sweep) refused "$f" "$py" "$plots/$script.py" "$f" -o "$dir/x.png" ;;
+      constraint_orders) refused "$f" "$py" "$plots/$script.py" "$dir/conv60/timeseries.dat" "$f" ;;
+      compare_trumpet) refused "$f" "$py" "$plots/$script.py" "$f" "$dir/ref/profiles.dat" ;;
+      error_profiles) refused "$f" "$py" "$plots/$script.py" "$dir/boxes16" "$h/$kind" \
+                        -o "$dir/x.png" ;;
+      horizon_study) refused "$h/$kind/convergence.dat" "$py" "$plots/$script.py" table "$h/$kind" \
+                       "$h/$kind" ;;
+      refinement_study)
+        [ $kind = missing ] && g=$h/missing || g=$h/$kind/sinh-upwind-gd-N1200/profiles.dat
+        refused "$g" "$py" "$plots/$script.py" onset "$h/$kind" ;;
+    esac
+  done
+done
+refused "standard input" bash -c '"$1" "$2/plot_series.py" - -y alpha -o "$3/x.png" </bin/true' \
+  _ "$py" "$plots" "$dir"
+refused "$h/missing/gbssn1d" "$py" "$plots/boxes_cost.py" --out "$h/cost" --bin "$h/missing/gbssn1d"
+refused "$h/folder" "$py" "$plots/boxes_cost.py" --out "$h/cost" --bin "$h/folder"
+echo "plot scripts: a missing file, a folder, a binary file, '# t = abc': one line each, exit 2"
