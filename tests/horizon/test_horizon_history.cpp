@@ -1,0 +1,99 @@
+// The extrapolated h_AH of boxes (evolution/horizon_tracker.hpp, mode extrapolated): the radii
+// found after the last hierarchy steps are kept, four of them, and h_AH at a stage's time is the
+// cubic through them, so that a horizon moving as a cubic in t is followed without error of its
+// own. The tracker here searches states made for it: 1+log trumpets whose mass M(t) is a cubic
+// in t, whose horizon radius is proportional to M.
+#include "evolution/horizon_tracker.hpp"
+#include "initial_data/initial_data.hpp"
+
+#include "../simulation_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+using namespace gbssn1d;
+using gbssn1d::testing::simulation;
+
+namespace {
+
+/// The Lagrange polynomial through the points (t, h) at t.
+double lagrange(const std::vector<std::array<double, 2>>& points, double t) {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    double w = 1.0;
+    for (std::size_t m = 0; m < points.size(); ++m)
+      if (m != j)
+        w *= (t - points[m][0]) / (points[j][0] - points[m][0]);
+    sum += w * points[j][1];
+  }
+  return sum;
+}
+
+} // namespace
+
+// Guards the length of the extrapolated mode's history (horizon_tracker.cpp, search_at_step):
+// four radii, not three (with three the extrapolation is quadratic, and r_AH on boxes moved at
+// 1e-6 without any test failing).
+TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a "
+          "horizon moving as a cubic in t") {
+  Params p;
+  p.grid = "boxes";
+  p.levels = 5;
+  p.rmax = 32.0;
+  p.N = 20;
+  p.id = "1log-trumpet";
+  p.rahA = 0.5;
+  p.rah0 = 1.0;
+  const Simulation sim = simulation(p);
+  std::vector<State> levels = sim.level_states();
+  std::vector<GbssnRhs> rhs;
+  for (std::size_t l = 0; l < sim.layout().levels(); ++l)
+    rhs.emplace_back(sim.layout().grid(l), sim.config().rhs);
+  HorizonTracker tracker(sim.config(), sim.layout(), levels, rhs);
+  REQUIRE(tracker.mode() == HorizonTracker::Mode::extrapolated);
+
+  auto M_of = [](double t) { return 1.0 + 0.02 * t + 0.03 * t * t * t; };
+  auto set_mass = [&](double t) {
+    InitialDataParams id;
+    id.kind = InitialDataKind::onelog_trumpet;
+    id.M = M_of(t);
+    for (std::size_t l = 0; l < levels.size(); ++l)
+      levels[l] = initial_data(sim.layout().grid(l), id);
+  };
+  const double dt = 0.25;
+  set_mass(0.0);
+  tracker.start(0.0);
+  for (long n = 1; n <= 6; ++n) {
+    set_mass(static_cast<double>(n) * dt);
+    tracker.after_step(n, static_cast<double>(n) * dt);
+  }
+  // the last four searches, oldest first
+  const auto& history = tracker.history();
+  REQUIRE(history.size() == 4);
+  for (std::size_t k = 0; k < 4; ++k)
+    CHECK(history[k][0] == doctest::Approx(static_cast<double>(k + 3) * dt));
+  // h_AH / M of the last search: the trumpet's horizon in units of its mass
+  const double c = history.back()[1] / M_of(6 * dt);
+  CHECK(c == doctest::Approx(0.83).epsilon(0.02));
+  for (const double t : {1.55, 1.6, 1.75}) {
+    INFO("t = " << t);
+    const auto h = tracker.radius(t);
+    REQUIRE(h);
+    // the cubic through the kept radii ...
+    CHECK(*h == doctest::Approx(lagrange(history, t)).epsilon(1e-12));
+    // ... which follows the horizon the finder finds at t (its error, of the grid, varies
+    // smoothly with M), ten times closer than the quadratic through the last three radii (which
+    // misses it by 2e-4 to 2e-3 here)
+    set_mass(t);
+    HorizonTracker fresh(sim.config(), sim.layout(), levels, rhs);
+    fresh.start(t);
+    REQUIRE(fresh.history().size() == 1);
+    const double found = fresh.history().back()[1];
+    const double quadratic = lagrange({history.begin() + 1, history.end()}, t);
+    CHECK(std::abs(*h - found) < 1e-4);
+    CHECK(std::abs(*h - found) < 0.1 * std::abs(quadratic - found));
+  }
+}
