@@ -113,6 +113,13 @@ mistakes=(
   "a removed output folder not noticed (exit 0, nothing on disk)|src/io/output.cpp|    throw OutputError(fmt::format(\"{} was removed|    (void)(fmt::format(\"{} was removed|the output folder removed during a run: the run stops with exit 1 and says why"
   "converge interrupted: the same command refused instead of continuing|src/cli/study_commands.cpp|    continuing = true;|    continuing = false;|converge interrupted: exit 130, and its files and message say they are partial"
   "sweep --emit-tasks overwrites a file of other content|src/study/sweep.cpp|    if (text.str() != lines)|    if (false)|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
+  "--upwind biased: Delta^r's stencil with the lopsided pair's ratio|src/gbssn/rhs_loop.hpp|half_diff = (0.5 * fd::Order<p>::template upwind_ratio_of<u>)*diff;|half_diff = (0.5 * fd::Order<p>::upwind_ratio)*diff;|Delta^r's advection in the point loop is the upwind stencil of the pair asked, every order"
+  "boxes: h_AH extrapolated through three radii instead of four|src/evolution/horizon_tracker.cpp|    if (history_.size() > 4)|    if (history_.size() > 3)|boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a horizon moving as a cubic in t"
+  "converge: each verdict window drops its last time|src/study/verdict.cpp|end = (w + 1) * j.judged / j.windows;|end = (w + 1) * j.judged / j.windows - 1;|verdict: the windows tile every judged time, the last one too: one bad time anywhere is found by its window"
+  "sweep: a spike's median includes the member itself|src/study/sweep_summary.cpp|          if (j != k)\n            others.push_back|          if (true)\n            others.push_back|sweep spikes: the median is the neighbours' alone, so a two-member sweep flags its spike"
+  "config files: a bare value not ended by a carriage return (CRLF files refused)|src/config/config_reader.cpp|line.find_first_of(\" \t\r#\", k);|line.find_first_of(\" \t#\", k);|a config file with CRLF line ends reads as the same file with LF ones"
+  "6-point interpolation one node off centre|src/grid/interpolation.hpp|const std::size_t start = k >= 2 ? k - 2 : 0;|const std::size_t start = k >= 1 ? k - 1 : 0;|6-point interpolation at radius: the error on x^6 is the remainder of the centred six nodes, next to the ends too"
+  "resume: a quadratic time level at or after the checkpoint's time accepted|src/evolution/checkpoint.cpp| !(h.t < c.t))| false)|resume refuses a checkpoint whose quadratic time level is not before its time"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
