@@ -149,6 +149,12 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     if (t < 0.0 || t > base.tmax)
       throw ParamError("--scaled-times", printable(times),
                        fmt::format("{} is outside the run's [0, tmax = {}]", t, base.tmax));
+  // each time once: a block per time, and two equal times would write the same block twice
+  for (std::size_t k = 0; k < options.scaled_times.size(); ++k)
+    for (std::size_t j = 0; j < k; ++j)
+      if (options.scaled_times[j] == options.scaled_times[k])
+        throw ParamError("--scaled-times", printable(times),
+                         fmt::format("lists {} twice", options.scaled_times[k]));
   check_path("--out", options.out);
   bool continuing = false;
   // A converge folder of other inputs: say which, so that nobody takes --force lightly (with

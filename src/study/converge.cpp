@@ -82,6 +82,9 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
     const Params& p = members[k];
     const FolderLock member_lock("--out", p.out); // one writer per member folder too
     Simulation sim(evolution_config(p));
+    const std::string config = config_text(p); // the member's own configuration
+    // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
+    write_file_atomically(fs::path(p.out) / "config.toml", header_text("") + config);
     sim.on_series = [&](Simulation& s) {
       const std::vector<DerivedProfiles> levels_d = s.level_profiles();
       rec.rows.push_back(s.series_row(s.composite_profiles(levels_d)));
@@ -95,7 +98,6 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
         H_samples.push_back(s.H_at_radius(levels_d, r));
       rec.H_samples.push_back(std::move(H_samples));
     };
-    const std::string config = config_text(p); // the member's own configuration
     sim.checkpoint_config = config;
     sim.label = fmt::format(" converge N={}", p.N);
     const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
@@ -130,6 +132,12 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
       out.write_end(fmt::format("stopped: {}", e.what()));
       throw;
     }
+  } catch (const OutputError& e) {
+    rec.error = e.what();
+    rec.write_failed = true;
+    const std::lock_guard lock(log_mutex);
+    say("gbssn1d converge: member N = {} could not write its output: {}\n", members[k].N, e.what());
+    return;
   } catch (const std::exception& e) {
     rec.error = e.what();
     const std::lock_guard lock(log_mutex);
@@ -194,6 +202,14 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config) {
   ConvergeStudy s = plan_study(base, options);
   const FolderLock lock("--out", options.out); // one writer per study folder
+  // the study's inputs first: a rerun after any stop (SIGKILL included) recognises its folder
+  // and continues the members from their checkpoints
+  const std::string study_config =
+      header_text("")
+      + fmt::format("# converge: N = {}, fields {}\n", fmt::join(options.N, ","),
+                    fmt::join(options.fields, ","))
+      + base_config;
+  write_file_atomically(fs::path(options.out) / "config.toml", study_config);
   std::mutex log_mutex;
   install_stop_handlers(); // members stop between steps; the partial files stay
   run_tasks(s.members.size(), options.jobs, [&](std::size_t k) { run_member(s, k, log_mutex); });
@@ -201,11 +217,6 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   s.n_times = s.records.front().rows.size();
   for (const auto& rec : s.records)
     s.n_times = std::min(s.n_times, rec.rows.size());
-  write_file_atomically(fs::path(options.out) / "config.toml",
-                        header_text("")
-                            + fmt::format("# converge: N = {}, fields {}\n",
-                                          fmt::join(options.N, ","), fmt::join(options.fields, ","))
-                            + base_config);
   const StudyEnding e = study_ending(s);
   const StudyVerdict v = judge_study(s, e);
   write_convergence_dat(s, base_config, e, v);
@@ -219,6 +230,12 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     say("gbssn1d converge: N = {} {}; the partial norms and orders are in {}/convergence.dat\n",
         fmt::join(options.N, ", "), ending, options.out);
     return 128 + signal;
+  }
+  if (e.write_failed) {
+    say("gbssn1d converge: N = {} {}; a member's output could not be written, so the study is "
+        "incomplete (not judged as a failure to converge); see {}/convergence.dat\n",
+        fmt::join(options.N, ", "), ending, options.out);
+    return 1;
   }
   if (!failed.empty()) {
     say("gbssn1d converge: N = {} {}; does not converge; see {}/convergence.dat\n",

@@ -18,6 +18,7 @@ struct MemberRecord {
   std::vector<std::vector<double>> field_samples; ///< per output: fields x common radii
   std::vector<std::vector<double>> H_samples;     ///< per output: H at the common radii
   std::string error;                              ///< non-empty if the member failed
+  bool write_failed = false; ///< the failure was a write (full disk, file-size limit)
 };
 
 /// A member's samples saved with each of its checkpoints (DIR/N<n>/converge_samples.bin), so

@@ -24,6 +24,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <set>
 
 #include <iterator>
 
@@ -218,12 +219,14 @@ StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e) {
                  ? fmt::format("{}: {}; {}", class_words(kind), orders, floor_finding())
                  : fmt::format("{}: {}", class_words(kind), orders);
   }
-  v.verdict_text = signal != 0 ? "not judged: the study was interrupted"
-                   : !failed.empty()
-                       ? fmt::format("does not converge: {} (over the common times up to t = "
-                                     "{}: {})",
-                                     failed, t_common, judged)
-                       : judged;
+  v.verdict_text =
+      signal != 0 ? "not judged: the study was interrupted"
+      : e.write_failed
+          ? fmt::format("not judged: {} (a write failed; the study is incomplete)", failed)
+      : !failed.empty() ? fmt::format("does not converge: {} (over the common times up to t = "
+                                      "{}: {})",
+                                      failed, t_common, judged)
+                        : judged;
   std::string& order_lines = v.order_lines;
   order_lines = fmt::format(
       "verdict: {}\nverdict rule: for each norm at each pair of neighbouring members, and each "
@@ -263,6 +266,8 @@ StudyEnding study_ending(const ConvergeStudy& s) {
   for (std::size_t k = 0; k < m; ++k)
     if (!records[k].error.empty() && failed.empty())
       failed = fmt::format("member N = {} failed: {}", members[k].N, records[k].error);
+  for (std::size_t k = 0; k < m; ++k)
+    e.write_failed = e.write_failed || records[k].write_failed;
   e.t_common = n_times > 0 ? records.front().rows[n_times - 1].t : 0.0;
   e.ending =
       signal != 0 ? fmt::format("interrupted by {} at t = {} (partial: every member only to this "
@@ -357,6 +362,7 @@ void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, cons
     if (times.empty())
       times.push_back(base.tmax);
     bool first = true;
+    std::set<std::size_t> written; // output rows with a block: each once
     for (double tw : times) {
       if (n_times == 0)
         break;
@@ -364,6 +370,12 @@ void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, cons
       for (std::size_t q = 0; q < n_times; ++q)
         if (std::abs(records.front().rows[q].t - tw) < std::abs(records.front().rows[s].t - tw))
           s = q;
+      if (!written.insert(s).second) {
+        say("gbssn1d converge: note: --scaled-times {} falls on the output at t = {}, which has "
+            "its block already (one block per output time)\n",
+            time_text(tw), time_text(records.front().rows[s].t));
+        continue;
+      }
       std::string block = first ? "" : "\n\n";
       first = false;
       block += "# t = " + time_text(records.front().rows[s].t) + "\n";

@@ -33,8 +33,9 @@ struct ConvergeStudy {
 /// How the study ended, in both files' headers and as their last line: a reader (and a plot
 /// script) must be able to tell a partial study from a complete one.
 struct StudyEnding {
-  int signal = 0;     ///< the stop signal, 0 if none
-  std::string failed; ///< the first member's failure, empty if none
+  int signal = 0;            ///< the stop signal, 0 if none
+  std::string failed;        ///< the first member's failure, empty if none
+  bool write_failed = false; ///< a member's failure was a write (exit 1, not judged)
   double t_common = 0.0;
   std::string ending, status_line, end_line;
 };

@@ -1197,3 +1197,50 @@ TEST_CASE("sweep --emit-tasks - writes the task lines to standard output, not to
   CHECK_FALSE(fs::exists(dir / "-"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("converge killed (SIGKILL, no chance to write) continues when the same command is "
+          "rerun, without --force; each member folder has its config.toml and resumes alone") {
+  const fs::path out = scratch("converge_kill9");
+  const std::string args = " converge --N 400,500,600 -j 3 --grid uniform --rmax 50"
+                           " --id 1log-trumpet --tmax 30 --checkpoint-every 0.5 --out "
+                           + out.string();
+  // killed once every member has written a checkpoint (the study's config.toml is written
+  // before the members start)
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
+                          + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
+                          + "/N600/checkpoint.bin ]; do sleep 0.02; done; kill -KILL $p;"
+                            " wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  REQUIRE(WEXITSTATUS(raw) == 128 + 9);
+  CHECK(fs::exists(out / "config.toml"));
+  for (const char* member : {"N400", "N500", "N600"})
+    CHECK(fs::exists(out / member / "config.toml"));
+  // a member continues alone from its checkpoint, as any run
+  const Result alone = run("resume " + (out / "N400").string());
+  INFO(alone.err);
+  CHECK(alone.status == 0);
+  const Result again = run(args.substr(1));
+  INFO(again.err);
+  CHECK((again.status == 0 || again.status == 4 || again.status == 5));
+  CHECK(again.err.find("members continue from their checkpoints") != std::string::npos);
+  CHECK(again.err.find("is invalid") == std::string::npos);
+  fs::remove_all(out);
+}
+
+TEST_CASE("converge: a member's failed write (file-size limit) exits 1, a write failure, not "
+          "3 or 4 as a study that does not converge") {
+  const fs::path out = scratch("converge_fsize");
+  const std::string cmd = "sh -c 'ulimit -f 20; " + std::string(GBSSN1D_EXECUTABLE)
+                          + " converge --N 100,140,180 --grid uniform --rmax 20 --tmax 3 --out "
+                          + out.string() + " 2>" + out.string() + ".err; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  const std::string err = slurp(out.string() + ".err");
+  INFO(err);
+  CHECK(WEXITSTATUS(raw) == 1);
+  CHECK(err.find("could not write its output") != std::string::npos);
+  CHECK(err.find("File too large") != std::string::npos);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".err");
+}
