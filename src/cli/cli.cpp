@@ -106,8 +106,7 @@ void add_evolve(CLI::App& app, EvolveArgs& a) {
       "evolve one black hole and write ASCII output.\nMost runs need only: --id (wormhole | "
       "1log-trumpet | maximal-trumpet), --tmax, --out, --rahA A --rah0 h (move the horizon to "
       "h), and for resolution --N (or --grid uniform|sinh|boxes with --N, --rmax). Example: "
-      "gbssn1d evolve --id 1log-trumpet --rahA 0.5 --rah0 1.2 --tmax 100 --out out/stretch\n"
-      "All flags, grouped:");
+      "gbssn1d evolve --id 1log-trumpet --rahA 0.5 --rah0 1.2 --tmax 100 --out out/stretch");
   add_options(*a.cmd, a.params);
   a.cmd->footer(
       "Lengths and times are in the units of --M (geometric units; with the default M = 1 "
@@ -327,6 +326,9 @@ int run_command_line(int argc, char** argv) {
                "black hole",
                "gbssn1d"};
   app.set_version_flag("--version", std::string("gbssn1d ") + GBSSN1D_VERSION);
+  app.footer("Each subcommand's own page lists its flags: gbssn1d evolve --help (grouped, with "
+             "its output files and exit statuses), gbssn1d resume --help, gbssn1d converge "
+             "--help, gbssn1d sweep --help.");
   app.require_subcommand(1);
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 

@@ -8,6 +8,7 @@
 #include "core/registry.hpp"
 #include "core/stop_signal.hpp"
 #include "evolution/simulation.hpp"
+#include "io/output.hpp"
 #include "study/converge.hpp"
 #include "study/sweep.hpp"
 
@@ -268,21 +269,21 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
     throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),
-                     fmt::format("is before the checkpoint at t = {}", c.t));
+                     fmt::format("is before the checkpoint at t = {}", time_text(c.t)));
   // What the files hold already: a completed run is left alone, and no resume may cut away
   // output beyond the new end.
   const SeriesEnd written = series_end(dir / "timeseries.dat");
   if (written.completed && (!tmax || p.tmax <= written.t_last)) {
     say("gbssn1d: {} is complete at t = {}; nothing to do (`{} --tmax T` continues it to a "
         "later T)\n",
-        dir_name, written.t_last, resume_command(dir_name));
+        dir_name, time_text(written.t_last), resume_command(dir_name));
     return 0;
   }
   if (p.tmax < written.t_last)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),
                      fmt::format("is before the last output at t = {}: resuming would cut "
                                  "the output written after it",
-                                 written.t_last));
+                                 time_text(written.t_last)));
   const Params run_params = with_kept_horizon_file(p, dir_name);
   Simulation sim(evolution_config(run_params));
   try {
@@ -301,7 +302,8 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   sim.show_progress = true;
   sim.checkpoint_config = config;
   write_file_atomically(dir / "config.toml", header_text("") + config);
-  say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, c.t, c.step, p.tmax);
+  say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, time_text(c.t), c.step,
+      time_text(p.tmax));
   Output out(dir, config + sim.run_facts(), c.marks);
   return run_and_report(sim, out, p);
 }
