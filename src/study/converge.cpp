@@ -74,6 +74,10 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
   const auto& samples_key = study.samples_key;
   MemberRecord& rec = study.records[k];
   const auto start = std::chrono::steady_clock::now();
+  if (stop_signal() != 0) { // interrupted: start no new member (a rerun continues the study)
+    rec.error = "not started: the study was interrupted";
+    return;
+  }
   {
     const std::lock_guard lock(log_mutex);
     say("gbssn1d converge: member N = {} started\n", members[k].N);
@@ -138,6 +142,11 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
     const std::lock_guard lock(log_mutex);
     say("gbssn1d converge: member N = {} could not write its output: {}\n", members[k].N, e.what());
     return;
+  } catch (const Interrupted& e) { // a stop signal: kept with a checkpoint, not a failure
+    rec.error = e.what();
+    const std::lock_guard lock(log_mutex);
+    say("gbssn1d converge: member N = {} stopped: {} (a checkpoint kept)\n", members[k].N,
+        e.what());
   } catch (const std::exception& e) {
     rec.error = e.what();
     const std::lock_guard lock(log_mutex);

@@ -986,7 +986,7 @@ TEST_CASE("the resume hint is a command that works as pasted: the program as inv
 }
 
 TEST_CASE("help pages say what a newcomer needs: evolve's few common flags first, each study's "
-          "output files and columns; a sweep says where its summary is") {
+          "output files and columns, a sweep says where its summary is") {
   const Result evolve = run("evolve --help");
   CHECK(evolve.status == 0);
   const auto common = evolve.out.find("Most runs need only");
@@ -1042,7 +1042,7 @@ TEST_CASE("a resumed run's progress line counts its speed from the resume, not f
 }
 
 TEST_CASE("one writer per folder: a folder another process writes is refused by evolve and "
-          "resume, with or without --force, nothing written; the lock ends with its holder") {
+          "resume, with or without --force, nothing written, the lock ends with its holder") {
   const fs::path out = scratch("locked");
   {
     const gbssn1d::FolderLock held("--out", out); // this process holds it
@@ -1089,7 +1089,7 @@ TEST_CASE("one writer per folder: a folder another process writes is refused by 
 }
 
 TEST_CASE("one writer per folder: converge and a whole sweep are refused on a folder another "
-          "process writes; a sweep's member tasks share their folder, and exclude a whole sweep") {
+          "process writes, a sweep's member tasks share their folder, and exclude a whole sweep") {
   const fs::path study = scratch("locked-study");
   const std::string common = " --id 1log-trumpet --grid uniform --N 40,60,80 --rmax 20 --tmax 0.5";
   {
@@ -1160,7 +1160,7 @@ TEST_CASE("sweep: a member recorded ok whose folder is gone or whose timeseries.
 }
 
 TEST_CASE("--force into a folder holding a symbolic link is refused, naming the link, and the "
-          "file it points at is left alone; --out a dangling link is refused as one") {
+          "file it points at is left alone, --out a dangling link is refused as one") {
   const fs::path out = scratch("forced_link"), outside = scratch("outside_file");
   fs::create_directories(out);
   std::ofstream(outside) << "precious\n";
@@ -1199,7 +1199,7 @@ TEST_CASE("sweep --emit-tasks - writes the task lines to standard output, not to
 }
 
 TEST_CASE("converge killed (SIGKILL, no chance to write) continues when the same command is "
-          "rerun, without --force; each member folder has its config.toml and resumes alone") {
+          "rerun, without --force, each member folder has its config.toml and resumes alone") {
   const fs::path out = scratch("converge_kill9");
   const std::string args = " converge --N 400,500,600 -j 3 --grid uniform --rmax 50"
                            " --id 1log-trumpet --tmax 30 --checkpoint-every 0.5 --out "
@@ -1241,6 +1241,28 @@ TEST_CASE("converge: a member's failed write (file-size limit) exits 1, a write 
   CHECK(WEXITSTATUS(raw) == 1);
   CHECK(err.find("could not write its output") != std::string::npos);
   CHECK(err.find("File too large") != std::string::npos);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".err");
+}
+
+TEST_CASE("converge interrupted with members still to run: no new member starts, and the running "
+          "one says it stopped (a checkpoint kept), not that it failed") {
+  const fs::path out = scratch("converge_sigint_j1");
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+                          + " converge --N 400,500,600 -j 1 --grid uniform --rmax 50 --tmax 60 "
+                            "--out "
+                          + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
+                          + out.string()
+                          + "/N400/horizon.dat ]; do sleep 0.01; done; kill -INT $p; wait $p; "
+                            "exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  const std::string err = slurp(out.string() + ".err");
+  INFO(err);
+  CHECK(WEXITSTATUS(raw) == 130);
+  CHECK(err.find("member N = 400 stopped: interrupted by SIGINT") != std::string::npos);
+  CHECK(err.find("member N = 500 started") == std::string::npos);
+  CHECK(err.find("failed: interrupted") == std::string::npos);
   fs::remove_all(out);
   fs::remove(out.string() + ".err");
 }

@@ -458,7 +458,7 @@ TEST_CASE("the tapered buffer absorbs the wormhole's gauge pulse where it return
 }
 
 TEST_CASE("a held h_AH with quadratic time interpolation loses convergence under refinement "
-          "while the horizon moves; h_AH at every substage, or stage values, keep it; warned") {
+          "while the horizon moves, h_AH at every substage, or stage values, keep it, warned") {
   // The published configuration (study doc Sec. 13): 7 boxes to 128 M, maximal trumpet, stretch
   // to 0.89 M with the rational profile of width 1 and the unit normal, upwind-gd, cfl 0.25,
   // h_AH held over each step of the hierarchy, quadratic time interpolation; N = 48, 64
