@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The published study's signature, row by row, and its figures (runs/thesis.sh).
 
-    python3 plots/thesis.py OUT ROW [ROW ...]
+    /usr/bin/python3 plots/thesis.py OUT ROW [ROW ...]
 
 OUT/ROW is one `gbssn1d converge` study (members N<n>/, convergence.dat, scaled_H.dat) and
 OUT/ROW.cmd the command that made it. Writes OUT/mechanisms.dat (one row per study, named
@@ -44,21 +44,22 @@ def members(columns):
 
 def verdict_of(path):
     """The converge verdict's class: the words before the first ':' of its 'verdict:' line."""
-    with open(path) as f:
-        for line in f:
-            if line.startswith('# verdict:'):
-                return line[len('# verdict:'):].split(':')[0].strip()
+    for line in gd.read_text(path).splitlines():
+        if line.startswith('# verdict:'):
+            return line[len('# verdict:'):].split(':')[0].strip()
     return 'no verdict'
 
 
 def study(out, name):
     path = os.path.join(out, name, 'convergence.dat')
-    with open(os.path.join(out, name + '.status')) as f:
-        status = int(f.read().strip())
-    with open(os.path.join(out, name + '.cmd')) as f:
-        command = f.read().strip()
+    status_file = os.path.join(out, name + '.status')
+    try:
+        status = int(gd.read_text(status_file).strip())
+    except ValueError:
+        raise gd.DataError('not an exit status (runs/thesis.sh writes one)', status_file)
+    command = gd.read_text(os.path.join(out, name + '.cmd')).strip()
     params = gd.params_of(gd.read_text(os.path.join(out, name, 'config.toml')).splitlines())
-    columns, parsed = gd.parse(gd.read_text(path))
+    columns, parsed = gd.parse(gd.read_text(path), path)
     data = parsed[0][1] if parsed else np.zeros((0, len(columns)))
     Ns = members(columns)
     t = gd.column(columns, data, 't')
@@ -326,4 +327,4 @@ def main(argv):
 
 
 if __name__ == '__main__':
-    main(sys.argv)
+    gd.run_script(main, sys.argv)

@@ -110,4 +110,9 @@ flock "$dir/locked/.lock" bash "$src/runs/thesis.sh" "$dir/locked" >"$dir/locked
 [ $status -eq 1 ] || { echo "runs/thesis.sh on a held folder: exit $status"; cat "$dir/locked.out"; exit 1; }
 grep -q "another run is writing" "$dir/locked.out"
 [ "$(ls "$dir/locked")" = "" ] || { echo "runs/thesis.sh wrote into a held folder"; exit 1; }
+# a row that was never run: one line naming its file, exit 2, no traceback
+status=0
+"$py" "$src/plots/thesis.py" "$dir" no-such-row >"$dir/bad.out" 2>"$dir/bad.err" || status=$?
+[ $status -eq 2 ] && [ "$(wc -l <"$dir/bad.err")" -eq 1 ] && grep -q "no-such-row.status" "$dir/bad.err" \
+  && ! grep -q Traceback "$dir/bad.err" || { echo "thesis.py on a missing row: exit $status"; cat "$dir/bad.err"; exit 1; }
 echo "thesis: every check passed"
