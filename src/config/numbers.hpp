@@ -47,9 +47,12 @@ std::optional<T> parse_decimal(std::string_view text) {
     result = std::from_chars(text.data(), end, value, 10);
   if (result.ec != std::errc() || result.ptr != end)
     return std::nullopt;
-  if constexpr (std::is_floating_point_v<T>)
+  if constexpr (std::is_floating_point_v<T>) {
     if (!std::isfinite(value))
       return std::nullopt;
+    if (value == T{0})
+      value = T{0}; // -0 is 0: one value, one configuration (a sweep's 0,-0 are one member)
+  }
   return value;
 }
 
