@@ -352,7 +352,25 @@ int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& 
 int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args) {
   const std::vector<SweepAxis> axes = checked_axes(options);
   check_axis_order(options.out, axes);
-  const std::vector<SweepMember> members = sweep_members(axes, evolve_args, options.out);
+  // a task line (--member) builds its own member only: 10,000 members' configurations for each
+  // of 10,000 lines was hours of CPU over an array job
+  const bool one_member = !options.member.empty() && !options.collect && options.emit_tasks.empty();
+  const std::vector<SweepMember> members =
+      sweep_members(axes, evolve_args, options.out, one_member ? options.member : "");
+  if (one_member && members.empty()) {
+    std::size_t count = 1;
+    std::vector<std::pair<std::string, std::string>> first, last;
+    for (const auto& axis : axes) {
+      count *= axis.values.size();
+      for (std::size_t f = 0; f < axis.flags.size(); ++f) {
+        first.emplace_back(axis.flags[f], axis.values.front()[f]);
+        last.emplace_back(axis.flags[f], axis.values.back()[f]);
+      }
+    }
+    throw ParamError("--member", options.member,
+                     fmt::format("is not a member of this sweep (its {} members: {}{})", count,
+                                 member_name(first), count > 1 ? " ... " + member_name(last) : ""));
+  }
   if (options.member.empty() && !options.collect)
     for (const auto& g : same_runs(members))
       say("gbssn1d sweep: note: {} are the same run (the horizon-shift flags do nothing with "

@@ -27,10 +27,16 @@ struct SweepMember {
   std::string inputs;
 };
 
-/// The members of the product, in order (the last axis varies fastest).
+/// A member's folder name from its (flag, value) pairs: "flag=value_flag=value", with '/' and
+/// ' ' as '_'.
+std::string member_name(const std::vector<std::pair<std::string, std::string>>& values);
+
+/// The members of the product, in order (the last axis varies fastest). With `only`, just the
+/// member of that name (none if there is no such member), its folder name checked against the
+/// others' but its inputs alone computed: a task line's work is its member's, not the sweep's.
 std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
                                        const std::vector<std::string>& evolve_args,
-                                       const std::string& out);
+                                       const std::string& out, const std::string& only = "");
 
 /// A finished member whose H_L2_R_max exceeds this many times the median of its neighbours
 /// along an axis is flagged `spike` in summary.dat (and named on stderr).

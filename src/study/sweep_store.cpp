@@ -183,9 +183,21 @@ SweepAxis parse_sweep_axis(const std::string& text) {
   return axis;
 }
 
+std::string member_name(const std::vector<std::pair<std::string, std::string>>& values) {
+  std::string name;
+  for (const auto& [flag, value] : values) {
+    std::string part = flag + "=" + value;
+    for (char& c : part)
+      if (c == '/' || c == ' ')
+        c = '_';
+    name += (name.empty() ? "" : "_") + part;
+  }
+  return name;
+}
+
 std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
                                        const std::vector<std::string>& evolve_args,
-                                       const std::string& out) {
+                                       const std::string& out, const std::string& only) {
   std::vector<SweepMember> members{SweepMember{}};
   for (const auto& axis : axes) {
     std::vector<SweepMember> next;
@@ -198,14 +210,20 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
       }
     members = next;
   }
+  for (auto& m : members)
+    m.name = member_name(m.values);
+  if (!only.empty()) {
+    // one member: its name must be one member's alone (the full sweep, emitting its lines,
+    // checked every name and configuration)
+    std::vector<SweepMember> one;
+    for (auto& m : members)
+      if (m.name == only)
+        one.push_back(std::move(m));
+    if (one.size() > 1)
+      throw ParamError("--member", printable(only), "names more than one member's folder");
+    members = std::move(one);
+  }
   for (auto& m : members) {
-    for (const auto& [flag, value] : m.values) {
-      std::string part = flag + "=" + value;
-      for (char& c : part)
-        if (c == '/' || c == ' ')
-          c = '_';
-      m.name += (m.name.empty() ? "" : "_") + part;
-    }
     m.args = {"evolve"};
     m.args.insert(m.args.end(), evolve_args.begin(), evolve_args.end());
     for (const auto& [flag, value] : m.values)
