@@ -106,10 +106,19 @@ struct Params {
 };
 
 /// A parameter refused, with the flag it came from: "--rmax = -3 is invalid: must be > 0".
+/// A value as an error message shows it: whole up to 200 bytes, else its first 100 bytes and
+/// its length (a value of a million digits is not echoed whole).
+inline std::string shown_value(const std::string& value) {
+  if (value.size() <= 200)
+    return value;
+  return value.substr(0, 100) + "... (" + std::to_string(value.size()) + " bytes)";
+}
+
 class ParamError : public std::runtime_error {
 public:
   ParamError(const std::string& flag, const std::string& value, const std::string& why)
-      : std::runtime_error(flag + " = " + value + " is invalid: " + why), flag_(flag) {}
+      : std::runtime_error(flag + " = " + shown_value(value) + " is invalid: " + why), flag_(flag) {
+  }
   /// "flag: message", for errors that are not about one value.
   ParamError(const std::string& flag, const std::string& message)
       : std::runtime_error(flag + ": " + message), flag_(flag) {}

@@ -1,9 +1,11 @@
 // The one decimal reader of flags, config files, sweep values and tables (config/numbers.hpp).
 #include "config/numbers.hpp"
+#include "config/params.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 using gbssn1d::parse_decimal;
 
@@ -19,4 +21,14 @@ TEST_CASE("parse_decimal: -0 reads as 0 (no sign), so that 0 and -0 are one conf
   CHECK_FALSE(parse_decimal<double>("0x1"));
   CHECK_FALSE(parse_decimal<double>("1,5"));
   CHECK_FALSE(parse_decimal<double>("nan"));
+}
+
+TEST_CASE("a refused value of a million digits is shown by its first 100 bytes and its length, "
+          "not echoed whole") {
+  const std::string huge(1000000, '1');
+  const gbssn1d::ParamError e("--N", huge, "is not a whole number in range");
+  const std::string text = e.what();
+  CHECK(text.size() < 300);
+  CHECK(text.find("--N = " + huge.substr(0, 100) + "... (1000000 bytes) is invalid") == 0);
+  CHECK(std::string(gbssn1d::ParamError("--N", "12", "why").what()) == "--N = 12 is invalid: why");
 }
