@@ -50,8 +50,10 @@ status=0
 # cases run too (the same RHS, transfer and time-interpolation kernels, converge's and sweep's
 # member handling, emitted task lines, signals), the resumed progress line's speed (300 s:
 # two runs long enough to show a terminal's progress; the resume it exercises runs elsewhere),
-# and the 10 M trumpet evolution (49 s: the same RHS and stepping as the 1 M runs of the
-# other evolution cases; its 4th-order stationarity is checked in the tests stage).
+# the 10 M trumpet evolution (49 s: the same RHS and stepping as the 1 M runs of the
+# other evolution cases; its 4th-order stationarity is checked in the tests stage), and the
+# killed converge study rerun to its end (three members to 30 M; a member's resume from its
+# checkpoint and samples runs in the faster converge cases).
 slow=(
   "a resumed run's progress line counts its speed from the resume"
   "a stretched horizon (0.89 M) converges at coarse spacing"
@@ -65,6 +67,7 @@ slow=(
   "converge -j runs that many members at once"
   "gauge pulse across refinement boundaries, RK4 stage values"
   "1+log trumpet evolved to t = 10 M stays stationary"
+  "converge killed (SIGKILL, no chance to write)"
 )
 for name in "${slow[@]}"; do # a renamed case would otherwise run unnoticed: say so
   pattern=$(sed 's/[][\\.^$*+?(){}|]/\\&/g' <<<"$name")
