@@ -305,7 +305,10 @@ def figures(out, studies, plt):
             continue
         fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
         for ax, (name, title, tmax) in zip(axes, cases):
-            norm_panel(ax, by[name], tmax, f"{title}; {by[name]['verdict']}")
+            o = by[name]['orders'][0]
+            norm_panel(ax, by[name], tmax,
+                       f"{title}\nH's orders over (0, 20] M: {text(o[0])}, {text(o[1])}\n"
+                       f"verdict over all quantities: {by[name]['verdict']}")
         fig.suptitle('maximal trumpet, 7 boxes to 128 M, A = 0.5', fontsize=10)
         fig.tight_layout(rect=(0, 0, 1, 0.94))
         fig.savefig(os.path.join(out, fig_name), dpi=110)
