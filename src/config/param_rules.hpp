@@ -5,7 +5,7 @@
 
 #include "config/params.hpp"
 #include "evolution/evolution_config.hpp"
-#include "mesh/time_interpolation.hpp"
+#include "mesh/time_interpolation_kind.hpp"
 
 #include <fmt/format.h>
 

@@ -3,8 +3,8 @@
 // Every evolved field is named here once, with its index in the state vector, the name printed
 // in output headers, its parity at r = 0 (equations document, Sec. 7) and its asymptotic value,
 // wave family and fall-off for the Sommerfeld outer boundary (Sec. 8); the family's speed comes
-// from the gauge (gbssn/gauge.hpp). Ghost zones, point data, boundary conditions and output
-// columns are all driven from this table.
+// from the gauge (Gauge::speed, gbssn/rhs_params.hpp). Ghost zones, point data, boundary
+// conditions and output columns are all driven from this table.
 #pragma once
 
 #include <array>

@@ -4,7 +4,7 @@
 // evolution_config()); the evolution knows nothing of flags or their spellings.
 #pragma once
 
-#include "gbssn/rhs.hpp"
+#include "gbssn/rhs_params.hpp"
 #include "grid/grid.hpp"
 #include "horizon/apparent_horizon.hpp"
 #include "initial_data/initial_data.hpp"

@@ -1,5 +1,7 @@
 #include "evolution/simulation.hpp"
 
+#include "gbssn/horizon_shift.hpp"
+
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
 #include "grid/interpolation.hpp"

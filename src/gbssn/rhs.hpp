@@ -12,9 +12,8 @@
 #pragma once
 
 #include "fd/stencils.hpp"
-#include "gbssn/equations.hpp"
-#include "gbssn/gauge.hpp"
-#include "gbssn/horizon_shift.hpp"
+#include "gbssn/point_data.hpp"
+#include "gbssn/rhs_params.hpp"
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
 
@@ -24,34 +23,6 @@
 #include <vector>
 
 namespace gbssn1d {
-
-/// How a term beta d_r Delta^r is differenced.
-enum class AdvectionStencil {
-  upwind_gd,   ///< lopsided towards where beta_GD comes from
-  upwind_full, ///< lopsided towards where the full shift beta_GD + beta_H comes from
-  centred,     ///< centred, of the grid's order
-  /// B's driver only: Delta^r's own advection term of (E6) (its stencil, with the full shift)
-  /// minus beta_H d_r Delta^r centred. Then B - Delta^r carries no lopsided stencil, as with the
-  /// plain Gamma-driver, where the two terms are the same; a lopsided stencil of beta_GD in B's
-  /// driver alone grows at the grid scale at a rate ~ |beta_H| / dr (docs/hyperbolicity.py;
-  /// docs/horizon-shift-study.md, Sec. 12). Without the horizon shift it is upwind_full.
-  matched,
-};
-
-/// The differencing of the two beta d_r Delta^r terms: the one inside d_t Delta^r|beta_GD that
-/// drives B (G3)/(H2), and Delta^r's own advection in (E6).
-struct AdvectionParams {
-  AdvectionStencil driver = AdvectionStencil::matched;
-  AdvectionStencil delta = AdvectionStencil::upwind_full;
-};
-
-struct RhsParams {
-  Gauge gauge;
-  double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
-  AdvectionParams advection;
-  fd::Upwind upwind = fd::Upwind::lopsided; ///< the upwind pair of every advection term
-  HorizonShiftParams horizon_shift;
-};
 
 /// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
 /// order p (needs i - p/2 - 1 ... i + p/2 + 1), advection with the upwind pair `upwind`.

@@ -5,6 +5,9 @@
 #pragma once
 
 #include "fd/stencils.hpp"
+#include "gbssn/equations.hpp"
+#include "gbssn/gauge.hpp"
+#include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs.hpp"
 
 #include <algorithm>

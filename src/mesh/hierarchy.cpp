@@ -1,4 +1,5 @@
 #include "mesh/hierarchy.hpp"
+#include "mesh/time_interpolation.hpp"
 
 #include "mesh/transfer.hpp"
 

@@ -55,7 +55,7 @@
 
 #include "gbssn/state.hpp"
 #include "mesh/layout.hpp"
-#include "mesh/time_interpolation.hpp"
+#include "mesh/time_interpolation_kind.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,7 @@
 // The horizon-adjusting shift (equations document, Sec. 14) and the horizon during evolutions.
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
+#include "gbssn/horizon_shift.hpp"
 #include "horizon/apparent_horizon.hpp"
 
 #include "../simulation_support.hpp"

@@ -7,6 +7,7 @@
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
 #include "fd/stencils.hpp"
+#include "gbssn/horizon_shift.hpp"
 #include "horizon/apparent_horizon.hpp"
 
 #include <fmt/format.h>
