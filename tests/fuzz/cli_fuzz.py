@@ -26,18 +26,58 @@ with a time limit and a memory limit, and must satisfy:
   - a completed run's timeseries.dat ends with '# end: completed', a stopped one's (exit 3)
     with '# end: stopped';
   - a completed evolve's config.toml repeats the run: `evolve --config OUT/config.toml
-    --print-config` prints the same parameters (README: "repeat a run exactly").
+    --print-config` prints the same parameters (README: "repeat a run exactly");
+  - an --out that is, or lies below, a symbolic link to nothing is not refused as 'File
+    exists', and the link's target is not created.
+
+Scenarios (issue 37, round 3) are what one argument vector cannot say. They start from small
+finished runs made once (an evolve run to t = 0.5 with a checkpoint and its copy of
+--rah-hAH-file, a converge study of N = 32, 40, 48, a sweep of two members; grid uniform, N 32,
+rmax 8), copied into a fresh scratch folder, and compare what a command leaves there with what
+it leaves on an intact copy (cached; lines and columns with wall times, lock files and logs
+left out). Four surfaces:
+
+  concurrent    two writers of one --out started together or a few ms apart (evolve+evolve,
+                sweep+sweep, converge+evolve; ko-sigma 0.1 and 0.2, or the same): each ends as
+                it does alone or is refused (exit 2) for the folder in use (or, when it ran
+                after, for what the other left there); at least one ends as alone; the folder
+                then holds exactly what one of them writes alone, never a mix of the two
+                (config.toml and the .dat headers of one run, the rows of that run);
+  links         a file of a finished run, study member or sweep member (horizon.dat,
+                timeseries.dat, config.toml, checkpoint.bin, the lock file, ...) replaced by a
+                symbolic link to a file outside (a copy of it, or other bytes), then evolve
+                --force, resume, converge or a sweep rerun/--collect: the file outside is left
+                byte for byte; a refusal (exit 2) changes nothing; an exit 1 names the link;
+                --out a link to nothing (evolve, converge, sweep, --member, --emit-tasks): exit 2
+                saying it is a symbolic link, not 'File exists', its target not created;
+  resume-files  a checkpoint.bin, converge_samples.bin or rah-hAH-file.dat bit-flipped,
+                truncated, deleted, emptied, a link loop, a link to a copy or to another run's
+                file (the file --rah-hAH-file names kept, edited or deleted), then resume or the
+                converge rerun: refused with exit 2 naming the file and changing nothing, or the
+                intact copy's exit status and outputs; never another success;
+  sweep-edits   a member's folder deleted, its timeseries.dat emptied or truncated, its
+                config.toml edited or deleted, its status file deleted, then --collect and/or a
+                rerun: --collect lists a member whose output is gone or cut short as missing
+                (exit 1), never ok with nan, and every member it lists ok with the clean sweep's
+                numbers; a rerun runs such members again and ends (exit 0) with the clean
+                sweep's summary.dat and .dat files.
+
+KNOWN_DEFECTS lists violations the program still has (issue 37): found, they are printed and
+counted but do not fail the run; remove an entry once its defect is fixed.
 
 A failure is shrunk by hypothesis to a minimal input, printed with a ready-made row for
-tests/cli/hostile_inputs.txt. Usage:
+tests/cli/hostile_inputs.txt (a scenario: as the shell steps that repeat it). Usage:
 
-  cli_fuzz.py --exe build/gbssn1d                      # CI: seed 1, about 40 s
+  cli_fuzz.py --exe build/gbssn1d          # CI: seed 1, 400 inputs and 250 scenarios, 40-60 s
   cli_fuzz.py --exe build/gbssn1d --examples 10000 --seed 7 --budget 0
   cli_fuzz.py --exe build/gbssn1d --examples 10000 --keep-going    # tally, do not stop
+  cli_fuzz.py --exe build/gbssn1d --surface concurrent --scenarios 500 --scenario-budget 0
   cli_fuzz.py --exe build/gbssn1d --check-flags        # only the flag table against --help
 
---budget S stops drawing new inputs after S seconds of wall time (0: no limit); a failure found
-before then is still shrunk in full.
+--budget S stops drawing new argument vectors after S seconds of wall time, --scenario-budget S
+new scenarios (0: no limit); a failure found before then is still shrunk in full. --surface
+names what is fuzzed, comma-separated: args (the argument vectors), concurrent, links,
+resume-files, sweep-edits (default all); --scenarios N draws at most N scenarios.
 """
 
 import argparse
@@ -46,6 +86,7 @@ import hashlib
 import os
 import re
 import resource
+import shlex
 import shutil
 import signal
 import stat
@@ -228,7 +269,8 @@ LONG_NAME = "n" * 300  # a component longer than NAME_MAX
 LONG_PATH = "abcdefgh/" * 600 + "x"  # longer than PATH_MAX, in short components
 # Hostile paths relative to the scratch folder (which holds each of these before the run).
 PATHS = (FRESH_OUT, FRESH_OUT, FRESH_OUT, "new dir", "new\nline", "ha#sh", "eq=ual", "-lead",
-         "--lead", LONG_NAME, LONG_PATH, "x" * 5000, "loop", "loop/sub", "dangling", "fifo", "adir",
+         "--lead", LONG_NAME, LONG_PATH, "x" * 5000, "loop", "loop/sub", "dangling",
+         "dangling/sub", "fifo", "adir",
          "afile", "afile/sub", DONE, DONE + "/timeseries.dat", DONE + "/config.toml", DAMAGED,
          HAH_FILE, "/dev/null", "/dev/full", "/proc/gbssn1d_cannot", "/", ".", "new/", "a//b",
          "caf\u00e9", "bad\udcffbyte", 'quo"te', "back\\slash", "tab\there", "", "cfg.toml")
@@ -915,11 +957,733 @@ def check(exe, templates, case):
                             zip(recorded.splitlines(), printed.splitlines()) if a != b]
                     problems.append(("config-repeat", f"evolve --config {cfg} --print-config: "
                                      f"exit {s2}, " + (diff[0] if diff else err2.strip()[:100])))
+        # an --out that is (or lies below) a symbolic link to nothing is refused as one, and
+        # the link's target is not created (round 3: it was refused as 'File exists')
+        if (sub in ("evolve", "converge", "sweep") and out is not None and not timed_out
+                and os.path.normpath(out).split(os.sep)[0] == "dangling"):
+            if os.path.lexists(os.path.join(cwd, "missing-target")):
+                problems.append(("dangling-out", "the target of the dangling link --out "
+                                 f"{out} was created"))
+            elif "File exists" in err:
+                problems.append(("dangling-out", f"--out {out}, a symbolic link to nothing (or "
+                                 "below one), refused as 'File exists': "
+                                 + err.strip().splitlines()[-1][:120]))
         case_result = (status, err)
     finally:
         subprocess.run(["chmod", "-R", "u+rwX", base], stderr=subprocess.DEVNULL)
         shutil.rmtree(base, ignore_errors=True)
     return problems, case_result
+
+
+# ---------------------------------------------------------------------------------------------
+# Scenarios (issue 37, round 3): what one argument vector cannot say. Two processes writing one
+# folder at once; output files that are symbolic links; a run's resume files corrupted; a
+# sweep's folder edited between runs. Each scenario lays out a fresh scratch folder with copies
+# of small finished runs (make_references), changes it, runs one or two commands and compares
+# what they leave with what the same commands leave on an intact copy (computed once, cached).
+
+TINY = ["--id", "1log-trumpet", "--grid", "uniform", "--N", "32", "--rmax", "8"]
+# a run that takes some 0.05-0.3 s, so that two of them overlap
+BUSY = ["--id", "1log-trumpet", "--grid", "uniform", "--rmax", "8", "--dt-series", "0.05"]
+HALF = "half"  # a finished run to t = 0.5, checkpoint at 0.25, with --rah-hAH-file's copy
+STUDY = "study"  # a finished converge study (every member with checkpoint and samples)
+SWEEP_DIR = "sw"  # a finished sweep of two members
+OUTSIDE = "outside"  # a folder outside every run: files that links point to
+HALF_ARGS = ["evolve"] + TINY + ["--tmax", "0.5", "--checkpoint-every", "0.25", "--dt-series",
+                                 "0.125", "--rahA", "0.5", "--rah-hAH-file", HAH_FILE,
+                                 "--out", HALF]
+STUDY_ARGS = ["converge", "--N", "32,40,48", "--id", "1log-trumpet", "--grid", "uniform",
+              "--rmax", "8", "--tmax", "0.5", "--checkpoint-every", "0.25", "--out", STUDY]
+SWEEP_MEMBERS = ("ko-sigma=0.1", "ko-sigma=0.2")
+SWEEP_ARGS = ["sweep", "--sweep", "ko-sigma=0.1,0.2"] + TINY + ["--tmax", "0.5",
+                                                                "--progress-every", "0",
+                                                                "--out", SWEEP_DIR]
+SURFACES = ("concurrent", "links", "resume-files", "sweep-edits")
+# the files a run resumes from (not compared as outputs: a refused or finished resume may leave
+# a damaged one as it found it)
+RESUME_FILES = ("checkpoint.bin", "converge_samples.bin", "rah-hAH-file.dat")
+# what a refusal must name for each damaged resume file
+NAMES_FILE = {"checkpoint.bin": "checkpoint", "rah-hAH-file.dat": "rah-hAH-file",
+              "converge_samples.bin": "converge_samples"}
+# exit 2 of one of two writers of a folder: the folder in use, or a documented refusal of what
+# the other left there
+IN_USE = re.compile(r"being written by another gbssn1d process|already being written")
+# (a study or sweep of other inputs: "holds a converge study of other inputs", "holds members
+# run with other inputs")
+OTHER_REFUSALS = re.compile(r"exists and is not empty|of other inputs|run with other inputs")
+
+
+@dataclasses.dataclass
+class Scenario:
+    surface: str
+    steps: tuple  # (what is done, as a shell-like line) for the report
+    params: dict = dataclasses.field(default_factory=dict)
+
+    def __repr__(self):
+        return "\n" + describe(self)
+
+
+def shell_line(args):
+    return "gbssn1d " + " ".join(shlex.quote(a) for a in args)
+
+
+def describe(s):
+    """A scenario as the shell steps that reproduce it (in a folder holding the references)."""
+    lines = [f"# scenario {s.surface}: " + ", ".join(f"{k}={v!r}" for k, v in s.params.items()
+                                                    if k not in ("a", "b", "action"))]
+    lines += ["  " + step for step in s.steps]
+    return "\n".join(lines)
+
+
+def make_references(exe, root):
+    """The finished runs every scenario starts from, in `root` (the scratch folders copy them to
+    the same relative names, so that recorded paths agree)."""
+    for args in (HALF_ARGS, STUDY_ARGS, SWEEP_ARGS):
+        p = subprocess.run([exe] + args, cwd=root, stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, text=True)
+        if p.returncode not in (0, 4, 5):
+            raise RuntimeError(f"reference {shell_line(args)}: exit {p.returncode}: {p.stderr}")
+
+
+def summary_rows(path):
+    """summary.dat as {member: columns} without the wall_s column (and None if unreadable)."""
+    try:
+        with open(path, "rb") as f:
+            lines = f.read().decode("utf-8", "replace").splitlines()
+    except OSError:
+        return None
+    head = lines[0][1:].split() if lines and lines[0].startswith("#") else []
+    wall = head.index("wall_s") if "wall_s" in head else None
+    rows = {}
+    for line in lines:
+        if line.startswith("#") or not line.strip():
+            continue
+        cols = line.split()
+        if wall is not None and wall < len(cols):
+            del cols[wall]
+        rows[cols[0] if cols else ""] = cols
+    return rows
+
+
+def outputs(folder, keep_resume_files=False):
+    """What a run, study or sweep wrote into `folder`, to compare with a reference: every file
+    (links followed) but the lock files, the members' logs and status files (they carry wall
+    times) and, unless asked, the resume files; summary.dat without its wall_s column."""
+    found = {}
+    for dirpath, dirnames, filenames in os.walk(folder):
+        for name in filenames:
+            p = os.path.join(dirpath, name)
+            rel = os.path.relpath(p, folder)
+            if name.endswith(".lock") or re.search(r"\.(log|status)$", name):
+                continue
+            if name in RESUME_FILES and not keep_resume_files:
+                continue
+            if name == "summary.dat":
+                found[rel] = repr(summary_rows(p))
+                continue
+            try:
+                with open(p, "rb") as f:
+                    found[rel] = hashlib.sha1(f.read()).hexdigest()
+            except OSError as e:
+                found[rel] = f"unreadable: {e.strerror}"
+    return found
+
+
+def first_difference(got, want):
+    for rel in sorted(set(got) | set(want)):
+        if got.get(rel) != want.get(rel):
+            what = "missing" if rel not in got else "extra" if rel not in want else "differs"
+            return f"{rel} {what}"
+    return None
+
+
+class Lab:
+    """Runs scenarios: the references, the cache of reference outcomes, scratch folders."""
+
+    def __init__(self, exe, root):
+        self.exe, self.root = exe, root
+        self.cache = {}
+
+    def scratch(self, names):
+        """A fresh scratch folder: its cwd holds hAH.dat, an `outside` folder and copies of
+        the named references."""
+        base = tempfile.mkdtemp(prefix="gbssn1d-scenario-")
+        cwd = os.path.join(base, "cwd")
+        os.makedirs(os.path.join(cwd, OUTSIDE))
+        os.makedirs(os.path.join(base, "capture"))
+        shutil.copy(os.path.join(self.root, HAH_FILE), os.path.join(cwd, HAH_FILE))
+        for name in names:
+            shutil.copytree(os.path.join(self.root, name), os.path.join(cwd, name), symlinks=True)
+        return base, cwd
+
+    def reference(self, names, commands, folder):
+        """(exit statuses, outputs of `folder`) of `commands` run one after the other on intact
+        copies of the named references (cached)."""
+        key = (tuple(names), tuple(tuple(c) for c in commands), folder)
+        if key not in self.cache:
+            base, cwd = self.scratch(names)
+            try:
+                statuses = [run(self.exe, c, cwd, os.path.join(base, "capture"))[0]
+                            for c in commands]
+                self.cache[key] = (statuses, outputs(os.path.join(cwd, folder)))
+            finally:
+                shutil.rmtree(base, ignore_errors=True)
+        return self.cache[key]
+
+
+def common_problems(sub, status, err, timed_out):
+    """The invariants every command keeps: no hang, no signal, a documented exit, no
+    internals on stderr."""
+    if timed_out:
+        return [("hang", f"no exit within {TIME_LIMIT:.0f} s")]
+    if status < 0 or status >= 128:
+        return [("signal", f"exit {status} (died by a signal)")]
+    problems = []
+    if status not in ALLOWED[sub]:
+        problems.append(("exit-status", f"exit {status}, not one of {sorted(ALLOWED[sub])}"))
+    for leak in LEAKS:
+        if leak in err:
+            problems.append(("leak", f"stderr holds {leak!r}"))
+            break
+    return problems
+
+
+def last_line(err):
+    lines = err.strip().splitlines()
+    return lines[-1][:160] if lines else ""
+
+
+# --- two writers of one folder ---------------------------------------------------------------
+
+@st.composite
+def concurrent_scenario(draw):
+    pair = draw(st.sampled_from(("evolve+evolve", "sweep+sweep", "converge+evolve")))
+    n = draw(st.sampled_from(("200", "300", "400")))
+    tmax = draw(st.sampled_from(("1", "2")))
+    sigma = ("0.1", draw(st.sampled_from(("0.2", "0.1"))))  # the same inputs, now and then
+
+    def evolve(k, force):
+        return (["evolve"] + BUSY + ["--N", n, "--tmax", tmax, "--ko-sigma", sigma[k], "--out",
+                                     "busy"] + (["--force"] if force else []))
+
+    if pair == "evolve+evolve":
+        a, b = evolve(0, draw(st.booleans())), evolve(1, draw(st.booleans()))
+    elif pair == "sweep+sweep":
+        a, b = [["sweep", "--sweep", "rahA=0,0.5", "--progress-every", "0"] + BUSY
+                + ["--N", n, "--tmax", tmax, "--ko-sigma", sigma[k], "--out", "busy"]
+                + (["--jobs", "2"] if draw(st.booleans()) else []) for k in (0, 1)]
+    else:  # a study and a run: --force would let a run after the study add its files to it
+        a = ["converge", "--N", "100,150,200"] + BUSY + ["--tmax", tmax, "--ko-sigma", sigma[0],
+                                                          "--out", "busy"]
+        b = evolve(1, False)
+    if draw(st.booleans()):
+        a, b = b, a
+    delay = draw(st.sampled_from((0.0, 0.0, 0.005, 0.02, 0.08)))
+    steps = (f"{shell_line(a)} &", f"sleep {delay}; {shell_line(b)} &", "wait")
+    return Scenario("concurrent", steps, {"pair": pair, "delay": delay, "a": a, "b": b})
+
+
+def spawn(exe, args, cwd, capture, tag):
+    err = open(os.path.join(capture, tag + ".err"), "wb")
+    p = subprocess.Popen([encode(exe)] + [encode(a) for a in args], cwd=cwd,
+                         stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
+                         preexec_fn=limits, start_new_session=True,
+                         env={"PATH": "/usr/bin:/bin", "LANG": "C"})
+    return p, err
+
+
+def reap(p, err, started):
+    timed_out = False
+    try:
+        p.wait(max(1.0, TIME_LIMIT - (time.monotonic() - started)))
+    except subprocess.TimeoutExpired:
+        timed_out = True
+        os.killpg(p.pid, signal.SIGKILL)
+        p.wait()
+    err.close()
+    with open(err.name, "rb") as f:
+        return p.returncode, f.read().decode("utf-8", "replace"), timed_out
+
+
+def check_concurrent(lab, s):
+    """Of two writers of one folder, each ends as it would alone or is refused (the folder in
+    use, or what the other left there); at least one ends as alone; the folder then holds what
+    one of them writes alone, never a mix."""
+    a, b = s.params["a"], s.params["b"]
+    base, cwd = lab.scratch(())
+    problems = []
+    try:
+        capture = os.path.join(base, "capture")
+        started = time.monotonic()
+        pa = spawn(lab.exe, a, cwd, capture, "a")
+        if s.params["delay"]:
+            time.sleep(s.params["delay"])
+        pb = spawn(lab.exe, b, cwd, capture, "b")
+        results = [reap(*pa, started), reap(*pb, started)]
+        found = outputs(os.path.join(cwd, "busy"))
+        alone = []
+        for args, (status, err, timed_out) in zip((a, b), results):
+            tag = args[0]
+            problems += [(k, f"{tag}: {d}") for k, d in
+                         common_problems(args[0], status, err, timed_out)]
+            solo_status, solo_out = lab.reference((), [args], "busy")
+            solo_status = solo_status[0]
+            if status == solo_status:
+                alone.append(solo_out)
+            elif status == 2:
+                if not (IN_USE.search(err) or OTHER_REFUSALS.search(err)):
+                    problems.append(("concurrent-refusal", f"{tag} refused (exit 2) but not "
+                                     f"for the folder in use: {last_line(err)}"))
+            elif not timed_out:
+                problems.append(("concurrent-exit", f"{tag} ended with exit {status}; alone it "
+                                 f"ends with {solo_status}, refused with 2: {last_line(err)}"))
+        if not alone and not problems:
+            problems.append(("concurrent-none", "both writers were refused: "
+                             + " / ".join(last_line(r[1]) for r in results)))
+        elif alone and all(found != want for want in alone):
+            diffs = "; ".join(first_difference(found, want) for want in alone)
+            problems.append(("concurrent-mix", "the folder holds neither writer's output as "
+                             f"written alone ({diffs}); exits {results[0][0]} and "
+                             f"{results[1][0]}" + config_vs_headers(os.path.join(cwd, "busy"))))
+    finally:
+        shutil.rmtree(base, ignore_errors=True)
+    return problems, (results[0][0], results[1][0])
+
+
+def config_vs_headers(folder):
+    """', config.toml says ko-sigma = X, timeseries.dat's header Y' when they differ."""
+    def sigma(path, prefix):
+        try:
+            with open(path, "rb") as f:
+                for line in f.read().decode("utf-8", "replace").splitlines():
+                    if line.startswith(prefix + "ko-sigma = "):
+                        return line.split("=", 1)[1].strip()
+        except OSError:
+            return None
+        return None
+    said = {name: sigma(os.path.join(folder, name), "# ") for name in
+            ("timeseries.dat", "horizon.dat", "profiles.dat", "convergence.dat")}
+    said["config.toml"] = sigma(os.path.join(folder, "config.toml"), "")
+    said = {k: v for k, v in said.items() if v is not None}
+    if len(set(said.values())) > 1:
+        return "; ko-sigma by file: " + ", ".join(f"{k} {v}" for k, v in said.items())
+    return ""
+
+
+# --- symbolic links where a command writes -----------------------------------------------------
+
+LINK_NAMES = ("horizon.dat", "timeseries.dat", "profiles.dat", "config.toml", "checkpoint.bin",
+              "rah-hAH-file.dat", ".gbssn1d.lock", "notes.txt")
+
+
+@st.composite
+def links_scenario(draw):
+    where = draw(st.sampled_from(("run", "run", "study-member", "sweep-member", "dangling-out")))
+    if where == "dangling-out":
+        target = draw(st.sampled_from(("missing-target", "missing-dir/target")))
+        below = draw(st.sampled_from(("", "", "/sub")))
+        out = "link" + below
+        cmd = draw(st.sampled_from((
+            ["evolve"] + TINY + ["--tmax", "0", "--out", out],
+            ["converge", "--N", "32,40,48"] + TINY[:4] + ["--rmax", "8", "--tmax", "0", "--out",
+                                                          out],
+            ["sweep", "--sweep", "ko-sigma=0.1,0.2"] + TINY + ["--tmax", "0", "--out", out],
+            ["sweep", "--sweep", "ko-sigma=0.1,0.2"] + TINY + ["--tmax", "0", "--out", out,
+                                                              "--member", "ko-sigma=0.1"],
+            ["sweep", "--sweep", "ko-sigma=0.1,0.2"] + TINY + ["--tmax", "0", "--out", out,
+                                                              "--emit-tasks", "tasks.txt"])))
+        steps = (f"ln -s {target} link", shell_line(cmd))
+        return Scenario("links", steps, {"where": where, "target": target, "out": out,
+                                         "action": cmd})
+    if where == "run":
+        folder, name = HALF, draw(st.sampled_from(LINK_NAMES))
+        cmd = draw(st.sampled_from((
+            HALF_ARGS + ["--force"],
+            ["evolve"] + TINY + ["--tmax", "0.25", "--checkpoint-every", "0.25", "--force",
+                                 "--out", HALF],
+            ["resume", HALF, "--tmax", "1"],
+            ["resume", HALF])))
+    elif where == "study-member":
+        folder = draw(st.sampled_from((STUDY + "/N32", STUDY + "/N40", STUDY)))
+        name = draw(st.sampled_from(LINK_NAMES + ("converge_samples.bin", "convergence.dat",
+                                                  "scaled_H.dat")))
+        cmd = STUDY_ARGS + (["--force"] if draw(st.booleans()) else [])
+    else:
+        folder = draw(st.sampled_from([SWEEP_DIR + "/" + m for m in SWEEP_MEMBERS]
+                                      + [SWEEP_DIR]))
+        name = draw(st.sampled_from(LINK_NAMES + ("summary.dat",)))
+        cmd = SWEEP_ARGS + (["--collect"] if draw(st.booleans()) else [])
+    content = draw(st.sampled_from(("copy", "other")))  # the linked file: a copy, or not
+    # a member whose status file is gone runs again (into the folder that holds the link)
+    rerun = folder.startswith(SWEEP_DIR + "/") and draw(st.booleans())
+    steps = ((f"cp {folder}/{name} {OUTSIDE}/precious" if content == "copy" else
+              f"echo precious > {OUTSIDE}/precious"),
+             f"rm -f {folder}/{name}; ln -s $PWD/{OUTSIDE}/precious {folder}/{name}")
+    if rerun:
+        steps += (f"rm {SWEEP_DIR}/logs/{folder.split('/')[-1]}.status",)
+    steps += (shell_line(cmd),)
+    return Scenario("links", steps, {"where": where, "folder": folder, "name": name,
+                                     "content": content, "rerun": rerun, "action": cmd})
+
+
+def check_links(lab, s):
+    """No file is written through a symbolic link: the file a link in the folder points to is
+    left byte for byte; a refusal (exit 2) changes nothing in the folder; a failed write (exit
+    1) names the link; a dangling --out is refused as a link (not 'File exists'), its target not
+    created."""
+    p = s.params
+    problems = []
+    if p["where"] == "dangling-out":
+        base, cwd = lab.scratch(())
+        try:
+            os.symlink(p["target"], os.path.join(cwd, "link"))
+            status, err, _, timed_out = run(lab.exe, p["action"], cwd,
+                                            os.path.join(base, "capture"))
+            problems += common_problems(p["action"][0], status, err, timed_out)
+            made = [t for t in ("missing-target", "missing-dir")
+                    if os.path.lexists(os.path.join(cwd, t))]
+            if made:
+                problems.append(("link-followed", f"the dangling link's target {made[0]} was "
+                                 "created"))
+            if status != 2 or "symbolic link" not in err or "File exists" in err:
+                problems.append(("dangling-out", f"--out {p['out']} (a link to nothing, or "
+                                 f"below one): exit {status}, {last_line(err)!r}; wanted a "
+                                 "refusal (exit 2) saying it is a symbolic link"))
+        finally:
+            shutil.rmtree(base, ignore_errors=True)
+        return problems, status
+    top = p["folder"].split("/")[0]
+    base, cwd = lab.scratch((top,))
+    try:
+        link = os.path.join(cwd, p["folder"], p["name"])
+        precious = os.path.join(cwd, OUTSIDE, "precious")
+        if p["content"] == "copy" and os.path.isfile(link):
+            shutil.copy(link, precious)
+        else:
+            with open(precious, "wb") as f:
+                f.write(b"precious\n")
+        if os.path.lexists(link):
+            os.remove(link)
+        os.symlink(precious, link)
+        if p["rerun"]:
+            os.remove(os.path.join(cwd, SWEEP_DIR, "logs",
+                                   p["folder"].split("/")[-1] + ".status"))
+        outside_before = fingerprint(os.path.join(cwd, OUTSIDE))
+        before = fingerprint(os.path.join(cwd, top))
+        status, err, _, timed_out = run(lab.exe, p["action"], cwd, os.path.join(base, "capture"))
+        problems += common_problems(p["action"][0], status, err, timed_out)
+        if fingerprint(os.path.join(cwd, OUTSIDE)) != outside_before:
+            problems.append(("link-followed", f"{p['folder']}/{p['name']}, a link to "
+                             f"{OUTSIDE}/precious: the file it points to changed (exit "
+                             f"{status})"))
+        if status == 2 and fingerprint(os.path.join(cwd, top)) != before:
+            problems.append(("refusal-wrote", f"refused (exit 2) but {top} changed: "
+                             f"{last_line(err)}"))
+        # exit 1: a write refused at the link, or --collect with members not (any more) done
+        if status == 1 and "link" not in err and not ("--collect" in p["action"]
+                                                      and "missing" in err):
+            problems.append(("exit-1", f"exit 1 not naming the link: {last_line(err)}"))
+    finally:
+        shutil.rmtree(base, ignore_errors=True)
+    return problems, status
+
+
+# --- resume files corrupted -------------------------------------------------------------------
+
+@st.composite
+def resume_files_scenario(draw):
+    study = draw(st.integers(0, 2)) == 0
+    if study:
+        folder = draw(st.sampled_from((STUDY + "/N32", STUDY + "/N40", STUDY + "/N48")))
+        name = draw(st.sampled_from(("converge_samples.bin", "checkpoint.bin")))
+        action = STUDY_ARGS + (["--force"] if draw(st.booleans()) else [])
+        flag_file = "kept"
+    else:
+        folder = HALF
+        name = draw(st.sampled_from(("checkpoint.bin", "rah-hAH-file.dat")))
+        action = draw(st.sampled_from((["resume", HALF, "--tmax", "1"], ["resume", HALF],
+                                       ["resume", HALF, "--tmax", "0.75"])))
+        # the file --rah-hAH-file names, after the run: as it was, edited, or gone
+        flag_file = draw(st.sampled_from(("kept", "edited", "edited", "deleted")))
+    kind = draw(st.sampled_from(("flip", "flip", "truncate", "delete", "empty", "link-loop",
+                                 "link-copy", "link-other")))
+    where = draw(st.floats(0, 1))
+    mask = draw(st.sampled_from((0x01, 0x40, 0x80, 0x10)))
+    path = f"{folder}/{name}"
+    step = {"flip": f"flip bit mask {mask:#x} of the byte at {where:.3f} of {path}",
+            "truncate": f"truncate {path} to {where:.3f} of its size",
+            "delete": f"rm {path}", "empty": f": > {path}",
+            "link-loop": f"rm {path}; ln -s {name} {path}",
+            "link-copy": f"mv {path} {OUTSIDE}/{name}; ln -s $PWD/{OUTSIDE}/{name} {path}",
+            "link-other": f"ln -sf $PWD/{OUTSIDE}/other {path}  # another run's {name}"}[kind]
+    steps = (step,)
+    if flag_file != "kept":
+        steps += (f"{'edit' if flag_file == 'edited' else 'rm'} {HAH_FILE}",)
+    steps += (shell_line(action),)
+    return Scenario("resume-files", steps, {"folder": folder, "name": name, "kind": kind,
+                                            "where": where, "mask": mask,
+                                            "flag_file": flag_file, "action": action})
+
+
+OTHER_HAH = "# t r_ah\n" + "".join(f"{0.25 * k:g} {0.95 + 0.002 * k:g}\n" for k in range(21))
+
+
+def corrupt(cwd, folder, name, kind, where, mask):
+    path = os.path.join(cwd, folder, name)
+    outside = os.path.join(cwd, OUTSIDE)
+    if kind in ("flip", "truncate"):
+        with open(path, "rb") as f:
+            data = bytearray(f.read())
+        k = min(len(data) - 1, int(where * len(data)))
+        if kind == "flip":
+            data[k] ^= mask
+        else:
+            data = data[:k]
+        with open(path, "wb") as f:
+            f.write(data)
+    elif kind == "delete":
+        os.remove(path)
+    elif kind == "empty":
+        open(path, "wb").close()
+    elif kind == "link-loop":
+        os.remove(path)
+        os.symlink(name, path)
+    elif kind == "link-copy":
+        shutil.move(path, os.path.join(outside, name))
+        os.symlink(os.path.join(outside, name), path)
+    elif kind == "link-other":
+        other = os.path.join(outside, "other")
+        if name == "rah-hAH-file.dat":
+            with open(other, "w") as f:
+                f.write(OTHER_HAH)
+        else:  # the same file of another run (another member, or another run's checkpoint)
+            donor = {HALF: os.path.join(cwd, STUDY, "N32"), STUDY + "/N32":
+                     os.path.join(cwd, STUDY, "N40")}.get(folder, os.path.join(cwd, STUDY, "N32"))
+            shutil.copy(os.path.join(donor, name if name != "rah-hAH-file.dat" else
+                                     "checkpoint.bin"), other)
+        os.remove(path)
+        os.symlink(other, path)
+
+
+def check_resume_files(lab, s):
+    """A corrupted resume file: the resume or rerun refuses (exit 2) naming the file, changing
+    nothing, or ends as on the intact copy with the same outputs; never another success."""
+    p = s.params
+    top = p["folder"].split("/")[0]
+    # the study's members take another run's checkpoint from the study: both are laid out
+    names = (HALF, STUDY) if top == HALF else (STUDY,)
+    ref_status, ref_out = lab.reference(names, [p["action"]], top)
+    base, cwd = lab.scratch(names)
+    problems = []
+    try:
+        if p["flag_file"] == "edited":
+            with open(os.path.join(cwd, HAH_FILE), "w") as f:
+                f.write(OTHER_HAH)
+        elif p["flag_file"] == "deleted":
+            os.remove(os.path.join(cwd, HAH_FILE))
+        corrupt(cwd, p["folder"], p["name"], p["kind"], p["where"], p["mask"])
+        before = fingerprint(os.path.join(cwd, top))
+        outside_before = fingerprint(os.path.join(cwd, OUTSIDE))
+        status, err, _, timed_out = run(lab.exe, p["action"], cwd, os.path.join(base, "capture"))
+        problems += common_problems(p["action"][0], status, err, timed_out)
+        if fingerprint(os.path.join(cwd, OUTSIDE)) != outside_before:
+            problems.append(("link-followed", f"{p['folder']}/{p['name']} ({p['kind']}): the "
+                             "file outside it points to changed"))
+        if status == 2 and ref_status[0] != 2:
+            if NAMES_FILE[p["name"]] not in err:
+                problems.append(("resume-refusal", f"refused without naming {p['name']}: "
+                                 f"{last_line(err)}"))
+            if fingerprint(os.path.join(cwd, top)) != before:
+                problems.append(("refusal-wrote", f"refused (exit 2) but {top} changed"))
+        elif not timed_out and not problems:
+            got = outputs(os.path.join(cwd, top))
+            if status != ref_status[0] or got != ref_out:
+                what = first_difference(got, ref_out) or "the same outputs"
+                problems.append(("resume-differs", f"{p['folder']}/{p['name']} {p['kind']}: "
+                                 f"exit {status} ({what}); on the intact copy exit "
+                                 f"{ref_status[0]}; stderr: {last_line(err)}"))
+    finally:
+        shutil.rmtree(base, ignore_errors=True)
+    return problems, status
+
+
+# --- a sweep's folder edited between runs -------------------------------------------------------
+
+SWEEP_EDITS = ("folder-deleted", "series-emptied", "series-truncated", "config-edited",
+               "config-deleted", "status-deleted")
+# edits after which a member is not a result until it runs again
+DAMAGING = ("folder-deleted", "series-emptied", "series-truncated", "status-deleted")
+
+
+@st.composite
+def sweep_edits_scenario(draw):
+    edits = draw(st.lists(st.tuples(st.sampled_from(SWEEP_MEMBERS), st.sampled_from(SWEEP_EDITS),
+                                    st.floats(0, 0.999)),
+                          min_size=1, max_size=2, unique_by=lambda e: e[0]))
+    actions = draw(st.sampled_from((("collect",), ("rerun",), ("collect", "rerun"))))
+    steps = []
+    for member, edit, frac in edits:
+        m = f"{SWEEP_DIR}/{member}"
+        steps.append({"folder-deleted": f"rm -r {m}",
+                      "series-emptied": f": > {m}/timeseries.dat",
+                      "series-truncated": f"truncate {m}/timeseries.dat to {frac:.3f} of it",
+                      "config-edited": f"sed -i s/ko-sigma = .*/ko-sigma = 0.3/ {m}/config.toml",
+                      "config-deleted": f"rm {m}/config.toml",
+                      "status-deleted": f"rm {SWEEP_DIR}/logs/{member}.status"}[edit])
+    steps += [shell_line(SWEEP_ARGS + (["--collect"] if a == "collect" else [])) for a in actions]
+    return Scenario("sweep-edits", tuple(steps), {"edits": edits, "actions": actions})
+
+
+def edit_sweep(cwd, member, edit, frac):
+    """Makes the edit; returns whether it cut timeseries.dat within its end line only (every
+    row kept, the end line's tail lost)."""
+    m = os.path.join(cwd, SWEEP_DIR, member)
+    series = os.path.join(m, "timeseries.dat")
+    if edit == "folder-deleted":
+        shutil.rmtree(m)
+    elif edit == "series-emptied":
+        open(series, "wb").close()
+    elif edit == "series-truncated":
+        with open(series, "rb") as f:
+            data = f.read()
+        cut = int(frac * len(data))
+        with open(series, "wb") as f:
+            f.write(data[:cut])
+        return cut > data.rfind(b"\n", 0, len(data) - 1) + len(b"# end: completed")
+    elif edit == "config-edited":
+        with open(os.path.join(m, "config.toml"), "rb") as f:
+            text = f.read()
+        with open(os.path.join(m, "config.toml"), "wb") as f:
+            f.write(re.sub(rb"(?m)^ko-sigma = .*$", b"ko-sigma = 0.3", text))
+    elif edit == "config-deleted":
+        os.remove(os.path.join(m, "config.toml"))
+    elif edit == "status-deleted":
+        os.remove(os.path.join(cwd, SWEEP_DIR, "logs", member + ".status"))
+
+
+def check_sweep_edits(lab, s):
+    """A sweep folder edited between runs: --collect lists a member whose output is gone or
+    cut short as missing (exit 1), never 'ok' (with nan), and every member it lists ok with the
+    clean sweep's numbers; a rerun runs such a member again and ends with the clean sweep's
+    summary and outputs."""
+    p = s.params
+    _, clean = lab.reference((SWEEP_DIR,), [SWEEP_ARGS], SWEEP_DIR)
+    clean = {rel: v for rel, v in clean.items() if rel.endswith(".dat")}
+    clean_rows = summary_rows(os.path.join(lab.root, SWEEP_DIR, "summary.dat"))
+    base, cwd = lab.scratch((SWEEP_DIR,))
+    problems = []
+    status = None
+    try:
+        # members whose timeseries.dat lost only the tail of its end line ('# end: completed
+        # at t = 0.' for '... t = 0.5'): reported apart (a known defect)
+        end_cut = {member for member, edit, frac in p["edits"]
+                   if edit_sweep(cwd, member, edit, frac)}
+        damaged = {member for member, edit, _ in p["edits"] if edit in DAMAGING}
+        for action in p["actions"]:
+            args = SWEEP_ARGS + (["--collect"] if action == "collect" else [])
+            status, err, _, timed_out = run(lab.exe, args, cwd, os.path.join(base, "capture"))
+            problems += common_problems("sweep", status, err, timed_out)
+            rows = summary_rows(os.path.join(cwd, SWEEP_DIR, "summary.dat")) or {}
+            for member, cols in rows.items():
+                name = "ko-sigma=" + member
+                if len(cols) > 1 and cols[1] == "ok" and "nan" in cols[3:9]:
+                    problems.append(("sweep-ok-nan", f"{action}: {name} listed ok with nan: "
+                                     + " ".join(cols[:8])))
+                elif len(cols) > 1 and cols[1] == "ok" and cols != clean_rows.get(member):
+                    problems.append(("sweep-numbers", f"{action}: {name} listed ok with "
+                                     f"{' '.join(cols[2:8])}, the clean sweep's "
+                                     f"{' '.join(clean_rows.get(member, ['?'] * 8)[2:8])}"))
+            if action == "collect":
+                want = 1 if damaged else 0
+                for member in damaged:
+                    cols = rows.get(member.split("=", 1)[1])
+                    if cols is None or len(cols) < 2 or cols[1] != "missing":
+                        problems.append(("sweep-end-line-cut" if member in end_cut else
+                                         "sweep-not-missing", f"collect: {member} ("
+                                         f"{dict((m, e) for m, e, _ in p['edits'])[member]}) "
+                                         f"listed {cols[1] if cols and len(cols) > 1 else None}"
+                                         ", not missing"))
+                if status != want and not problems:
+                    problems.append(("sweep-collect-exit", f"collect: exit {status}, wanted "
+                                     f"{want}: {last_line(err)}"))
+            else:
+                # the results (a member's config.toml edited by hand may stay so: the sweep
+                # keeps each member's inputs in logs/)
+                got = {rel: v for rel, v in outputs(os.path.join(cwd, SWEEP_DIR)).items()
+                       if rel.endswith(".dat")}
+                if status != 0 or got != clean:
+                    where = first_difference(got, clean) or ""
+                    problems.append(("sweep-end-line-cut" if where.split("/")[0] in end_cut
+                                     else "sweep-rerun", f"rerun: exit {status} ("
+                                     f"{first_difference(got, clean) or 'the same outputs'}); "
+                                     f"a clean sweep: exit 0; {last_line(err)}"))
+                damaged = set()
+            if problems:
+                break
+    finally:
+        shutil.rmtree(base, ignore_errors=True)
+    return problems, status
+
+
+SCENARIO_DRAW = {"concurrent": concurrent_scenario, "links": links_scenario,
+                 "resume-files": resume_files_scenario, "sweep-edits": sweep_edits_scenario}
+SCENARIO_CHECK = {"concurrent": check_concurrent, "links": check_links,
+                  "resume-files": check_resume_files, "sweep-edits": check_sweep_edits}
+
+
+@st.composite
+def scenarios(draw, surfaces):
+    return draw(SCENARIO_DRAW[draw(st.sampled_from(surfaces))]())
+
+
+# Known defects: violations the current program still has, each reported (issue 37); matched
+# by the invariant and the input, they are tallied and printed but do not fail the run. Remove
+# an entry once its defect is fixed, so that it cannot come back unseen.
+KNOWN_DEFECTS = (
+    (("dangling-out",),
+     lambda c: (subcommand(getattr(c, "args", None) or c.params.get("action", [])) == "sweep"
+                or "/" in os.path.normpath(out_dir(c) if isinstance(c, Case) else c.params["out"]
+                                           ).strip("/")),
+     "sweep (a whole sweep and --member) with --out a dangling symbolic link, and every "
+     "subcommand with --out below one (dangling/sub), refuse it as 'cannot be created: File "
+     "exists' instead of naming the link"),
+    (("resume-differs",),
+     lambda c: c.params.get("name") == "rah-hAH-file.dat"
+     and c.params.get("kind") in ("flip", "truncate", "link-other"),
+     "resume takes a changed copy OUT/rah-hAH-file.dat that still reads as an h_AH file (a "
+     "digit flipped, cut at a row, or a link to another valid file) and ends with exit 0 and "
+     "outputs other than the intact run's (no checksum of the copy is kept)"),
+    (("leak", "resume-differs"),
+     lambda c: c.params.get("folder", "").startswith(STUDY + "/")
+     and c.params.get("name") == "checkpoint.bin" and c.params.get("kind") == "link-loop",
+     "converge rerun with a member's checkpoint.bin a symbolic link loop: the member fails with "
+     "'filesystem error: status: Too many levels of symbolic links', the study stops (exit 3) "
+     "and rewrites convergence.dat with a partial study"),
+    (("concurrent-mix",),
+     lambda c: c.params.get("pair") == "converge+evolve"
+     and flag_value(c.params["a"], "--ko-sigma") == flag_value(c.params["b"], "--ko-sigma"),
+     "converge into a folder holding an evolve run of the same flags (but N) takes it for 'this "
+     "study (same inputs)' and writes the study into it without --force: config.toml says "
+     "N = 32, timeseries.dat's header the run's N (also one after the other)"),
+    (("sweep-end-line-cut",), lambda c: True,
+     "sweep takes a member whose timeseries.dat lost the tail of its end line ('# end: "
+     "completed at t = 0.' for '... t = 0.5') as complete: --collect lists it ok, a rerun keeps "
+     "the cut file"),
+)
+
+
+def flag_value(args, flag):
+    return args[args.index(flag) + 1] if flag in args[:-1] else None
+
+
+def known_defect(kind, case):
+    for kinds, match, what in KNOWN_DEFECTS:
+        try:
+            if kind in kinds and match(case):
+                return what
+        except Exception:  # a matcher that does not apply to this input
+            continue
+    return None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1003,13 +1767,94 @@ def failure(kind):
     return _failure_classes[kind]
 
 
+def drive(name, strategy, check_one, report, limit, budget, opts, state):
+    """Draws up to `limit` inputs from `strategy` (for `budget` seconds) and checks each with
+    check_one(input) -> (problems, (label, status, detail)); a failure is shrunk and raised
+    (--keep-going: tallied). A violation matched by KNOWN_DEFECTS is tallied apart."""
+    start = time.monotonic()
+    st_ = state.setdefault(name, {"runs": 0, "stopped": False})
+
+    @hypothesis.settings(max_examples=limit, deadline=None, database=None,
+                         print_blob=False, report_multiple_bugs=True,
+                         suppress_health_check=list(hypothesis.HealthCheck))
+    @hypothesis.seed(opts.seed)
+    @hypothesis.given(strategy)
+    def fuzz(case):
+        over = budget > 0 and time.monotonic() - start > budget
+        if over and not state["failed"]:
+            st_["stopped"] = True
+            return  # the budget is spent: no new inputs (a found failure still shrinks)
+        st_["runs"] += 1
+        if st_["runs"] % 1000 == 0:
+            print(f"cli fuzz: {st_['runs']} {name}, {time.monotonic() - start:.0f} s",
+                  flush=True)
+        found, (label, status, err) = check_one(case)
+        key = f"{label}:{status}"
+        state["statuses"][key] = state["statuses"].get(key, 0) + 1
+        if opts.only:
+            found = [p for p in found if p[0] == opts.only]
+        unknown = []
+        for kind, detail in found:
+            what = known_defect(kind, case)
+            if what is None:
+                unknown.append((kind, detail))
+                continue
+            seen = state["known"].setdefault(what, [])
+            if not seen:
+                print(f"\nknown defect (not failed): {kind}: {detail}\n{report(case, status, err)}",
+                      flush=True)
+            seen.append(kind)
+        if not unknown:
+            state["clean"] += 1 if not found else 0
+            return
+        if opts.keep_going:
+            for kind, detail in unknown:
+                t = state["tally"].setdefault(kind, [])
+                if len(t) < 3:
+                    t.append(report(case, status, err, f"{kind}: {detail}"))
+                    print(f"\n[{name} {st_['runs']}] {kind}: {detail}\n"
+                          + report(case, status, err), flush=True)
+                else:
+                    t.append(None)
+            return
+        state["failed"] = True
+        kind, detail = unknown[0]
+        raise failure(kind)(f"{kind}: {detail}\nreproducer:\n"
+                            + report(case, status, err, f"{kind}: {detail}"))
+
+    try:
+        fuzz()
+    except InvariantFailure:
+        import traceback
+        traceback.print_exc(limit=0)
+        return 1
+    except hypothesis.errors.Flaky as e:  # a failure that did not repeat (two processes' timing)
+        cause = e.__cause__ or e.__context__
+        print(f"\n{name}: a failure that did not repeat when replayed: {cause or e}", flush=True)
+        return 1
+    except BaseException as e:  # hypothesis' group of several distinct failures
+        if not any(isinstance(x, InvariantFailure) for x in getattr(e, "exceptions", ())):
+            raise
+        for x in e.exceptions:
+            print(f"\n{x}", flush=True)
+        return 1
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", required=True, help="the gbssn1d executable")
-    ap.add_argument("--examples", type=int, default=400, help="inputs to draw at most")
+    ap.add_argument("--examples", type=int, default=400,
+                    help="argument vectors to draw at most")
     ap.add_argument("--seed", type=int, default=1, help="hypothesis seed")
     ap.add_argument("--budget", type=float, default=40.0,
-                    help="seconds after which no new input is drawn (0: none)")
+                    help="seconds after which no new argument vector is drawn (0: none)")
+    ap.add_argument("--scenarios", type=int, default=250, help="scenarios to draw at most")
+    ap.add_argument("--scenario-budget", type=float, default=20.0,
+                    help="seconds after which no new scenario is drawn (0: none)")
+    ap.add_argument("--surface", default="all",
+                    help="what to fuzz, comma-separated: args, " + ", ".join(SURFACES)
+                    + " (all: every one)")
     ap.add_argument("--keep-going", action="store_true",
                     help="tally failures by invariant instead of stopping and shrinking")
     ap.add_argument("--only", help="fail on this invariant only (and shrink it)")
@@ -1017,6 +1862,11 @@ def main():
     ap.add_argument("--show", type=int, default=0, help="print N drawn inputs and exit")
     opts = ap.parse_args()
     exe = os.path.abspath(opts.exe)
+    surfaces = ("args",) + SURFACES if opts.surface == "all" else tuple(opts.surface.split(","))
+    unknown = [s for s in surfaces if s not in ("args",) + SURFACES]
+    if unknown:
+        ap.error(f"--surface: unknown {', '.join(unknown)}")
+    scenario_surfaces = tuple(s for s in surfaces if s != "args")
 
     problems = check_flag_table(exe)
     if problems:
@@ -1030,69 +1880,46 @@ def main():
         import warnings
         warnings.simplefilter("ignore")
         for _ in range(opts.show):
-            print(repr(cases().example()))
+            if "args" in surfaces:
+                print(repr(cases().example()))
+            if scenario_surfaces:
+                print(repr(scenarios(scenario_surfaces).example()))
         return 0
 
-    templates = make_templates(exe, tempfile.mkdtemp(prefix="gbssn1d-fuzz-templates-"))
     start = time.monotonic()
-    state = {"runs": 0, "failed": False, "tally": {}, "statuses": {}, "stopped": False}
-
-    @hypothesis.settings(max_examples=opts.examples, deadline=None, database=None,
-                         print_blob=False, report_multiple_bugs=True,
-                         suppress_health_check=list(hypothesis.HealthCheck))
-    @hypothesis.seed(opts.seed)
-    @hypothesis.given(cases())
-    def fuzz(case):
-        over = opts.budget > 0 and time.monotonic() - start > opts.budget
-        if over and not state["failed"]:
-            state["stopped"] = True
-            return  # the budget is spent: no new inputs (a found failure still shrinks)
-        state["runs"] += 1
-        if state["runs"] % 1000 == 0:
-            print(f"cli fuzz: {state['runs']} inputs, {time.monotonic() - start:.0f} s",
-                  flush=True)
-        found, (status, err) = check(exe, templates, case)
-        key = f"{subcommand(case.args)}:{status}"
-        state["statuses"][key] = state["statuses"].get(key, 0) + 1
-        if opts.only:
-            found = [p for p in found if p[0] == opts.only]
-        if not found:
-            return
-        if opts.keep_going:
-            for kind, detail in found:
-                t = state["tally"].setdefault(kind, [])
-                if len(t) < 3:
-                    t.append(catalogue_row(case, status, err, f"{kind}: {detail}"))
-                    print(f"\n[{state['runs']}] {kind}: {detail}\n"
-                          + catalogue_row(case, status, err), flush=True)
-                else:
-                    t.append(None)
-            return
-        state["failed"] = True
-        kind, detail = found[0]
-        raise failure(kind)(f"{kind}: {detail}\nreproducer (a row for "
-                            f"tests/cli/hostile_inputs.txt):\n"
-                            + catalogue_row(case, status, err, f"{kind}: {detail}"))
-
+    templates = make_templates(exe, tempfile.mkdtemp(prefix="gbssn1d-fuzz-templates-"))
+    state = {"failed": False, "tally": {}, "statuses": {}, "known": {}, "clean": 0}
     status = 0
     try:
-        fuzz()
-    except InvariantFailure:
-        status = 1
-        import traceback
-        traceback.print_exc(limit=0)
-    except BaseException as e:  # hypothesis' group of several distinct failures
-        if not any(isinstance(x, InvariantFailure) for x in getattr(e, "exceptions", ())):
-            raise
-        status = 1
-        for x in e.exceptions:
-            print(f"\n{x}", flush=True)
+        if "args" in surfaces:
+            def check_case(case):
+                found, (st_, err) = check(exe, templates, case)
+                return found, (subcommand(case.args), st_, err)
+            status |= drive("inputs", cases(), check_case, catalogue_row, opts.examples,
+                            opts.budget, opts, state)
+        if scenario_surfaces and not (status and not opts.keep_going):
+            make_references(exe, templates)
+            lab = Lab(exe, templates)
+
+            def check_scenario(s):
+                found, st_ = SCENARIO_CHECK[s.surface](lab, s)
+                return found, (s.surface, st_, "")
+
+            def scenario_report(s, st_, err, problem=""):
+                return (f"# fuzz: {problem}\n" if problem else "") + describe(s)
+            status |= drive("scenarios", scenarios(scenario_surfaces), check_scenario,
+                            scenario_report, opts.scenarios, opts.scenario_budget, opts, state)
     finally:
         shutil.rmtree(templates, ignore_errors=True)
     wall = time.monotonic() - start
     summary = ", ".join(f"{k} {v}" for k, v in sorted(state["statuses"].items()))
-    print(f"\ncli fuzz: {state['runs']} inputs run in {wall:.0f} s (seed {opts.seed}"
-          f"{', budget spent' if state['stopped'] else ''}); subcommand:exit counts: {summary}")
+    runs = {k: v for k, v in state.items() if isinstance(v, dict) and "runs" in v}
+    drawn = ", ".join(f"{v['runs']} {k}{' (budget spent)' if v['stopped'] else ''}"
+                      for k, v in runs.items())
+    print(f"\ncli fuzz: {drawn} run in {wall:.0f} s (seed {opts.seed}); "
+          f"{state['clean']} clean; label:exit counts: {summary}")
+    for what, seen in state["known"].items():
+        print(f"cli fuzz: known defect seen {len(seen)} time(s), not failed: {what}")
     if opts.keep_going:
         for kind, rows in sorted(state["tally"].items()):
             print(f"\n== {kind}: {len(rows)} input(s); the first:")
