@@ -65,26 +65,34 @@ constexpr const char* number_kind() {
     return "a whole decimal number";
 }
 
+/// Why a well-formed real number is not a double: its magnitude beyond about 1.8e308, or
+/// below about 2e-308 but not 0 (an empty string: in range, or not well formed).
+inline std::string real_out_of_range(std::string_view text) {
+  double value{};
+  const char* end = text.data() + text.size();
+  if (!text.empty() && text.front() == '+')
+    text.remove_prefix(1);
+  const auto r = std::from_chars(text.data(), end, value, std::chars_format::general);
+  if (text.empty() || r.ec != std::errc::result_out_of_range || r.ptr != end
+      || text.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
+    return {};
+  const auto e = text.find_first_of("eE");
+  const bool negative_exponent =
+      e != std::string_view::npos && e + 1 < text.size() && text[e + 1] == '-';
+  return negative_exponent ? "is too small in magnitude for a double (below about 2e-308): give 0 "
+                             "or a larger value"
+                           : "is too large in magnitude for a double (beyond about 1.8e308)";
+}
+
 /// The number `text` stands for, or ParamError naming `flag`, the text and the grammar.
 template <class T>
 T parse_number(const std::string& flag, const std::string& text) {
   if (const auto value = parse_decimal<T>(text))
     return *value;
   if constexpr (std::is_floating_point_v<T>) {
-    // a well-formed number too small for a double (1e-400) is not "not finite": say so
-    T tiny{};
-    const char* end = text.data() + text.size();
-    const auto r = std::from_chars(text.data(), end, tiny, std::chars_format::general);
-    if (r.ec == std::errc::result_out_of_range && r.ptr == end && !text.empty()
-        && text.find_first_not_of("0123456789.eE+-") == std::string::npos) {
-      const auto e = text.find_first_of("eE");
-      const bool negative_exponent =
-          e != std::string::npos && e + 1 < text.size() && text[e + 1] == '-';
-      if (negative_exponent)
-        throw ParamError(flag, printable(text),
-                         "is too small in magnitude for a double (below about 2e-308): give 0 "
-                         "or a larger value");
-    }
+    // a well-formed number beyond a double's range (1e-400, 1e999) is not "not finite": say so
+    if (const std::string why = real_out_of_range(text); !why.empty())
+      throw ParamError(flag, printable(text), why);
   }
   throw ParamError(flag, text.empty() ? std::string("''") : printable(text),
                    std::string("must be ") + number_kind<T>());

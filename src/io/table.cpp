@@ -81,11 +81,12 @@ Table read_table(const std::filesystem::path& path) {
       const TableCell cell = table_cell(w);
       if (cell.kind == TableCell::Kind::malformed) {
         const std::size_t c = row.size();
+        const std::string why = real_out_of_range(w);
         throw TableError(
             printable(path.string()),
-            fmt::format("line {}: '{}'{} is not a number (a decimal number, nan or inf)",
-                        line_number, printable(w),
-                        c < table.columns.size() ? " in column " + table.columns[c] : ""));
+            fmt::format("line {}: '{}'{} {}", line_number, printable(w),
+                        c < table.columns.size() ? " in column " + table.columns[c] : "",
+                        why.empty() ? "is not a number (a decimal number, nan or inf)" : why));
       }
       row.push_back(cell.value);
     }

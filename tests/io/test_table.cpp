@@ -74,7 +74,12 @@ TEST_CASE("read_table: a malformed number is refused, naming the file, the line 
            "(a decimal number, nan or inf)");
   CHECK(refused("# t r_ah\n0 0.9abc\n").find("line 2: '0.9abc' in column r_ah") == 0);
   CHECK(refused("# t r_ah\n0x1 0.9\n").find("line 2: '0x1' in column t") == 0);
-  CHECK(refused("# t\n1 2 3e999\n").find("line 2: '3e999' is not a number") == 0); // no name
+  CHECK(refused("# t\n1 2 3e999x\n").find("line 2: '3e999x' is not a number") == 0); // no name
+  // well formed but beyond a double: said so, not "not a number"
+  CHECK(refused("# t r_ah\n0 1e999\n")
+        == "line 2: '1e999' in column r_ah is too large in magnitude for a double (beyond about "
+           "1.8e308)");
+  CHECK(refused("# t r_ah\n1e-400 0.9\n").find("line 2: '1e-400' in column t is too small") == 0);
   // words and the non-finite values are read, each row with its line
   std::ofstream(path) << "# gbssn1d 0.1.0\n# N status t\n\n1 ok nan\n2 - -inf\n";
   const Table t = read_table(path);
