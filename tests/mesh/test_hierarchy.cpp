@@ -201,6 +201,14 @@ TEST_CASE("mesh layout: extents halve per level, bad N, levels and maps are refu
   CHECK_THROWS_WITH_AS(MeshLayout(RadialMap::sinh(100, 0.02, 400), 400, 2),
                        doctest::Contains("--grid"), std::invalid_argument);
   CHECK_NOTHROW(MeshLayout(RadialMap::sinh(100, 0.02, 400), 401, 1)); // one level: any grid
+  // the limit of 60 levels is inclusive: extents rmax / 2^59 are still distinct doubles
+  const MeshLayout deepest(std::ldexp(1.0, 60), 16, 60);
+  CHECK(deepest.levels() == 60);
+  CHECK(deepest.extent(59) == 2.0);
+  CHECK(deepest.extent(59) < deepest.extent(58));
+  CHECK_THROWS_WITH_AS(MeshLayout(std::ldexp(1.0, 61), 16, 61),
+                       doctest::Contains("--levels = 61 is invalid: at most 60 levels"),
+                       std::invalid_argument);
 }
 
 TEST_CASE("mesh layout: every level differences at the order asked, and boxes offer 2, 4 and 6") {
