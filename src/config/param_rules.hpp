@@ -1,20 +1,15 @@
 // The rules behind the evolve parameters, shared by their defaults, warnings, validation and
 // conversion (params.cpp, param_warnings.cpp, validate.cpp, param_convert.cpp): the limits,
-// and the choice tables that serve the validation, its message and the conversion at once.
+// and the check of a choice against its table (the tables: config/choices.hpp).
 #pragma once
 
 #include "config/params.hpp"
 #include "evolution/evolution_config.hpp"
-#include "mesh/time_interpolation_kind.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <initializer_list>
-#include <stdexcept>
 #include <string>
-#include <string_view>
-#include <utility>
 
 namespace gbssn1d {
 
@@ -43,37 +38,6 @@ inline constexpr double rmax_over_M_max = 1e6; ///< rows of timeseries.dat (at m
 /// Most levels accepted: with 30 the finest box is 1e-9 of the outer one.
 inline constexpr int levels_max = 30;
 
-/// The names a choice flag accepts and what each stands for: one table serves the validation,
-/// its message and the conversion, so they cannot drift apart.
-template <class E>
-using Choices = std::initializer_list<std::pair<std::string_view, E>>;
-
-inline const Choices<ShiftProfile> profile_choices{{"auto", ShiftProfile::automatic},
-                                                   {"rational", ShiftProfile::rational},
-                                                   {"rational3", ShiftProfile::rational3},
-                                                   {"gauss", ShiftProfile::gauss},
-                                                   {"gauss3", ShiftProfile::gauss3}};
-inline const Choices<Taper> taper_choices{{"quartic", Taper::quartic}, {"step", Taper::step}};
-inline const Choices<ShiftNormal> normal_choices{{"conformal", ShiftNormal::conformal},
-                                                 {"unit", ShiftNormal::unit},
-                                                 {"smooth", ShiftNormal::smooth}};
-inline const Choices<mesh::TimeInterpolation> time_interp_choices{
-    {"rk-stages", mesh::TimeInterpolation::rk_stages},
-    {"dense", mesh::TimeInterpolation::dense_output},
-    {"quadratic", mesh::TimeInterpolation::quadratic}};
-inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
-                                                {"biased", fd::Upwind::biased}};
-inline const Choices<AdvectionStencil> stencil_choices{
-    {"upwind-gd", AdvectionStencil::upwind_gd},
-    {"upwind-full", AdvectionStencil::upwind_full},
-    {"centred", AdvectionStencil::centred}};
-/// B's driver term also takes `matched` (gbssn/rhs.hpp).
-inline const Choices<AdvectionStencil> driver_stencil_choices{
-    {"matched", AdvectionStencil::matched},
-    {"upwind-gd", AdvectionStencil::upwind_gd},
-    {"upwind-full", AdvectionStencil::upwind_full},
-    {"centred", AdvectionStencil::centred}};
-
 /// The value `name` stands for; ParamError naming `flag` and the accepted names otherwise.
 template <class E>
 E choice(const std::string& flag, const std::string& name, const Choices<E>& choices) {
@@ -84,15 +48,6 @@ E choice(const std::string& flag, const std::string& name, const Choices<E>& cho
     list += (list.empty() ? "" : ", ") + std::string(n);
   }
   throw ParamError(flag, name, "must be one of " + list);
-}
-
-/// The name of `value` among `choices` (each value has one).
-template <class E>
-std::string_view choice_name(const Choices<E>& choices, E value) {
-  for (const auto& [n, v] : choices)
-    if (v == value)
-      return n;
-  throw std::logic_error("a choice without a name");
 }
 
 inline std::string num(double v) {
@@ -109,16 +64,6 @@ inline void require_positive(const std::string& flag, double v) {
   if (!(v > 0.0))
     throw ParamError(flag, num(v), "must be > 0");
 }
-
-using ShiftVariant = HorizonShiftParams::Variant;
-inline const Choices<ShiftVariant> variant_choices{
-    {"consistent", ShiftVariant::consistent},
-    {"no-shift-derivatives", ShiftVariant::no_shift_derivatives},
-    {"no-shift-second-derivatives", ShiftVariant::no_shift_second_derivatives},
-    {"delta-rhs-from-gd", ShiftVariant::delta_rhs_from_gd},
-    {"driver-full-shift", ShiftVariant::driver_full_shift},
-    {"midstep-update", ShiftVariant::midstep_update},
-    {"box-substage", ShiftVariant::box_substage}};
 
 /// The grid and refinement part of the evolution's configuration of validated parameters:
 /// what make_layout() (evolution/levels.hpp) and the stepper read.

@@ -1,6 +1,7 @@
 // All run parameters in one struct, with defaults, and their validation.
 #pragma once
 
+#include "config/choices.hpp"
 #include "evolution/evolution_config.hpp"
 
 #include <filesystem>
