@@ -27,8 +27,8 @@ Params trumpet(int n, double rmax, const std::string& grid_flag, bool horizon_sh
   Params p;
   p.N = n;
   p.rmax = rmax;
-  p.grid = grid_flag;
-  p.id = "1log-trumpet";
+  p.grid = GridChoice::parse(grid_flag);
+  p.id = InitialDataKind::onelog_trumpet;
   if (horizon_shift) {
     p.rahA = 0.5;
     p.rah0 = 0.89;
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
       Params p = trumpet(n, 100.0, "sinh", horizon_shift);
       p.dr_inner = 0.01;
       p.tmax = 0.0;
-      p.upwind = upwind;
+      p.upwind = UpwindChoice::parse(upwind);
       resolve_defaults(p);
       validate(p);
       Simulation sim(evolution_config(p));

@@ -36,6 +36,9 @@ std::string_view choice_name(const Choices<E>& choices, E value) {
 /// uniform grids (GridKind::uniform) and its boxes a RefinementSettings.
 enum class RadialGrid { uniform, sinh, boxes };
 
+/// --ah-every's word forms; a number n stands for every n steps.
+enum class SearchEvery { substage, step };
+
 inline const Choices<RadialGrid> grid_choices{
     {"uniform", RadialGrid::uniform}, {"sinh", RadialGrid::sinh}, {"boxes", RadialGrid::boxes}};
 inline const Choices<InitialDataKind> id_choices{
@@ -79,6 +82,9 @@ inline const Choices<ShiftVariant> variant_choices{
     {"driver-full-shift", ShiftVariant::driver_full_shift},
     {"midstep-update", ShiftVariant::midstep_update},
     {"box-substage", ShiftVariant::box_substage}};
+inline const Choices<SearchEvery> search_every_words{{"substage", SearchEvery::substage},
+                                                     {"step", SearchEvery::step}};
+
 /// A value of a choice flag: one of `table`'s values, or a text that names none of them as it
 /// was given (a flag is read whole before it is validated: validate() refuses it, naming the
 /// flag and the choices). Compared as its enum; spelled by its table.
@@ -125,5 +131,31 @@ using UpwindChoice = Choice<fd::Upwind, upwind_choices>;
 using StencilChoice = Choice<AdvectionStencil, stencil_choices>;
 using DriverStencilChoice = Choice<AdvectionStencil, driver_stencil_choices>;
 using VariantChoice = Choice<ShiftVariant, variant_choices>;
+
+/// --ah-every: a word form, a number of steps (in its one spelling: 05 and 5 are the same run),
+/// or a text that is neither, kept for validate()'s message. `step` and `1` search alike but
+/// are recorded as given.
+class AhEvery {
+public:
+  AhEvery(SearchEvery word) : word_(word) {}
+  /// A whole number (config/numbers.hpp's grammar), else a word, else the text as given
+  /// (config/params.cpp).
+  static AhEvery parse(std::string_view text);
+  /// The number of steps, if given as a number (any whole number; validate() wants >= 1).
+  std::optional<long> steps() const { return steps_; }
+  /// Whether it names a schedule: a word, or a number >= 1.
+  bool valid() const { return steps_ ? *steps_ >= 1 : word_.known(); }
+  /// The text config.toml records: the word, the number, or the text given.
+  std::string name() const { return steps_ ? std::to_string(*steps_) : word_.name(); }
+  friend bool operator==(const AhEvery& a, SearchEvery word) {
+    return !a.steps_ && a.word_ == word;
+  }
+  friend bool operator==(const AhEvery&, const AhEvery&) = default;
+
+private:
+  using Word = Choice<SearchEvery, search_every_words>;
+  Word word_;                 ///< when not a number
+  std::optional<long> steps_; ///< when a number
+};
 
 } // namespace gbssn1d

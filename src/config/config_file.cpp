@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <concepts>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -14,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -22,13 +24,28 @@ namespace gbssn1d {
 
 namespace {
 
+/// A choice flag's value (config/choices.hpp): read from its name, written as its name.
+template <class T>
+concept ChoiceValue = requires(const T& value, std::string_view text) {
+  { T::parse(text) } -> std::same_as<T>;
+  { value.name() } -> std::same_as<std::string>;
+};
+/// A choice flag whose unset value stands for a rule (resolve_defaults).
+template <class T>
+inline constexpr bool is_optional_choice = false;
+template <ChoiceValue C>
+inline constexpr bool is_optional_choice<std::optional<C>> = true;
+
 /// One run parameter: its flag (without "--"), where it lives in Params, group and help.
 /// The same table drives the CLI11 options and the config file, so they cannot drift apart.
 struct ParamSpec {
   const char* name;
   std::variant<int Params::*, double Params::*, std::optional<double> Params::*,
-               std::optional<int> Params::*, std::string Params::*,
-               std::optional<std::string> Params::*, bool Params::*>
+               std::optional<int> Params::*, std::string Params::*, bool Params::*,
+               GridChoice Params::*, TimeInterpChoice Params::*, InitialDataChoice Params::*,
+               LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
+               ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
+               StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*>
       member;
   const char* group;
   const char* help;
@@ -177,8 +194,10 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
         using T = std::decay_t<decltype(p.*member)>;
         if constexpr (std::is_same_v<T, std::string>)
           return toml_string(p.*member);
-        else if constexpr (std::is_same_v<T, std::optional<std::string>>)
-          return p.*member ? std::optional(toml_string(*(p.*member))) : std::nullopt;
+        else if constexpr (ChoiceValue<T>)
+          return toml_string((p.*member).name());
+        else if constexpr (is_optional_choice<T>)
+          return p.*member ? std::optional(toml_string((p.*member)->name())) : std::nullopt;
         else if constexpr (std::is_same_v<T, bool>)
           return p.*member ? "true" : "false";
         else if constexpr (std::is_same_v<
@@ -238,11 +257,21 @@ void add_options(CLI::App& app, Params& p) {
             opt = app.add_flag(flag, p.*member, spec.help);
           } else if constexpr (std::is_same_v<T, std::string>) {
             opt = app.add_option(flag, p.*member, spec.help)->capture_default_str();
-          } else if constexpr (std::is_same_v<T, std::optional<std::string>>) {
+          } else if constexpr (ChoiceValue<T>) {
             auto& target = p.*member;
             opt = app.add_option_function<std::string>(
-                         flag, [&target](const std::string& text) { target = text; }, spec.help)
-                      ->type_name("TEXT");
+                         flag, [&target](const std::string& text) { target = T::parse(text); },
+                         spec.help)
+                      ->type_name("TEXT")
+                      ->default_str(target.name());
+          } else if constexpr (is_optional_choice<T>) {
+            auto& target = p.*member;
+            opt =
+                app.add_option_function<std::string>(
+                       flag,
+                       [&target](const std::string& text) { target = T::value_type::parse(text); },
+                       spec.help)
+                    ->type_name("TEXT");
           } else {
             opt = number_option(app, flag, p.*member, spec.help);
           }

@@ -16,9 +16,9 @@ namespace gbssn1d {
 EvolutionConfig mesh_config(const Params& p) {
   EvolutionConfig c;
   c.grid = grid_spec(p);
-  if (p.grid == "boxes") {
+  if (p.grid == RadialGrid::boxes) {
     c.refinement.levels = static_cast<std::size_t>(p.levels.value());
-    c.stepping.time = choice("--time-interp", p.time_interp, time_interp_choices);
+    c.stepping.time = p.time_interp.value();
     c.stepping.subcycling = !p.no_subcycling;
     c.stepping.taper_cells = static_cast<std::size_t>(std::lround(p.box_taper.value() * p.N));
     c.stepping.taper_min_extent = p.box_taper_from * p.M;
@@ -30,7 +30,8 @@ EvolutionConfig mesh_config(const Params& p) {
 
 GridSpec grid_spec(const Params& p) {
   GridSpec spec;
-  spec.kind = p.grid == "sinh" ? GridKind::sinh : GridKind::uniform; // boxes: uniform levels
+  // boxes: uniform levels
+  spec.kind = p.grid == RadialGrid::sinh ? GridKind::sinh : GridKind::uniform;
   spec.N = static_cast<std::size_t>(p.N);
   spec.rmax = p.rmax;
   spec.dr_inner = p.dr_inner;
@@ -64,10 +65,8 @@ EvolutionConfig evolution_config(const Params& p) {
 InitialDataParams initial_data_params(const Params& p) {
   InitialDataParams id;
   id.M = p.M;
-  id.kind = p.id == "wormhole"          ? InitialDataKind::wormhole
-            : p.id == "maximal-trumpet" ? InitialDataKind::maximal_trumpet
-                                        : InitialDataKind::onelog_trumpet;
-  id.lapse0 = p.lapse0 == "one" ? InitialLapse::one : InitialLapse::precollapsed;
+  id.kind = p.id.value();
+  id.lapse0 = p.lapse0.value();
   return id;
 }
 
@@ -83,15 +82,15 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.ramp = p.rah_ramp;
   r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
   if (p.rah_taper) // unset only without the horizon shift: HorizonShiftParams' default then
-    r.horizon_shift.taper = choice("--rah-taper", *p.rah_taper, taper_choices);
-  r.horizon_shift.profile = choice("--rah-profile", p.rah_profile, profile_choices);
-  r.horizon_shift.normal = choice("--rah-normal", p.rah_normal, normal_choices);
+    r.horizon_shift.taper = p.rah_taper->value();
+  r.horizon_shift.profile = p.rah_profile.value();
+  r.horizon_shift.normal = p.rah_normal.value();
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;
   resolve_automatic_profile(r.horizon_shift, p.M);
-  r.advection.driver = choice("--driver-advection", p.driver_advection, driver_stencil_choices);
-  r.advection.delta = choice("--delta-advection", p.delta_advection, stencil_choices);
-  r.upwind = choice("--upwind", p.upwind, upwind_choices);
-  r.horizon_shift.variant = choice("--rah-variant", p.rah_variant, variant_choices);
+  r.advection.driver = p.driver_advection.value();
+  r.advection.delta = p.delta_advection.value();
+  r.upwind = p.upwind.value();
+  r.horizon_shift.variant = p.rah_variant.value();
   return r;
 }
 
@@ -104,11 +103,11 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
 }
 
 long ah_every_steps(const Params& p) {
-  if (p.ah_every == "substage")
+  if (p.ah_every == SearchEvery::substage)
     return 0;
-  if (p.ah_every == "step")
+  if (p.ah_every == SearchEvery::step)
     return 1;
-  return parse_decimal<long>(p.ah_every).value(); // validated
+  return p.ah_every.steps().value(); // validated
 }
 
 } // namespace gbssn1d

@@ -50,6 +50,14 @@ E choice(const std::string& flag, const std::string& name, const Choices<E>& cho
   throw ParamError(flag, name, "must be one of " + list);
 }
 
+/// Refuses (ParamError naming `flag` and the accepted names, as choice()) a choice that names
+/// none of its table's.
+template <class E, const Choices<E>& table>
+void require_choice(const std::string& flag, const Choice<E, table>& c) {
+  if (!c.known())
+    (void)choice(flag, c.name(), table);
+}
+
 inline std::string num(double v) {
   return fmt::format("{}", v);
 }

@@ -22,7 +22,7 @@ namespace {
 void box_warnings(const Params& p, std::vector<std::string>& w) {
   // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
   // the horizon shift see the finest spacing.
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.N > 0) {
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.N > 0) {
     const double finest_extent = std::ldexp(p.rmax, -(*p.levels - 1));
     const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
     const double horizon = std::max(standard_horizon_radius * p.M, p.rahA != 0.0 ? p.rah0 : 0.0);
@@ -35,8 +35,8 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   }
   // Quadratic time interpolation loses its order at the default step (Sec. 11: six boxes,
   // h = 2 M, orders 0.12, 1.03 at cfl 0.5 against 1.4 or more at 0.25)
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.time_interp == "quadratic"
-      && p.cfl > 0.25)
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
+      && p.time_interp == mesh::TimeInterpolation::quadratic && p.cfl > 0.25)
     w.push_back(fmt::format(
         "--time-interp quadratic with --cfl {}: its fine boundaries lose their order above cfl "
         "0.25 (orders 0.1-1 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
@@ -47,20 +47,22 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // takes over under refinement (docs/horizon-shift-study.md, Sec. 13: the published stretch
   // to 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the
   // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.time_interp == "quadratic"
-      && !p.no_subcycling && p.rahA != 0.0 && p.ah_every != "substage")
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
+      && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && p.rahA != 0.0
+      && p.ah_every != SearchEvery::substage)
     w.push_back(fmt::format(
         "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
         "jump in time, and the fine boxes' quadratic time interpolation across the jumps is "
         "first order in dt (the stretch to 0.89 M loses convergence from M/24-M/32: "
         "docs/horizon-shift-study.md, Sec. 13); use --ah-every substage (the default), "
         "--time-interp rk-stages, or --no-subcycling",
-        p.ah_every));
+        p.ah_every.name()));
   // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
   // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
   // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at
   // 128, 1e-4 at 200); the taper absorbs it (Sec. 6.6), so only untapered box ends are meant.
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && p.id == "wormhole" && p.N < 200) {
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.id == InitialDataKind::wormhole
+      && p.N < 200) {
     const double back = 1.0 / std::sqrt(2.0) + 1.0;
     for (int l = *p.levels - 1; l >= 1; --l) { // the box ends from the inside out
       const double end = std::ldexp(p.rmax, -l);
@@ -89,21 +91,21 @@ void idle_shift_flag_warnings(const Params& p, std::vector<std::string>& w) {
     if (p.rah0 != d.rah0)
       idle.push_back("--rah0 " + num(p.rah0));
     if (p.rah_profile != d.rah_profile)
-      idle.push_back("--rah-profile " + p.rah_profile);
+      idle.push_back("--rah-profile " + p.rah_profile.name());
     if (p.rah_width != d.rah_width)
       idle.push_back("--rah-width " + num(p.rah_width));
     if (p.rah_rcut)
       idle.push_back("--rah-rcut " + num(*p.rah_rcut));
     if (p.rah_taper)
-      idle.push_back("--rah-taper " + *p.rah_taper);
+      idle.push_back("--rah-taper " + p.rah_taper->name());
     if (p.rah_ramp != d.rah_ramp)
       idle.push_back("--rah-ramp " + num(p.rah_ramp));
     if (p.rah_normal != d.rah_normal)
-      idle.push_back("--rah-normal " + p.rah_normal);
+      idle.push_back("--rah-normal " + p.rah_normal.name());
     if (!p.rah_hAH_file.empty())
       idle.push_back("--rah-hAH-file " + p.rah_hAH_file);
     if (p.rah_variant != d.rah_variant)
-      idle.push_back("--rah-variant " + p.rah_variant);
+      idle.push_back("--rah-variant " + p.rah_variant.name());
     if (!idle.empty())
       w.push_back(fmt::format("{} {} nothing with --rahA 0: the horizon-adjusting shift is off "
                               "(give --rahA A, e.g. 0.5, to move the horizon)",
@@ -113,9 +115,9 @@ void idle_shift_flag_warnings(const Params& p, std::vector<std::string>& w) {
 
 /// The radial spacing at r = M: where the horizon and the puncture's throat are resolved.
 double spacing_near_horizon(const Params& p) {
-  if (p.grid == "boxes")
+  if (p.grid == RadialGrid::boxes)
     return std::ldexp(p.rmax, -(p.levels.value_or(1) - 1)) / p.N;
-  if (p.grid == "uniform")
+  if (p.grid == RadialGrid::uniform)
     return p.rmax / p.N;
   const Grid g(RadialMap::sinh(p.rmax, p.dr_inner, sinh_reference_N), static_cast<std::size_t>(p.N),
                p.fd_order);
@@ -128,7 +130,7 @@ double spacing_near_horizon(const Params& p) {
 /// (docs/horizon-shift-study.md, Sec. 7.4: H 7 times on the trumpet at M/8, 1.5 times on a
 /// shrink to 0.6 M at M/8 to M/16; H 1.5-8 times lower from M/12 otherwise).
 void upwind_warnings(const Params& p, std::vector<std::string>& w) {
-  if (p.upwind != "biased" || p.N <= 0)
+  if (p.upwind != fd::Upwind::biased || p.N <= 0)
     return;
   const double dr = spacing_near_horizon(p);
   if (dr > p.M / 12.0 * (1.0 + 1e-9))
@@ -154,7 +156,7 @@ constexpr double large_output_bytes = 200e6;
 /// columns of 17 significant digits) and timeseries.dat's rows (16 columns).
 void output_size_warning(const Params& p, std::vector<std::string>& w) {
   constexpr double bytes_per_value = 21.0; // measured: 20.4 on average
-  const double levels = p.grid == "boxes" && p.levels ? *p.levels : 1.0;
+  const double levels = p.grid == RadialGrid::boxes && p.levels ? *p.levels : 1.0;
   const double points = p.N * (1.0 + 0.5 * (levels - 1.0)); // a box's outer half per parent
   const double blocks = std::floor(p.tmax / p.dt_profiles) + 1.0, rows = p.tmax / p.dt_series;
   const double profiles = blocks * points * 19.0 * bytes_per_value;

@@ -20,7 +20,8 @@ std::string printable(const std::string& s) {
 }
 
 bool shrinks_wormhole(const Params& p) {
-  return p.id == "wormhole" && p.rahA > 0.0 && p.rah0 < standard_horizon_radius * p.M;
+  return p.id == InitialDataKind::wormhole && p.rahA > 0.0
+         && p.rah0 < standard_horizon_radius * p.M;
 }
 
 int levels_rule(double rmax, double M) {
@@ -28,15 +29,23 @@ int levels_rule(double rmax, double M) {
   return std::isfinite(levels) ? static_cast<int>(std::clamp(levels, 2.0, 30.0)) : 2;
 }
 
+AhEvery AhEvery::parse(std::string_view text) {
+  AhEvery every(SearchEvery::substage);
+  // a number of steps is kept as the number: one spelling (05 and 5 are the same run, as 0.25
+  // and 0.250 are)
+  if (const auto n = parse_decimal<long>(text))
+    every.steps_ = *n;
+  else
+    every.word_ = Word::parse(text);
+  return every;
+}
+
 double dt_max_of_damping(double eta) {
   return eta > 0.0 ? 1.0 / eta : std::numeric_limits<double>::infinity();
 }
 
 void resolve_defaults(Params& p) {
-  // a number of steps in its one spelling (05 and 5 are the same run, as 0.25 and 0.250 are)
-  if (const auto n = parse_decimal<long>(p.ah_every))
-    p.ah_every = std::to_string(*n);
-  if (p.grid == "boxes" && !p.levels)
+  if (p.grid == RadialGrid::boxes && !p.levels)
     p.levels = levels_rule(p.rmax, p.M);
   // M and rmax are validated afterwards: a bad M gives a non-finite eta
   if (!p.eta)
@@ -44,23 +53,24 @@ void resolve_defaults(Params& p) {
   // Sec. 6.6: relaxing the outer half of every box reaching beyond 16 M towards its parent
   // absorbs the wormhole's gauge pulse where the parent cannot carry it
   if (!p.box_taper)
-    p.box_taper = p.grid == "boxes" ? 0.5 : 0.0;
+    p.box_taper = p.grid == RadialGrid::boxes ? 0.5 : 0.0;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
   if (p.rahA != 0.0) {
     if (!p.rah_rcut)
       p.rah_rcut = 0.5 * p.rmax;
     if (!p.rah_taper)
-      p.rah_taper = std::string(choice_name(taper_choices, HorizonShiftParams{}.taper));
+      p.rah_taper = HorizonShiftParams{}.taper;
     // `auto` is written to config.toml as the profile and width it stands for, so that a
     // checkpoint or a sweep member made when auto meant another width is told apart (not
     // resumed with the new one); M is validated afterwards
-    if (p.rah_profile == "auto" && std::isfinite(p.M) && p.M > 0.0) {
+    if (p.rah_profile == ShiftProfile::automatic && std::isfinite(p.M) && p.M > 0.0) {
       HorizonShiftParams hs;
       hs.profile = ShiftProfile::automatic;
       hs.h = p.rah0;
       resolve_automatic_profile(hs, p.M);
-      p.rah_profile = hs.profile == ShiftProfile::gauss ? "gauss" : "rational";
+      p.rah_profile =
+          hs.profile == ShiftProfile::gauss ? ShiftProfile::gauss : ShiftProfile::rational;
       p.rah_width = hs.width;
     }
   }

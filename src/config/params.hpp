@@ -22,17 +22,18 @@ inline const EvolutionConfig& evolution_defaults() {
 /// Flags as the user gives them; numbers default to the typed configuration's values, except
 /// where a flag's own convention differs (an unset eta or norm-rmax stands for a rule resolved
 /// against M and rmax, an unset ah-tmax for no limit; the areal norm windows are in units of
-/// M; choices are strings). A flag whose default is a rule is an optional, never a sentinel
-/// value: any number the user gives is validated as that number.
+/// M; a choice is its enum: config/choices.hpp). A flag whose default is a rule is an optional,
+/// never a sentinel value: any number the user gives is validated as that number.
 struct Params {
   // grid
   int N = static_cast<int>(evolution_defaults().grid.N);
   double rmax = evolution_defaults().grid.rmax;
-  std::string grid = "sinh"; ///< uniform | sinh | boxes
+  GridChoice grid = RadialGrid::sinh; ///< uniform | sinh | boxes
   /// --grid boxes: refinement levels; unset: levels_rule (resolve_defaults)
   std::optional<int> levels;
-  std::string time_interp = "rk-stages"; ///< boxes: rk-stages | dense | quadratic
-  bool no_subcycling = false;            ///< boxes: every level steps with the finest dt
+  /// boxes: rk-stages | dense | quadratic
+  TimeInterpChoice time_interp = mesh::TimeInterpolation::rk_stages;
+  bool no_subcycling = false; ///< boxes: every level steps with the finest dt
   /// boxes: the fraction of a box's cells (outermost) blended towards its parent at every
   /// synchronisation, 0 ... 0.5 (mesh::StepperOptions::taper_cells = round(box_taper N));
   /// unset: 0.5 on boxes, 0 on a single grid (resolve_defaults; docs/horizon-shift-study.md
@@ -42,9 +43,9 @@ struct Params {
   /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
   double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data
-  std::string id = "wormhole"; ///< wormhole | maximal-trumpet | 1log-trumpet
+  InitialDataChoice id = InitialDataKind::wormhole; ///< wormhole | maximal-trumpet | 1log-trumpet
   double M = evolution_defaults().initial_data.M;
-  std::string lapse0 = "precollapsed"; ///< one | precollapsed (wormhole)
+  LapseChoice lapse0 = InitialLapse::precollapsed; ///< one | precollapsed (wormhole)
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
   std::optional<double> eta;
@@ -56,7 +57,7 @@ struct Params {
   double cfl = evolution_defaults().stepping.cfl;
   double ko_sigma = evolution_defaults().rhs.ko_sigma;
   int fd_order = evolution_defaults().grid.fd_order; ///< 2 | 4 | 6 | 8
-  std::string upwind = "lopsided";                   ///< lopsided | biased (fd::Upwind)
+  UpwindChoice upwind = fd::Upwind::lopsided;        ///< lopsided | biased (fd::Upwind)
   /// chi is raised to at least this after every RK4 step (0: off)
   double chi_floor = evolution_defaults().chi_floor;
   // time
@@ -85,22 +86,24 @@ struct Params {
   std::optional<double> rah_rcut;
   /// quartic | step (HorizonShiftParams::Taper); unset: quartic when rahA != 0 (resolve_defaults),
   /// so that config.toml records it and a run made with another taper is told apart
-  std::optional<std::string> rah_taper;
-  std::string rah_profile = "auto";     ///< auto | rational | rational3 | gauss | gauss3
-  std::string rah_normal = "conformal"; ///< conformal | unit | smooth
+  std::optional<TaperChoice> rah_taper;
+  /// auto | rational | rational3 | gauss | gauss3
+  ProfileChoice rah_profile = ShiftProfile::automatic;
+  NormalChoice rah_normal = ShiftNormal::conformal; ///< conformal | unit | smooth
   /// chi_s of the smooth normal sqrt((chi + chi_s)/a)
   double rah_chi_smooth = evolution_defaults().rhs.horizon_shift.chi_smooth;
-  std::string rah_hAH_file;                 ///< open loop: h_AH(t) from columns t, r_ah of a file
-  std::string driver_advection = "matched"; ///< beta_GD d_r Delta^r in B's driver
-  std::string delta_advection = "upwind-full"; ///< beta d_r Delta^r in (E6)
-  std::string ah_every = "substage";           ///< substage | step | n (every n steps)
+  std::string rah_hAH_file; ///< open loop: h_AH(t) from columns t, r_ah of a file
+  /// beta_GD d_r Delta^r in B's driver
+  DriverStencilChoice driver_advection = AdvectionStencil::matched;
+  StencilChoice delta_advection = AdvectionStencil::upwind_full; ///< beta d_r Delta^r in (E6)
+  AhEvery ah_every = SearchEvery::substage; ///< substage | step | n (every n steps)
   double ah_tmin =
       evolution_defaults().horizon_search.t_min; ///< searches are made for ah-tmin <= t ...
   std::optional<double> ah_tmax;                 ///< ... <= ah-tmax; unset: until the end
   double ah_tol =
       evolution_defaults().horizon_search.finder.tolerance; ///< root-finder tolerance in r (M)
   /// consistent | no-shift-derivatives | driver-full-shift | midstep-update (study only)
-  std::string rah_variant = "consistent";
+  VariantChoice rah_variant = ShiftVariant::consistent;
   // output
   std::string out;
   bool force = false;

@@ -25,12 +25,12 @@ namespace {
 
 /// The refinement flags: refused on a single grid (they would mean nothing), checked on boxes.
 void validate_refinement_flags(const Params& p) {
-  if (p.grid != "boxes") {
+  if (p.grid != RadialGrid::boxes) {
     // the refinement flags mean nothing on a single grid: refused rather than ignored
     if (p.levels)
       throw ParamError("--levels", std::to_string(*p.levels), "needs --grid boxes");
     if (p.time_interp != Params{}.time_interp)
-      throw ParamError("--time-interp", p.time_interp, "needs --grid boxes");
+      throw ParamError("--time-interp", p.time_interp.name(), "needs --grid boxes");
     if (p.no_subcycling)
       throw ParamError("--no-subcycling", "needs --grid boxes");
     if (p.box_taper.value() != 0.0)
@@ -80,23 +80,23 @@ void validate_grid_flags(const Params& p) {
         "--rmax", num(p.rmax),
         fmt::format("is beyond {:.0e} M, where no outer boundary is needed", rmax_over_M_max));
   }
-  if (p.grid != "uniform" && p.grid != "sinh" && p.grid != "boxes")
-    throw ParamError("--grid", p.grid, "must be 'uniform', 'sinh' or 'boxes'");
-  (void)choice("--time-interp", p.time_interp, time_interp_choices);
+  if (!p.grid.known())
+    throw ParamError("--grid", p.grid.name(), "must be 'uniform', 'sinh' or 'boxes'");
+  require_choice("--time-interp", p.time_interp);
   validate_refinement_flags(p);
   if (!fd::valid_order(p.fd_order))
     throw ParamError("--fd-order", std::to_string(p.fd_order), "must be 2, 4, 6 or 8");
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && !mesh::boxes_order(p.fd_order))
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && !mesh::boxes_order(p.fd_order))
     throw ParamError("--fd-order", std::to_string(p.fd_order),
                      "must be 2, 4 or 6 with --grid boxes: the boxes' prolongation and "
                      "restriction are 6th order");
-  if (p.grid == "boxes" && p.levels && *p.levels > 1 && mesh::boxes_order(p.fd_order)
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && mesh::boxes_order(p.fd_order)
       && p.N < static_cast<int>(mesh::min_cells(p.fd_order)))
     throw ParamError("--N", std::to_string(p.N),
                      fmt::format("must be at least {} with --grid boxes at --fd-order {} (a "
                                  "fine box's buffer and the transfer stencils)",
                                  mesh::min_cells(p.fd_order), p.fd_order));
-  if (p.grid == "sinh") {
+  if (p.grid == RadialGrid::sinh) {
     require_positive("--dr-inner", p.dr_inner);
     const double needed = p.dr_inner * sinh_reference_N;
     if (!(p.rmax > needed))
@@ -110,10 +110,9 @@ void validate_grid_flags(const Params& p) {
                      fmt::format("too small for the grid: the outer boundary must lie outside "
                                  "the black hole, --rmax >= 4 M = {}",
                                  4.0 * p.M));
-  if (p.id != "wormhole" && p.id != "maximal-trumpet" && p.id != "1log-trumpet")
-    throw ParamError("--id", p.id, "must be one of wormhole, maximal-trumpet, 1log-trumpet");
-  if (p.lapse0 != "one" && p.lapse0 != "precollapsed")
-    throw ParamError("--lapse0", p.lapse0, "must be 'one' or 'precollapsed'");
+  require_choice("--id", p.id);
+  if (!p.lapse0.known())
+    throw ParamError("--lapse0", p.lapse0.name(), "must be 'one' or 'precollapsed'");
 }
 
 /// The gauge, dissipation, floor, times, output cadences and norm windows.
@@ -180,30 +179,28 @@ void validate_horizon_shift(const Params& p) {
                                    "near the horizon it moves",
                                    num(4.0 * std::max(p.rah0, p.M))));
   }
-  if (p.ah_every != "substage" && p.ah_every != "step") {
-    const auto n = parse_decimal<long>(p.ah_every);
-    if (!n || *n < 1)
-      throw ParamError("--ah-every", printable(p.ah_every),
-                       "must be 'substage', 'step' or a whole number of steps >= 1");
-  }
-  (void)choice("--rah-profile", p.rah_profile, profile_choices);
-  (void)choice("--rah-normal", p.rah_normal, normal_choices);
+  if (!p.ah_every.valid())
+    throw ParamError("--ah-every", printable(p.ah_every.name()),
+                     "must be 'substage', 'step' or a whole number of steps >= 1");
+  require_choice("--rah-profile", p.rah_profile);
+  require_choice("--rah-normal", p.rah_normal);
   if (p.rah_taper)
-    (void)choice("--rah-taper", *p.rah_taper, taper_choices);
+    require_choice("--rah-taper", *p.rah_taper);
   require_positive("--rah-chi-smooth", p.rah_chi_smooth);
   require_finite("--rah-ramp", p.rah_ramp);
   if (p.rah_ramp < 0.0)
     throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
-  (void)choice("--driver-advection", p.driver_advection, driver_stencil_choices);
-  (void)choice("--delta-advection", p.delta_advection, stencil_choices);
-  (void)choice("--upwind", p.upwind, upwind_choices);
-  if (p.upwind == "biased" && p.rahA != 0.0 && p.rah_variant != "consistent"
-      && p.rah_variant != "midstep-update" && p.rah_variant != "box-substage")
-    throw ParamError("--upwind", p.upwind,
+  require_choice("--driver-advection", p.driver_advection);
+  require_choice("--delta-advection", p.delta_advection);
+  require_choice("--upwind", p.upwind);
+  if (p.upwind == fd::Upwind::biased && p.rahA != 0.0 && p.rah_variant != ShiftVariant::consistent
+      && p.rah_variant != ShiftVariant::midstep_update
+      && p.rah_variant != ShiftVariant::box_substage)
+    throw ParamError("--upwind", p.upwind.name(),
                      fmt::format("is offered with --rah-variant consistent, midstep-update and "
                                  "box-substage; --rah-variant {} is a study variant, built with "
                                  "the lopsided stencil only",
-                                 p.rah_variant));
+                                 p.rah_variant.name()));
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
@@ -214,11 +211,13 @@ void validate_horizon_shift(const Params& p) {
                        "must be >= --ah-tmin (leave it out for no limit)");
   }
   require_positive("--ah-tol", p.ah_tol);
-  (void)choice("--rah-variant", p.rah_variant, variant_choices);
-  if (p.rah_variant == "box-substage" && (p.grid != "boxes" || p.ah_every != "substage"))
-    throw ParamError("--rah-variant", p.rah_variant, "needs --grid boxes and --ah-every substage");
-  if (p.rah_variant == "midstep-update" && p.ah_every == "substage")
-    throw ParamError("--rah-variant", p.rah_variant,
+  require_choice("--rah-variant", p.rah_variant);
+  if (p.rah_variant == ShiftVariant::box_substage
+      && (p.grid != RadialGrid::boxes || p.ah_every != SearchEvery::substage))
+    throw ParamError("--rah-variant", p.rah_variant.name(),
+                     "needs --grid boxes and --ah-every substage");
+  if (p.rah_variant == ShiftVariant::midstep_update && p.ah_every == SearchEvery::substage)
+    throw ParamError("--rah-variant", p.rah_variant.name(),
                      "needs searches every n steps (--ah-every step or a number)");
 }
 
@@ -230,12 +229,13 @@ void validate_grid_and_steps(const Params& p) {
   // The grid itself: a map whose cells are not finite, increasing and resolvable in double
   // precision is refused here, before anything is written, naming the flag that shapes it (the
   // sinh grid's innermost width, the uniform grid's N).
-  const std::string grid_flag = p.grid == "sinh"    ? "--dr-inner"
-                                : p.grid == "boxes" ? "--levels"
-                                                    : "--N";
-  const std::string grid_value = p.grid == "sinh"    ? num(p.dr_inner)
-                                 : p.grid == "boxes" ? std::to_string(p.levels.value_or(1))
-                                                     : std::to_string(p.N);
+  const std::string grid_flag = p.grid == RadialGrid::sinh    ? "--dr-inner"
+                                : p.grid == RadialGrid::boxes ? "--levels"
+                                                              : "--N";
+  const std::string grid_value = p.grid == RadialGrid::sinh ? num(p.dr_inner)
+                                 : p.grid == RadialGrid::boxes
+                                     ? std::to_string(p.levels.value_or(1))
+                                     : std::to_string(p.N);
   const mesh::MeshLayout layout = [&] {
     try {
       return make_layout(mesh_config(p));
@@ -295,8 +295,8 @@ void validate_grid_and_steps(const Params& p) {
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));
-  if (p.grid == "boxes" && p.rah_variant == "midstep-update")
-    throw ParamError("--rah-variant", p.rah_variant,
+  if (p.grid == RadialGrid::boxes && p.rah_variant == ShiftVariant::midstep_update)
+    throw ParamError("--rah-variant", p.rah_variant.name(),
                      "is a single-grid study variant (its searches count one grid's RHS calls)");
 }
 

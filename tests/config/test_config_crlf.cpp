@@ -38,8 +38,8 @@ TEST_CASE("a config file with CRLF line ends reads as the same file with LF ones
   Params p;
   p.N = 400;
   p.rmax = 20.5;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.rahA = 0.5;
   p.tmax = 12.25;
   p.out = "a folder#1";

@@ -14,18 +14,18 @@ using gbssn1d::testing::validated;
 // dropped or wired to the wrong field fails.
 TEST_CASE("evolution_config: each flag reaches its field, areal windows scale with M") {
   Params p;
-  p.grid = "uniform";
+  p.grid = RadialGrid::uniform;
   p.N = 123;
   p.rmax = 61.0;
-  p.id = "maximal-trumpet";
+  p.id = InitialDataKind::maximal_trumpet;
   p.M = 2.0;
-  p.lapse0 = "one";
+  p.lapse0 = InitialLapse::one;
   p.eta = 0.7;
   p.advective_shift = true;
   p.non_advective_lapse = true;
   p.cfl = 0.3;
   p.ko_sigma = 0.05;
-  p.upwind = "biased";
+  p.upwind = fd::Upwind::biased;
   p.chi_floor = 2e-6;
   p.tmax = 7.0;
   p.dt_series = 0.5;
@@ -40,10 +40,10 @@ TEST_CASE("evolution_config: each flag reaches its field, areal windows scale wi
   p.rah0 = 1.3;
   p.rah_width = 2.5;
   p.rah_ramp = 4.0;
-  p.rah_profile = "rational3";
-  p.rah_normal = "smooth";
+  p.rah_profile = ShiftProfile::rational3;
+  p.rah_normal = ShiftNormal::smooth;
   p.rah_chi_smooth = 0.02;
-  p.ah_every = std::to_string(3); // (a literal this short trips GCC 12's -Wrestrict)
+  p.ah_every = AhEvery::parse("3");
   p.ah_tmin = 0.5;
   p.ah_tmax = 6.0;
   p.ah_tol = 1e-11;
@@ -95,7 +95,7 @@ TEST_CASE("evolution_config: the defaults are the typed configuration's, eta = 2
   CHECK(c.stepping.cfl == d.stepping.cfl);
   CHECK(c.stepping.cfl == 0.5); // measured (docs/horizon-shift-study.md Sec. 11)
   Params b;
-  b.grid = "boxes";
+  b.grid = RadialGrid::boxes;
   b.N = 64;
   const EvolutionConfig cb = evolution_config(validated(b));
   CHECK(cb.stepping.cfl == 0.5); // boxes too (Sec. 11: their errors are those of cfl 0.25)
@@ -144,27 +144,27 @@ TEST_CASE("--upwind biased warns where it measured worse: a throat coarser than 
     return n;
   };
   Params p;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.rmax = 128.0;
   p.N = 1024; // M/8
-  p.upwind = "biased";
+  p.upwind = fd::Upwind::biased;
   CHECK(warned(p, "spacing of 0.125 M at r = M") == 1);
   p.N = 1536; // M/12: where biased is better
   CHECK(warned(p, "--upwind biased") == 0);
-  p.upwind = "lopsided";
+  p.upwind = fd::Upwind::lopsided;
   p.N = 1024;
   CHECK(warned(p, "--upwind") == 0);
   Params b; // boxes: the finest box's spacing, 1024/2^8/32 = M/8
-  b.grid = "boxes";
+  b.grid = RadialGrid::boxes;
   b.rmax = 1024.0;
   b.N = 32;
-  b.upwind = "biased";
+  b.upwind = fd::Upwind::biased;
   CHECK(warned(b, "spacing of 0.125 M") == 1);
   b.N = 64;
   CHECK(warned(b, "--upwind biased") == 0);
   Params s; // the default sinh grid: finer than M/12 at r = M
-  s.upwind = "biased";
+  s.upwind = fd::Upwind::biased;
   CHECK(warned(s, "--upwind biased") == 0);
   s.rahA = 0.5;
   s.rah0 = 0.6;

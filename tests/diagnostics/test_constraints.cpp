@@ -51,8 +51,8 @@ TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("horizon_dat", true);
   Params p;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.N = 400;
   p.rmax = 20.0;
   p.tmax = 1.0;

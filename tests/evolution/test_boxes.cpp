@@ -27,11 +27,11 @@ namespace {
 
 Params boxes(int levels, double rmax, int n) {
   Params p;
-  p.grid = "boxes";
+  p.grid = RadialGrid::boxes;
   p.levels = levels;
   p.rmax = rmax;
   p.N = n;
-  p.id = "1log-trumpet";
+  p.id = InitialDataKind::onelog_trumpet;
   return p;
 }
 
@@ -131,8 +131,8 @@ TEST_CASE("a box run resumed from a checkpoint is bit-identical on every level")
                        Case{"quadratic", "step"}, Case{"dense", "2"}}) {
     INFO(c.time_interp << ", --ah-every " << c.ah_every);
     Params p = boxes(6, 64.0, 20);
-    p.time_interp = c.time_interp;
-    p.ah_every = c.ah_every;
+    p.time_interp = TimeInterpChoice::parse(c.time_interp);
+    p.ah_every = AhEvery::parse(c.ah_every);
     p.rahA = 0.5;
     p.rah0 = 1.0;
     p.tmax = 6.0;
@@ -204,12 +204,13 @@ TEST_CASE("a checkpoint with the 3 ghosts of earlier versions resumes as if neve
     INFO(grid);
     Params p = boxes(std::string(grid) == "boxes" ? 5 : 1, 64.0, 64);
     if (std::string(grid) == "uniform") {
-      p.grid = "uniform";
+      p.grid = RadialGrid::uniform;
       p.levels.reset();
     } else {
-      p.time_interp = "quadratic"; // with stored time levels
+      p.time_interp = mesh::TimeInterpolation::quadratic; // with stored time levels
     }
-    p.id = "wormhole"; // the precollapsed wormhole: the puncture's ghosts change fast
+    p.id =
+        InitialDataKind::wormhole; // the precollapsed wormhole: the puncture's ghosts change fast
     p.rahA = 0.5;
     p.rah0 = 1.0;
     p.tmax = 4.0;
@@ -268,8 +269,8 @@ TEST_CASE("the horizon of boxes is found on the finest box, as on a single fine 
   CHECK(h->level == 6);
   CHECK(sim.horizon_level() == 6);
   Params single;
-  single.grid = "uniform";
-  single.id = "1log-trumpet";
+  single.grid = RadialGrid::uniform;
+  single.id = InitialDataKind::onelog_trumpet;
   single.rmax = 2.0 * 128.0 / 64.0 * 8; // the same spacing M/16 on a uniform grid to 32 M
   single.N = 512;
   Simulation fine = simulation(single);
@@ -321,11 +322,11 @@ TEST_CASE("a horizon stretched to 2 M on six boxes: RK4 stage values converge at
       p.rahA = 0.5;
       p.rah0 = 2.0;
       // the profile of the study doc's Sec. 6.3 (the default before w = 3 max(h, M))
-      p.rah_profile = "rational";
+      p.rah_profile = ShiftProfile::rational;
       p.rah_width = 3.0;
       p.tmax = 40.0;
       p.dt_series = 0.5;
-      p.time_interp = time_interp;
+      p.time_interp = TimeInterpChoice::parse(time_interp);
       p.no_subcycling = !subcycling;
       p.cfl = cfl;
       e.push_back(rms_in_time(series_of(p), &SeriesRow::H_L2_R, 10.0));
@@ -362,7 +363,7 @@ TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the unt
   // 0.67 ... 2.7 M. RMS of H_L2_R over t in [10, 100] M. Measured when written (study doc
   // Sec. 7.3): untapered 1.52e-5, 5.34e-6, 1.36e-6 (orders 3.64, 3.38); quartic the same to
   // 3 digits; step 7.71e-5, 3.34e-5, 1.82e-5 (orders 2.91, 1.50).
-  auto errors = [](std::optional<std::string> taper, double r_cut) {
+  auto errors = [](std::optional<Taper> taper, double r_cut) {
     std::vector<double> e;
     for (int n : {48, 64, 96}) {
       Params p = boxes(6, 128.0, n);
@@ -377,8 +378,8 @@ TEST_CASE("beta_H's outer taper on coarse boxes: the quartic taper keeps the unt
     return e;
   };
   const auto none = errors(std::nullopt, 1e9);
-  const auto quartic = errors("quartic", 64.0);
-  const auto step = errors("step", 64.0);
+  const auto quartic = errors(Taper::quartic, 64.0);
+  const auto step = errors(Taper::step, 64.0);
   const double step_order = std::log(step[1] / step[2]) / std::log(96.0 / 64.0);
   INFO("untapered " << none[0] << " " << none[1] << " " << none[2] << "; quartic " << quartic[0]
                     << " " << quartic[1] << " " << quartic[2] << "; step " << step[0] << " "
@@ -393,7 +394,7 @@ TEST_CASE("quadratic time interpolation above cfl 0.25 is warned about, once") {
   auto warned = [](const Params& p) { return warnings_holding(p, "--time-interp quadratic"); };
   Params p = boxes(6, 128.0, 48);
   CHECK(warned(p) == 0); // rk-stages at the default cfl 0.5
-  p.time_interp = "quadratic";
+  p.time_interp = mesh::TimeInterpolation::quadratic;
   CHECK(warned(p) == 1);
   p.cfl = 0.25;
   CHECK(warned(p) == 0);
@@ -405,7 +406,7 @@ TEST_CASE("wormhole data on untapered boxes with N below 200 are warned about on
     return warnings_holding(p, "comes back from where the boxes end");
   };
   Params p = boxes(8, 1000.0, 96);
-  p.id = "wormhole";
+  p.id = InitialDataKind::wormhole;
   CHECK(burst_warnings(p) == 0); // the default taper absorbs the pulse (Sec. 6.6)
   p.box_taper_from = 100.0;      // the box ending at 62.5 M is not tapered
   p.tmax = 300.0;
@@ -420,7 +421,7 @@ TEST_CASE("wormhole data on untapered boxes with N below 200 are warned about on
   p.N = 200;
   CHECK(burst_warnings(p) == 0);
   p.N = 96;
-  p.id = "1log-trumpet";
+  p.id = InitialDataKind::onelog_trumpet;
   CHECK(burst_warnings(p) == 0);
 }
 
@@ -432,7 +433,7 @@ TEST_CASE("the tapered buffer absorbs the wormhole's gauge pulse where it return
   // parent) it stays near its earlier size (1.2e-4, 2.5e-4), and before the pulse returns the
   // two runs agree to 10%.
   Params p = boxes(8, 256.0, 32);
-  p.id = "wormhole";
+  p.id = InitialDataKind::wormhole;
   p.tmax = 100.0;
   p.dt_series = 0.5;
   auto max_error = [](const std::vector<SeriesRow>& rows, double t0, double t1) {
@@ -469,16 +470,16 @@ TEST_CASE("a held h_AH with quadratic time interpolation loses convergence under
     std::vector<double> e;
     for (int n : {48, 64}) {
       Params p = boxes(7, 128.0, n);
-      p.id = "maximal-trumpet";
+      p.id = InitialDataKind::maximal_trumpet;
       p.rahA = 0.5;
       p.rah0 = 0.89;
-      p.rah_profile = "rational";
+      p.rah_profile = ShiftProfile::rational;
       p.rah_width = 1.0;
-      p.rah_normal = "unit";
-      p.driver_advection = "upwind-gd";
+      p.rah_normal = ShiftNormal::unit;
+      p.driver_advection = AdvectionStencil::upwind_gd;
       p.cfl = 0.25;
-      p.ah_every = ah_every;
-      p.time_interp = interp;
+      p.ah_every = AhEvery::parse(ah_every);
+      p.time_interp = TimeInterpChoice::parse(interp);
       p.tmax = 20.0;
       p.dt_series = 0.25;
       e.push_back(rms_in_time(series_of(p), &SeriesRow::H_L2_R, 0.25));
@@ -497,21 +498,21 @@ TEST_CASE("a held h_AH with quadratic time interpolation loses convergence under
   auto warned = [](const Params& p) { return warnings_holding(p, "h_AH held between searches"); };
   Params p = boxes(7, 128.0, 32);
   p.rahA = 0.5;
-  p.ah_every = "step";
-  p.time_interp = "quadratic";
+  p.ah_every = SearchEvery::step;
+  p.time_interp = mesh::TimeInterpolation::quadratic;
   p.cfl = 0.25;
   CHECK(warned(p) == 1);
-  p.ah_every = "4";
+  p.ah_every = AhEvery::parse("4");
   CHECK(warned(p) == 1);
   p.no_subcycling = true;
   CHECK(warned(p) == 0);
   p.no_subcycling = false;
-  p.ah_every = "substage";
+  p.ah_every = SearchEvery::substage;
   CHECK(warned(p) == 0);
-  p.ah_every = "step";
-  p.time_interp = "rk-stages";
+  p.ah_every = SearchEvery::step;
+  p.time_interp = mesh::TimeInterpolation::rk_stages;
   CHECK(warned(p) == 0);
-  p.time_interp = "quadratic";
+  p.time_interp = mesh::TimeInterpolation::quadratic;
   p.rahA = 0.0;
   CHECK(warned(p) == 0);
 }

@@ -21,12 +21,12 @@ using gbssn1d::testing::simulation;
 TEST_CASE("resume refuses a checkpoint whose quadratic time level is not before its time") {
   namespace fs = std::filesystem;
   Params p;
-  p.grid = "boxes";
+  p.grid = RadialGrid::boxes;
   p.levels = 3;
   p.rmax = 16.0;
   p.N = 16;
-  p.id = "1log-trumpet";
-  p.time_interp = "quadratic";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.time_interp = mesh::TimeInterpolation::quadratic;
   p.cfl = 0.25;
   p.tmax = 1.0;
   p.dt_series = 0.5;

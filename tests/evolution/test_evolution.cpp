@@ -52,8 +52,8 @@ TEST_CASE("1+log trumpet evolved to t = 10 M stays stationary at 4th order") {
   std::vector<double> h, d_alpha, d_chi, d_K, H_ext;
   for (int n : {600, 1200, 2400}) {
     Params p;
-    p.id = "1log-trumpet";
-    p.grid = "uniform";
+    p.id = InitialDataKind::onelog_trumpet;
+    p.grid = RadialGrid::uniform;
     p.N = n;
     p.rmax = 30.0; // the outer boundary cannot reach r <= 10 before t = 10
     p.tmax = 10.0;
@@ -89,8 +89,8 @@ TEST_CASE("constraints of all three initial data converge at 4th order away from
     std::vector<double> h, H, M_r;
     for (int n : {200, 400, 800}) {
       Params p;
-      p.id = id;
-      p.grid = "uniform";
+      p.id = InitialDataChoice::parse(id);
+      p.grid = RadialGrid::uniform;
       p.N = n;
       p.rmax = 20.0;
       p.tmax = 0.0;
@@ -115,9 +115,9 @@ TEST_CASE("constraints of all three initial data converge at 4th order away from
 
 TEST_CASE("a precollapsed wormhole settles onto the stationary 1+log trumpet") {
   Params p;
-  p.id = "wormhole";
-  p.lapse0 = "precollapsed";
-  p.grid = "sinh";
+  p.id = InitialDataKind::wormhole;
+  p.lapse0 = InitialLapse::precollapsed;
+  p.grid = RadialGrid::sinh;
   p.N = 300;
   p.rmax = 200.0;
   p.dr_inner = 0.025;
@@ -174,8 +174,8 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("nonfinite", true);
   Params p;
-  p.id = "wormhole";
-  p.grid = "uniform";
+  p.id = InitialDataKind::wormhole;
+  p.grid = RadialGrid::uniform;
   p.N = 100;
   p.rmax = 20.0;
   p.tmax = 5.0;
@@ -213,7 +213,7 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
 
 TEST_CASE("the chi floor raises chi below it and leaves the rest alone, 0 switches it off") {
   Params p;
-  p.grid = "uniform";
+  p.grid = RadialGrid::uniform;
   p.N = 16;
   p.rmax = 8.0;
   const Grid g = make_grid(grid_spec(validated(p)));
@@ -240,7 +240,7 @@ TEST_CASE("the chi floor raises chi below it and leaves the rest alone, 0 switch
 TEST_CASE("wormhole with the horizon shift: chi crosses zero at the innermost cell without the "
           "floor, stays above it with the floor") {
   Params p;
-  p.id = "wormhole";
+  p.id = InitialDataKind::wormhole;
   p.rahA = 0.5;
   p.rah0 = 1.2;
   p.tmax = 9.0;
@@ -286,8 +286,8 @@ TEST_CASE("output between the steps of a single grid converges at 4th order in d
   // step, a wrong theta or a linear interpolant would converge at 1 or 2.
   auto sample = [](double cfl) {
     Params p;
-    p.id = "wormhole";
-    p.grid = "uniform";
+    p.id = InitialDataKind::wormhole;
+    p.grid = RadialGrid::uniform;
     p.N = 200;
     p.rmax = 25.0;
     p.cfl = cfl;
@@ -332,8 +332,8 @@ TEST_CASE("output between the steps of a single grid converges at 4th order in d
 TEST_CASE("the output cadence changes neither the time step nor the evolution") {
   namespace fs = std::filesystem;
   Params p;
-  p.id = "wormhole";
-  p.grid = "uniform";
+  p.id = InitialDataKind::wormhole;
+  p.grid = RadialGrid::uniform;
   p.N = 200;
   p.rmax = 25.0;
   p.rahA = 0.5;
@@ -393,7 +393,7 @@ TEST_CASE("--advective-shift adds beta beta' to d_t beta and beta (B' - Delta') 
     std::optional<Grid> grid;
     for (bool advective : {false, true}) {
       Params p;
-      p.grid = "uniform";
+      p.grid = RadialGrid::uniform;
       p.N = n;
       p.rmax = 10.0;
       p.tmax = 0.0;

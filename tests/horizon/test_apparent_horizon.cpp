@@ -20,8 +20,8 @@ namespace {
 
 Params grid_params(const char* id, int n) {
   Params p;
-  p.id = id;
-  p.grid = "uniform";
+  p.id = InitialDataChoice::parse(id);
+  p.grid = RadialGrid::uniform;
   p.N = n;
   p.rmax = 10.0;
   p.tmax = 0.0;

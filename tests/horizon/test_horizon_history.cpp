@@ -40,11 +40,11 @@ double lagrange(const std::vector<std::array<double, 2>>& points, double t) {
 TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a "
           "horizon moving as a cubic in t") {
   Params p;
-  p.grid = "boxes";
+  p.grid = RadialGrid::boxes;
   p.levels = 5;
   p.rmax = 32.0;
   p.N = 20;
-  p.id = "1log-trumpet";
+  p.id = InitialDataKind::onelog_trumpet;
   p.rahA = 0.5;
   p.rah0 = 1.0;
   const Simulation sim = simulation(p);

@@ -17,8 +17,8 @@ namespace {
 
 Params trumpet_run(int n, double tmax) {
   Params p;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.N = n;
   p.rmax = 20.0;
   p.tmax = tmax;
@@ -34,11 +34,11 @@ double horizon_radius(const Simulation& sim) {
 
 TEST_CASE("rahA = 0 is bit-for-bit the run without the horizon shift") {
   Params plain = trumpet_run(200, 3.0);
-  plain.id = "maximal-trumpet";
+  plain.id = InitialDataKind::maximal_trumpet;
   Params with = plain;
   with.rahA = 0.0;
   with.rah0 = 0.6;
-  with.ah_every = "substage";
+  with.ah_every = SearchEvery::substage;
   with.rah_width = 2.0;
   Simulation a = simulation(plain), b = simulation(with);
   a.run(nullptr);
@@ -82,7 +82,7 @@ TEST_CASE("the horizon moves outward in r when h > h_AH and inward when h < h_AH
     Params out = trumpet_run(400, 15.0);
     out.rahA = 0.5;
     out.rah0 = 0.95;
-    out.ah_every = every;
+    out.ah_every = AhEvery::parse(every);
     Params in = out;
     in.rah0 = 0.65;
     Simulation grow = simulation(out), shrink = simulation(in);
@@ -125,13 +125,13 @@ TEST_CASE("the study's finding: H converges with the consistent shift, not when 
           "derivatives are dropped") {
   auto H_at = [](const char* variant, int n) {
     Params p = trumpet_run(n, 4.0);
-    p.id = "maximal-trumpet";
-    p.grid = "sinh";
+    p.id = InitialDataKind::maximal_trumpet;
+    p.grid = RadialGrid::sinh;
     p.rmax = 100.0;
     p.dr_inner = 8.0 / n;
     p.rahA = 0.5;
     p.rah0 = 0.6;
-    p.rah_variant = variant;
+    p.rah_variant = VariantChoice::parse(variant);
     Simulation sim = simulation(p);
     sim.run(nullptr);
     return sim.series_row(derived_profiles(sim.state(), sim.grid())).H_L2_ext;

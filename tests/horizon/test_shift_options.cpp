@@ -29,8 +29,8 @@ namespace {
 
 Params trumpet(int n, double rmax, double tmax) {
   Params p;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.N = n;
   p.rmax = rmax;
   p.tmax = tmax;
@@ -155,7 +155,7 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   resolve_defaults(p);
   CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
   // and config.toml records what auto stood for, so that a later change of auto is detected
-  CHECK(p.rah_profile == "gauss");
+  CHECK(p.rah_profile == ShiftProfile::gauss);
   CHECK(p.rah_width == 1.0);
   Params q = trumpet(200, 20.0, 0.0);
   q.rahA = 0.5;
@@ -163,12 +163,12 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   resolve_defaults(q);
   CHECK(rhs_params(q).horizon_shift.profile == ShiftProfile::rational);
   CHECK(rhs_params(q).horizon_shift.width == 3.0);
-  CHECK(q.rah_profile == "rational");
+  CHECK(q.rah_profile == ShiftProfile::rational);
   CHECK(config_text(q).find("rah-width = 3\n") != std::string::npos);
   // without the horizon shift nothing is resolved (auto means nothing there)
   Params off = trumpet(200, 20.0, 0.0);
   resolve_defaults(off);
-  CHECK(off.rah_profile == "auto");
+  CHECK(off.rah_profile == ShiftProfile::automatic);
   CHECK_FALSE(off.rah_rcut.has_value());
 }
 
@@ -218,11 +218,11 @@ TEST_CASE("beta_H is tapered to zero before the outer boundary: quartic (default
   Params p = trumpet(400, 40.0, 0.0);
   p.rahA = 0.5;
   p.rah0 = 1.2;
-  p.rah_profile = "rational";
+  p.rah_profile = ShiftProfile::rational;
   p.rah_width = 3.0;
-  p.rah_normal = "conformal";
+  p.rah_normal = ShiftNormal::conformal;
   resolve_defaults(p);
-  CHECK(p.rah_taper == "quartic");
+  CHECK(p.rah_taper == Taper::quartic);
   const std::string text = config_text(p);
   CHECK(text.find("rah-taper = \"quartic\"\n") != std::string::npos);
   {
@@ -261,7 +261,7 @@ TEST_CASE("beta_H is tapered to zero before the outer boundary: quartic (default
   }
   // --rah-taper step: 1 up to rcut/2, exactly 0 from rcut
   Params q = p;
-  q.rah_taper = "step";
+  q.rah_taper = Taper::step;
   Simulation sim_step = simulation(q);
   const auto beta_step = sim_step.horizon_shift();
   for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
@@ -278,7 +278,7 @@ TEST_CASE("the advection stencil options change exactly the term they name") {
   // B's driver holds beta_GD d_r Delta^r; Delta^r's own equation beta d_r Delta^r. Switching a
   // stencil must change that RHS by beta (D_new - D_old) Delta^r and nothing else.
   Params p = trumpet(100, 20.0, 2.0);
-  p.id = "maximal-trumpet"; // its shift evolves, and with it Delta^r (zero at t = 0)
+  p.id = InitialDataKind::maximal_trumpet; // its shift evolves, and with it Delta^r (zero at t = 0)
   Simulation sim = simulation(p);
   sim.run(nullptr);
   const Grid& g = sim.grid();
@@ -486,7 +486,7 @@ TEST_CASE("a stretched horizon (0.89 M) converges at coarse spacing, M/8 to M/24
 TEST_CASE("a wormhole shrink defaults to eta = 1/M, and is warned about with eta > 1/M, "
           "trumpets and stretches keep 2/M") {
   Params p;
-  p.id = "wormhole";
+  p.id = InitialDataKind::wormhole;
   p.rahA = 0.5;
   p.rah0 = 0.6;
   p.M = 2.0;
@@ -498,8 +498,8 @@ TEST_CASE("a wormhole shrink defaults to eta = 1/M, and is warned about with eta
   q.eta = 1.0; // 2/M, given
   REQUIRE(warnings(q).size() == 1);
   CHECK(warnings(q)[0].find("eta = 1/M, their default") != std::string::npos);
-  for (auto change : {+[](Params& x) { x.id = "1log-trumpet"; }, +[](Params& x) { x.rah0 = 1.7; },
-                      +[](Params& x) { x.rahA = 0.0; }}) {
+  for (auto change : {+[](Params& x) { x.id = InitialDataKind::onelog_trumpet; },
+                      +[](Params& x) { x.rah0 = 1.7; }, +[](Params& x) { x.rahA = 0.0; }}) {
     Params r = p;
     change(r);
     resolve_defaults(r);
@@ -517,9 +517,9 @@ TEST_CASE("--rah-width reaches the shift: f(r) = (r/w)/(1 + (r/w)^2) with the wi
     Params p = trumpet(200, 20.0, 0.0);
     p.rahA = 0.5;
     p.rah0 = 0.6;
-    p.rah_profile = "rational";
+    p.rah_profile = ShiftProfile::rational;
     p.rah_width = w;
-    p.rah_normal = "conformal";
+    p.rah_normal = ShiftNormal::conformal;
     p.rah_rcut = 1e6; // the taper far outside the grid (it has its own test)
     Simulation sim = simulation(p);
     const auto beta_H = sim.horizon_shift();
@@ -544,7 +544,7 @@ TEST_CASE("driver-full-shift changes B's driver where beta_H is non-zero, and on
   p.rah0 = 0.6;
   auto rhs_of = [&](const std::string& variant) {
     Params q = p;
-    q.rah_variant = variant;
+    q.rah_variant = VariantChoice::parse(variant);
     Simulation sim = simulation(q);
     GbssnRhs rhs(sim.grid(), sim.rhs().params());
     rhs.set_horizon_radius(sim.horizon_radius()); // found on this state, as the run's RHS does
@@ -571,8 +571,8 @@ TEST_CASE("midstep-update searches inside the step: the shrink moves the horizon
   Params p = trumpet(400, 40.0, 10.0);
   p.rahA = 0.5;
   p.rah0 = 0.6;
-  p.rah_variant = "midstep-update";
-  p.ah_every = std::to_string(2); // (a literal trips GCC 12's -Wrestrict false positive)
+  p.rah_variant = ShiftVariant::midstep_update;
+  p.ah_every = AhEvery::parse("2");
   Simulation sim = simulation(p);
   const double r0 = sim.horizons().horizon()->r;
   sim.run(nullptr);
@@ -606,16 +606,16 @@ TEST_CASE("B's driver term under refinement: the published upwind-gd stencil blo
   // (docs/hyperbolicity.py): N = 3200 (M/640 at the puncture) is non-finite at t = 0.98 M.
   auto stretched = [](int n, const std::string& stencil) {
     Params p;
-    p.id = "1log-trumpet";
+    p.id = InitialDataKind::onelog_trumpet;
     p.N = n;
     p.rahA = 0.5;
     p.rah0 = 1.5;
     p.tmax = 1.5;
     p.dt_series = 0.5;
-    p.driver_advection = stencil;
+    p.driver_advection = DriverStencilChoice::parse(stencil);
     return p;
   };
-  CHECK(Params{}.driver_advection == "matched");
+  CHECK(Params{}.driver_advection == AdvectionStencil::matched);
   double onset_fine = 0.0;
   {
     Simulation sim = simulation(stretched(3200, "upwind-gd"));
@@ -638,14 +638,14 @@ TEST_CASE("B's driver term: the matched and centred stencils discretise one equa
           "to truncation error, falling with N), unlike B driven by the full shift") {
   auto B_at_4M = [](int n, const std::string& stencil, const std::string& variant) {
     Params p;
-    p.id = "1log-trumpet";
+    p.id = InitialDataKind::onelog_trumpet;
     p.N = n;
     p.rahA = 0.5;
     p.rah0 = 1.5;
     p.tmax = 4.0;
     p.dt_series = 1.0;
-    p.driver_advection = stencil;
-    p.rah_variant = variant;
+    p.driver_advection = DriverStencilChoice::parse(stencil);
+    p.rah_variant = VariantChoice::parse(variant);
     Simulation sim = simulation(p);
     sim.run(nullptr);
     const auto B = field(sim.state(), sim.grid(), Var::B);

@@ -27,8 +27,8 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("columns", true);
   Params p;
-  p.id = "wormhole"; // H and M_r differ clearly on these data (a coarse grid)
-  p.grid = "uniform";
+  p.id = InitialDataKind::wormhole; // H and M_r differ clearly on these data (a coarse grid)
+  p.grid = RadialGrid::uniform;
   p.N = 100;
   p.rmax = 20.0;
   p.tmax = 1.0;
@@ -76,8 +76,8 @@ TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("decimal_times", true);
   Params p;
-  p.id = "1log-trumpet";
-  p.grid = "uniform";
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
   p.N = 60;
   p.rmax = 20.0;
   p.tmax = 3.05; // the last row at tmax, not a multiple of the cadence
