@@ -503,6 +503,26 @@ TEST_CASE("sweep refuses a --sweep that names no flag") {
   CHECK(run("sweep --out " + scratch("sweep_bad").string() + " --sweep rahA", &err) == 2);
 }
 
+TEST_CASE("sweep: an invalid member before a valid one is marked invalid and the valid one runs, "
+          "a sweep of invalid members only is refused") {
+  const fs::path out = scratch("sweep_invalid_first");
+  fs::remove_all(out);
+  const std::string flags =
+      " --id 1log-trumpet --grid uniform --N 32 --rmax 8 --tmax 0.5 --out " + out.string();
+  std::string err;
+  // cfl 7 is refused by every member with it; 0.25 runs
+  CHECK(run("sweep --sweep cfl=7,0.25" + flags, &err) == 3);
+  INFO(err);
+  CHECK(err.find("1 invalid") != std::string::npos);
+  CHECK(fs::exists(out / "cfl=0.25" / "timeseries.dat"));
+  CHECK_FALSE(fs::exists(out / "cfl=7" / "timeseries.dat"));
+  fs::remove_all(out);
+  CHECK(run("sweep --sweep cfl=7,8" + flags, &err) == 2);
+  CHECK(err.find("no member is valid") != std::string::npos);
+  CHECK_FALSE(fs::exists(out / "summary.dat"));
+  fs::remove_all(out);
+}
+
 TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted orders") {
   const fs::path out = scratch("sweep_tied");
   REQUIRE(run("sweep -j 2 --out " + out.string()
