@@ -164,9 +164,11 @@ TEST_CASE("hostile inputs: each refused cleanly, naming its flag, nothing writte
       REQUIRE(::mkfifo((dir / line.substr(6)).c_str(), 0644) == 0);
       continue;
     }
-    if (line.rfind("@symlink ", 0) == 0) { // @symlink NAME TARGET
+    if (line.rfind("@symlink ", 0) == 0) { // @symlink NAME TARGET, in the place of NAME's file
       const auto w = words(line.substr(9));
       REQUIRE(w.size() == 2);
+      std::error_code none; // (NAME need not exist)
+      fs::remove(dir / w[0], none);
       fs::create_symlink(w[1], dir / w[0]);
       continue;
     }
