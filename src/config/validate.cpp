@@ -319,6 +319,10 @@ bool folder_is_empty(const std::filesystem::path& dir) {
   return true;
 }
 
+namespace {
+void refuse_dangling_link(const std::string& flag, const std::filesystem::path& dir);
+} // namespace
+
 void validate_output_dir(const Params& p) {
   namespace fs = std::filesystem;
   if (p.out.empty())
@@ -350,8 +354,7 @@ void validate_output_dir(const Params& p) {
       throw ParamError("--out", p.out, "is not writable");
     return;
   }
-  if (fs::is_symlink(fs::symlink_status(dir, ec)))
-    throw ParamError("--out", p.out, "is a symbolic link to nothing (its target does not exist)");
+  refuse_dangling_link("--out", dir);
   // The nearest existing ancestor must be a writable directory.
   fs::path parent = fs::absolute(dir, ec).parent_path();
   while (!parent.empty() && !fs::exists(parent, ec))
@@ -367,6 +370,32 @@ std::string shown_path(const std::string& path) {
   return path.size() <= 120
              ? printable(path)
              : fmt::format("{}... ({} bytes)", printable(path.substr(0, 100)), path.size());
+}
+
+/// Refuses (ParamError naming `flag`) a folder to be made that is, or lies below, a symbolic
+/// link to nothing: no folder can be made there (the system says 'File exists'), and making
+/// the link's target instead would write elsewhere than the path says.
+void refuse_dangling_link(const std::string& flag, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  fs::path prefix;
+  for (const auto& part : dir) {
+    prefix /= part;
+    std::error_code ec;
+    const fs::file_status link = fs::symlink_status(prefix, ec);
+    if (ec || !fs::exists(link))
+      return; // nothing from here on exists: a path to make
+    if (!fs::is_symlink(link))
+      continue;
+    (void)fs::status(prefix, ec);
+    if (ec != std::errc::no_such_file_or_directory)
+      continue; // a link to something (a loop is check_path's)
+    const bool leaf = (prefix / "").lexically_normal() == (dir / "").lexically_normal();
+    throw ParamError(flag, shown_path(dir.string()),
+                     leaf ? std::string("is a symbolic link to nothing (its target does not exist)")
+                          : fmt::format("lies below {}, a symbolic link to nothing (its target "
+                                        "does not exist)",
+                                        shown_path(prefix.string())));
+  }
 }
 
 } // namespace
@@ -412,6 +441,7 @@ void check_input_file(const std::string& flag, const std::filesystem::path& path
 
 void create_output_dir(const std::string& flag, const std::filesystem::path& dir) {
   check_path(flag, dir);
+  refuse_dangling_link(flag, dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)

@@ -1640,13 +1640,6 @@ def scenarios(draw, surfaces):
 # by the invariant and the input, they are tallied and printed but do not fail the run. Remove
 # an entry once its defect is fixed, so that it cannot come back unseen.
 KNOWN_DEFECTS = (
-    (("dangling-out",),
-     lambda c: (subcommand(getattr(c, "args", None) or c.params.get("action", [])) == "sweep"
-                or "/" in os.path.normpath(out_dir(c) if isinstance(c, Case) else c.params["out"]
-                                           ).strip("/")),
-     "sweep (a whole sweep and --member) with --out a dangling symbolic link, and every "
-     "subcommand with --out below one (dangling/sub), refuse it as 'cannot be created: File "
-     "exists' instead of naming the link"),
     (("resume-differs",),
      lambda c: c.params.get("name") == "rah-hAH-file.dat"
      and c.params.get("kind") in ("flip", "truncate", "link-other"),
