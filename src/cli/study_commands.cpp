@@ -157,22 +157,12 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
                          fmt::format("lists {} twice", options.scaled_times[k]));
   check_path("--out", options.out);
   bool continuing = false;
-  // A converge folder of other inputs: say which, so that nobody takes --force lightly (with
-  // --force the members rerun; a member resumes only from a checkpoint of its own inputs).
-  std::error_code ec; // a path that cannot be examined is refused by validate_output_dir
-  if (const auto old = std::filesystem::path(options.out) / "config.toml";
-      !options.force && std::filesystem::is_regular_file(old, ec)) {
-    std::ifstream in(old);
-    std::stringstream text;
-    text << in.rdbuf();
-    const auto diff = config_differences(text.str(), config_text(base), {"out", "force", "N"});
-    if (!diff.empty())
-      throw ParamError("--out", options.out,
-                       fmt::format("holds a converge study of other inputs ({}); use another "
-                                   "--out, or --force to rerun into it",
-                                   fmt::join(diff, ", ")));
-    // the same study (an interrupted one, as its message says): its members continue from
-    // their checkpoints, each checked against its own inputs
+  // A folder of another command's run, or a converge study of other inputs: refused, saying
+  // which, so that nobody takes --force lightly (with --force the members rerun; a member
+  // resumes only from a checkpoint of its own inputs). The same study (an interrupted one, as
+  // its message says): its members continue from their checkpoints, each checked against its
+  // own inputs.
+  if (!options.force && holds_this_study(options.out, config_text(base))) {
     continuing = true;
     say("gbssn1d converge: {} holds this study (same inputs): members continue from their "
         "checkpoints\n",

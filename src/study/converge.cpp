@@ -27,12 +27,18 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <sstream>
+#include <string_view>
 
 namespace gbssn1d {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+/// The line that marks a config.toml as a converge study's (it goes on with the N list and the
+/// fields); no other command writes it.
+constexpr std::string_view study_mark = "# converge: N = ";
 
 /// A member with a checkpoint of its own configuration, and the samples saved with it, is
 /// continued from there: `sim` restored, `rec` the saved samples; nothing otherwise, with the
@@ -207,15 +213,49 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
   return members;
 }
 
+bool holds_this_study(const std::string& out, const std::string& base_config) {
+  const fs::path file = fs::path(out) / "config.toml";
+  std::error_code ec; // a path that cannot be examined is refused by validate_output_dir
+  if (!fs::is_regular_file(file, ec))
+    return false;
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string old = text.str();
+  const bool study = old.rfind(study_mark, 0) == 0
+                     || old.find("\n" + std::string(study_mark)) != std::string::npos;
+  if (!study)
+    throw ParamError("--out", out,
+                     fmt::format("is not a converge study's folder (its config.toml has no "
+                                 "'{}...' line: an evolve run, a sweep's member or a study's "
+                                 "member); nothing was changed: use another --out, or --force "
+                                 "to run the study into it",
+                                 study_mark));
+  const auto diff = config_differences(old, base_config, {"out", "force", "N"});
+  if (!diff.empty())
+    throw ParamError("--out", out,
+                     fmt::format("holds a converge study of other inputs ({}); use another "
+                                 "--out, or --force to rerun into it",
+                                 fmt::join(diff, ", ")));
+  return true;
+}
+
 int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config) {
   ConvergeStudy s = plan_study(base, options);
   const FolderLock lock("--out", options.out); // one writer per study folder
+  // what the folder holds again, under the lock: another process may have written it since it
+  // was checked (an evolve run of the same flags is no study to continue)
+  if (!options.force && !holds_this_study(options.out, base_config)
+      && !folder_is_empty(options.out))
+    throw ParamError("--out", options.out,
+                     "exists and is not empty: another process wrote it meanwhile (use --force "
+                     "to overwrite)");
   // the study's inputs first: a rerun after any stop (SIGKILL included) recognises its folder
   // and continues the members from their checkpoints
   const std::string study_config =
       header_text("")
-      + fmt::format("# converge: N = {}, fields {}\n", fmt::join(options.N, ","),
+      + fmt::format("{}{}, fields {}\n", study_mark, fmt::join(options.N, ","),
                     fmt::join(options.fields, ","))
       + base_config;
   write_file_atomically(fs::path(options.out) / "config.toml", study_config);

@@ -1009,8 +1009,10 @@ NAMES_FILE = {"checkpoint.bin": "checkpoint", "rah-hAH-file.dat": "rah-hAH-file"
 # the other left there
 IN_USE = re.compile(r"being written by another gbssn1d process|already being written")
 # (a study or sweep of other inputs: "holds a converge study of other inputs", "holds members
-# run with other inputs")
-OTHER_REFUSALS = re.compile(r"exists and is not empty|of other inputs|run with other inputs")
+# run with other inputs"; another command's run where a study would go: "is not a converge
+# study's folder")
+OTHER_REFUSALS = re.compile(r"exists and is not empty|of other inputs|run with other inputs"
+                            r"|is not a converge study's folder")
 
 
 @dataclasses.dataclass
@@ -1652,12 +1654,6 @@ KNOWN_DEFECTS = (
      "converge rerun with a member's checkpoint.bin a symbolic link loop: the member fails with "
      "'filesystem error: status: Too many levels of symbolic links', the study stops (exit 3) "
      "and rewrites convergence.dat with a partial study"),
-    (("concurrent-mix",),
-     lambda c: c.params.get("pair") == "converge+evolve"
-     and flag_value(c.params["a"], "--ko-sigma") == flag_value(c.params["b"], "--ko-sigma"),
-     "converge into a folder holding an evolve run of the same flags (but N) takes it for 'this "
-     "study (same inputs)' and writes the study into it without --force: config.toml says "
-     "N = 32, timeseries.dat's header the run's N (also one after the other)"),
     (("sweep-end-line-cut",), lambda c: True,
      "sweep takes a member whose timeseries.dat lost the tail of its end line ('# end: "
      "completed at t = 0.' for '... t = 0.5') as complete: --collect lists it ok, a rerun keeps "

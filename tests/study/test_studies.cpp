@@ -1,6 +1,10 @@
 // `converge` and `sweep` as users run them.
 #include "../test_support.hpp"
+#include "config/config_file.hpp"
+#include "config/params.hpp"
+#include "io/output.hpp"
 #include "io/table.hpp"
+#include "study/converge.hpp"
 
 #include <doctest/doctest.h>
 
@@ -287,6 +291,36 @@ TEST_CASE("converge refuses bad input before running anything") {
   CHECK(run("converge --N 600,900,1200 --out " + out.string() + " --cfl 9", &err) == 2);
   CHECK(err.find("--cfl") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("converge: a folder another command wrote after the check, before the study's lock, "
+          "is refused under the lock and left as it was") {
+  const fs::path out = scratch("converge_written_meanwhile");
+  gbssn1d::Params base = gbssn1d::parse_evolve_args(
+      {"--id", "1log-trumpet", "--grid", "uniform", "--rmax", "8", "--tmax", "0", "--N", "32"});
+  base.out = out.string();
+  gbssn1d::resolve_defaults(base);
+  gbssn1d::ConvergeOptions options;
+  options.N = {32, 40, 48};
+  options.out = out.string();
+  // what an evolve run of the same flags (but N) leaves: its config.toml, no study's, and rows
+  fs::create_directories(out);
+  gbssn1d::Params run = base;
+  run.N = 64;
+  const std::string config = gbssn1d::header_text("") + gbssn1d::config_text(run);
+  std::ofstream(out / "config.toml") << config;
+  std::ofstream(out / "timeseries.dat") << "# t alpha_center\n0 1\n";
+  CHECK_THROWS_WITH_AS(gbssn1d::run_converge(base, options, gbssn1d::config_text(base)),
+                       doctest::Contains("is not a converge study's folder"), gbssn1d::ParamError);
+  CHECK(slurp(out / "config.toml") == config);
+  CHECK_FALSE(fs::exists(out / "N32"));
+  // a folder that an empty one became meanwhile (no config.toml): refused too
+  fs::remove(out / "config.toml");
+  CHECK_THROWS_WITH_AS(gbssn1d::run_converge(base, options, gbssn1d::config_text(base)),
+                       doctest::Contains("another process wrote it meanwhile"),
+                       gbssn1d::ParamError);
+  CHECK_FALSE(fs::exists(out / "N32"));
+  fs::remove_all(out);
 }
 
 TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes") {
