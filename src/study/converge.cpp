@@ -47,10 +47,19 @@ std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const 
                                         const std::string& samples_key, MemberRecord& rec,
                                         std::string& afresh) {
   const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
+  const fs::path checkpoint_file = fs::path(p.out) / "checkpoint.bin";
   std::optional<Checkpoint> from;
-  if (fs::is_regular_file(fs::path(p.out) / "checkpoint.bin")) {
+  // a checkpoint that cannot even be examined (a loop of symbolic links) is unusable like any
+  // other: the member starts afresh (its first checkpoint replaces the file)
+  std::error_code ec;
+  const fs::file_status st = fs::status(checkpoint_file, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    afresh = fmt::format("its {} cannot be examined: {}", checkpoint_file.string(), ec.message());
+  else if (fs::exists(st) && !fs::is_regular_file(st))
+    afresh = fmt::format("its {} is not a regular file", checkpoint_file.string());
+  if (fs::is_regular_file(st)) {
     try {
-      Checkpoint c = read_checkpoint(fs::path(p.out) / "checkpoint.bin");
+      Checkpoint c = read_checkpoint(checkpoint_file);
       if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty() || c.t > p.tmax)
         afresh = "its checkpoint belongs to other inputs";
       else if (auto saved = read_samples(samples_file, samples_key, c.step)) {

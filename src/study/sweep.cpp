@@ -223,7 +223,7 @@ int emit_tasks(const SweepOptions& options, const std::vector<SweepAxis>& axes,
   }
   // an existing file is not overwritten unless it holds these very lines (a rerun of the
   // same emit); a device or FIFO (/dev/stdout into a pipe) is written to as it is
-  if (fs::is_regular_file(options.emit_tasks)) {
+  if (std::error_code ec; fs::is_regular_file(options.emit_tasks, ec)) {
     std::ifstream old(options.emit_tasks, std::ios::binary);
     std::ostringstream text;
     text << old.rdbuf();

@@ -131,8 +131,11 @@ MemberOutcome run_member(const fs::path& dir, const SweepMember& m, const std::s
     const fs::path log = dir / "logs" / (m.name + ".log");
     // a member stopped with a checkpoint (interrupted, killed, or requeued) continues from it
     const fs::path member_dir = dir / m.name;
-    const bool resumable = fs::is_regular_file(member_dir / "checkpoint.bin")
-                           && fs::is_regular_file(member_dir / "config.toml");
+    // (a file that cannot even be examined, a loop of symbolic links, is no checkpoint: the
+    // member runs afresh, and evolve refuses a folder holding a link, naming it)
+    std::error_code ec;
+    const bool resumable = fs::is_regular_file(member_dir / "checkpoint.bin", ec)
+                           && fs::is_regular_file(member_dir / "config.toml", ec);
     const std::vector<std::string> args =
         resumable ? std::vector<std::string>{"resume", member_dir.string()} : m.args;
     const int rc = spawn_and_wait(exe, args, log);

@@ -349,7 +349,8 @@ std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members) 
 void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
   const fs::path file = fs::path(out) / "logs" / "axes";
   create_output_dir("--out", file.parent_path());
-  if (!fs::exists(file))
+  std::error_code ec; // written only where nothing is, not even a link (a loop included)
+  if (!fs::exists(fs::symlink_status(file, ec)))
     write_file_atomically(file, axis_order_text(axes));
 }
 

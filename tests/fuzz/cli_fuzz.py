@@ -1648,12 +1648,6 @@ KNOWN_DEFECTS = (
      "resume takes a changed copy OUT/rah-hAH-file.dat that still reads as an h_AH file (a "
      "digit flipped, cut at a row, or a link to another valid file) and ends with exit 0 and "
      "outputs other than the intact run's (no checksum of the copy is kept)"),
-    (("leak", "resume-differs"),
-     lambda c: c.params.get("folder", "").startswith(STUDY + "/")
-     and c.params.get("name") == "checkpoint.bin" and c.params.get("kind") == "link-loop",
-     "converge rerun with a member's checkpoint.bin a symbolic link loop: the member fails with "
-     "'filesystem error: status: Too many levels of symbolic links', the study stops (exit 3) "
-     "and rewrites convergence.dat with a partial study"),
     (("sweep-end-line-cut",), lambda c: True,
      "sweep takes a member whose timeseries.dat lost the tail of its end line ('# end: "
      "completed at t = 0.' for '... t = 0.5') as complete: --collect lists it ok, a rerun keeps "
