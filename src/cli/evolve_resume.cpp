@@ -7,6 +7,7 @@
 #include "core/console.hpp"
 #include "core/registry.hpp"
 #include "core/stop_signal.hpp"
+#include "evolution/checkpoint.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 #include "study/converge.hpp"
@@ -32,6 +33,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <variant>
 
 namespace gbssn1d {
@@ -55,6 +57,25 @@ std::optional<std::string> prescribed_horizon_content(const Params& p) {
   if (!in && !in.eof())
     throw ParamError("--rah-hAH-file", printable(p.rah_hAH_file), "cannot be read");
   return text.str();
+}
+
+/// The FNV-1a hash of the run's copy of --rah-hAH-file is recorded in the configuration text
+/// its checkpoints carry, on a line of its own (a '#' line: configurations are compared by
+/// their keys), so that a resume can tell the copy the run read from one changed since.
+constexpr std::string_view copy_hash_key = "# rah-hAH-file.dat fnv1a = ";
+
+std::string copy_hash(const std::string& bytes) {
+  return fmt::format("{:016x}", fnv1a(bytes));
+}
+
+/// The hash a checkpoint's configuration text records of the copy, if it records one (a
+/// checkpoint of an earlier version does not).
+std::optional<std::string> recorded_copy_hash(const std::string& checkpoint_config) {
+  std::istringstream lines(checkpoint_config);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(copy_hash_key, 0) == 0)
+      return line.substr(copy_hash_key.size());
+  return std::nullopt;
 }
 
 /// The bytes of a file ("" if it cannot be read: the caller's checks refuse such a file).
@@ -103,7 +124,8 @@ int evolve(Params p, bool print_config) {
   if (hAH_content)
     write_file_atomically(dir / prescribed_horizon_copy, *hAH_content);
   Output out(dir, config + sim.run_facts());
-  sim.checkpoint_config = config;
+  sim.checkpoint_config =
+      config + (hAH_content ? fmt::format("{}{}\n", copy_hash_key, copy_hash(*hAH_content)) : "");
   return run_and_report(sim, out, p);
 }
 
@@ -196,15 +218,26 @@ void check_resume_dir(const std::string& dir_name) {
                      "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
 }
 
+/// The run's copy of --rah-hAH-file as its checkpoints record it, and the parameters that
+/// continue with it.
+struct KeptHorizonFile {
+  Params params;
+  std::string hash_line; ///< for the checkpoints the resumed run writes ("" without a copy)
+};
+
 /// The run's parameters with --rah-hAH-file naming the copy the run took at its start, whatever
 /// the flag's path names now (said if that differs). Every run that used the file kept a copy:
-/// without it (deleted, not a regular file, unreadable) the folder is refused, naming the copy,
-/// rather than continued with whatever the flag's path holds now.
-Params with_kept_horizon_file(const Params& p, const std::string& dir_name) {
+/// without it (deleted, a symbolic link, not a regular file, unreadable) or with a copy that is
+/// not the one the run read (its hash is not the one `checkpoint_config` records) the folder is
+/// refused, naming the copy, rather than continued with other data. A checkpoint of an earlier
+/// version records no hash: its copy is taken as it is, with a warning.
+KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_name,
+                                       const std::string& checkpoint_config) {
   namespace fs = std::filesystem;
-  Params run_params = p;
+  KeptHorizonFile run{p, ""};
+  Params& run_params = run.params;
   if (p.rah_hAH_file.empty() || p.rahA == 0.0)
-    return run_params;
+    return run;
   const fs::path copy = fs::path(dir_name) / prescribed_horizon_copy;
   const auto refuse = [&](const std::string& why) {
     return ParamError(
@@ -215,11 +248,14 @@ Params with_kept_horizon_file(const Params& p, const std::string& dir_name) {
                     printable(copy.string()), why, printable(p.rah_hAH_file)));
   };
   std::error_code ec;
-  const fs::file_status st = fs::status(copy, ec);
+  // the copy itself, not what a link there points to: the run wrote a file, never a link
+  const fs::file_status st = fs::symlink_status(copy, ec);
   if (ec && ec != std::errc::no_such_file_or_directory)
     throw refuse("cannot be examined: " + ec.message());
   if (!fs::exists(st))
     throw refuse("is missing");
+  if (fs::is_symlink(st))
+    throw refuse("is a symbolic link, not the file the run wrote");
   if (!fs::is_regular_file(st))
     throw refuse("is not a regular file");
   std::ifstream in(copy, std::ios::binary);
@@ -227,6 +263,17 @@ Params with_kept_horizon_file(const Params& p, const std::string& dir_name) {
   kept << in.rdbuf();
   if (!in || in.bad())
     throw refuse("cannot be read");
+  const std::string hash = copy_hash(kept.str());
+  run.hash_line = fmt::format("{}{}\n", copy_hash_key, hash);
+  if (const auto recorded = recorded_copy_hash(checkpoint_config)) {
+    if (*recorded != hash)
+      throw refuse("has changed since the run read it (its FNV-1a hash is not the one the "
+                   "checkpoint recorded)");
+  } else {
+    say("gbssn1d: warning: the checkpoint in {} records no hash of {} (an earlier version wrote "
+        "it): the copy cannot be checked against the file the run read; it is taken as it is\n",
+        printable(dir_name), printable(copy.string()));
+  }
   std::optional<std::string> now;
   try {
     now = prescribed_horizon_content(p);
@@ -238,7 +285,7 @@ Params with_kept_horizon_file(const Params& p, const std::string& dir_name) {
         "{}\n",
         printable(p.rah_hAH_file), copy.string());
   run_params.rah_hAH_file = copy.string();
-  return run_params;
+  return run;
 }
 
 } // namespace
@@ -284,8 +331,8 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
                      fmt::format("is before the last output at t = {}: resuming would cut "
                                  "the output written after it",
                                  time_text(written.t_last)));
-  const Params run_params = with_kept_horizon_file(p, dir_name);
-  Simulation sim(evolution_config(run_params));
+  const KeptHorizonFile kept = with_kept_horizon_file(p, dir_name, c.config);
+  Simulation sim(evolution_config(kept.params));
   try {
     sim.restore(c);
     Output::check_resumable(dir, c.marks);
@@ -300,7 +347,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
     return 128 + signal;
   }
   sim.show_progress = true;
-  sim.checkpoint_config = config;
+  sim.checkpoint_config = config + kept.hash_line;
   write_file_atomically(dir / "config.toml", header_text("") + config);
   say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, time_text(c.t), c.step,
       time_text(p.tmax));

@@ -1642,12 +1642,6 @@ def scenarios(draw, surfaces):
 # by the invariant and the input, they are tallied and printed but do not fail the run. Remove
 # an entry once its defect is fixed, so that it cannot come back unseen.
 KNOWN_DEFECTS = (
-    (("resume-differs",),
-     lambda c: c.params.get("name") == "rah-hAH-file.dat"
-     and c.params.get("kind") in ("flip", "truncate", "link-other"),
-     "resume takes a changed copy OUT/rah-hAH-file.dat that still reads as an h_AH file (a "
-     "digit flipped, cut at a row, or a link to another valid file) and ends with exit 0 and "
-     "outputs other than the intact run's (no checksum of the copy is kept)"),
     (("sweep-end-line-cut",), lambda c: True,
      "sweep takes a member whose timeseries.dat lost the tail of its end line ('# end: "
      "completed at t = 0.' for '... t = 0.5') as complete: --collect lists it ok, a rerun keeps "
