@@ -68,7 +68,7 @@ int run_one_member(const SweepOptions& options, const std::vector<SweepAxis>& ax
   check_earlier_inputs(dir, {&m}, options.out); // again, under the lock
   const fs::path status_file = dir / "logs" / (m.name + ".status");
   MemberOutcome o;
-  if (member_done(dir, m.name)) {
+  if (member_done(dir, m)) {
     std::ifstream in(status_file);
     in >> o.status >> o.wall >> o.reason;
     say("gbssn1d sweep: {} finished earlier: {}\n", m.name, o.status);
@@ -319,16 +319,16 @@ int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& 
   install_stop_handlers();
   std::size_t done_before = 0; // members finished by an earlier run of the same sweep
   for (const auto& m : members) {
-    done_before += member_done(dir, m.name) ? 1 : 0;
+    done_before += member_done(dir, m) ? 1 : 0;
     if (const auto r = recorded_status(dir / "logs" / (m.name + ".status")))
-      if (const auto why = member_output_problem(dir, m.name, r->status))
+      if (const auto why = member_output_problem(dir, m, r->status))
         say("gbssn1d sweep: {} was recorded {}, but {}: it runs again\n", m.name, r->status, *why);
   }
   {
     SweepProgress progress(members.size(), done_before, options.progress_every);
     run_tasks(members.size(), options.jobs, [&](std::size_t k) {
       const SweepMember& m = members[k];
-      if (member_done(dir, m.name))
+      if (member_done(dir, m))
         return; // finished in an earlier run of the same sweep
       if (stop_signal() != 0)
         return; // interrupted: start nothing new (a rerun resumes)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct SweepMember {
   /// Its effective configuration (defaults resolved; its arguments if they do not parse): what
   /// a rerun of the sweep is compared against.
   std::string inputs;
+  /// Its end time (its --tmax, defaults resolved): where the end line of its timeseries.dat
+  /// says a completed run ended; nothing if its arguments do not parse.
+  std::optional<double> tmax;
 };
 
 /// A member's folder name from its (flag, value) pairs: "flag=value_flag=value", with '/' and

@@ -49,16 +49,19 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-/// A member's inputs: its effective configuration (defaults resolved), as its config.toml would
-/// hold it; for a member that does not parse, its arguments.
-std::string member_inputs(const SweepMember& m) {
+/// A member's inputs and end time: its effective configuration (defaults resolved), as its
+/// config.toml would hold it, and its tmax; for a member that does not parse, its arguments
+/// (and no end time).
+void set_inputs(SweepMember& m) {
   try {
     Params p = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // without --out, --force
     p.out.clear();
     resolve_defaults(p);
-    return config_text(p);
+    m.inputs = config_text(p);
+    m.tmax = p.tmax;
   } catch (const std::exception&) {
-    return fmt::format("args = \"{}\"\n", fmt::join(m.args, " "));
+    m.inputs = fmt::format("args = \"{}\"\n", fmt::join(m.args, " "));
+    m.tmax.reset();
   }
 }
 
@@ -109,14 +112,14 @@ std::optional<RecordedStatus> recorded_status(const fs::path& status_file) {
   return r;
 }
 
-std::optional<std::string> member_output_problem(const fs::path& dir, const std::string& name,
+std::optional<std::string> member_output_problem(const fs::path& dir, const SweepMember& m,
                                                  const std::string& status) {
   if (status != "ok" && status != "blew-up")
     return std::nullopt;
   std::error_code ec;
-  if (!fs::is_directory(dir / name, ec))
-    return fmt::format("its folder {} is missing", (dir / name).string());
-  const fs::path series = dir / name / "timeseries.dat";
+  if (!fs::is_directory(dir / m.name, ec))
+    return fmt::format("its folder {} is missing", (dir / m.name).string());
+  const fs::path series = dir / m.name / "timeseries.dat";
   if (!fs::is_regular_file(series, ec))
     return fmt::format("its {} is missing", series.string());
   // the end line the run wrote last: read the file's tail only
@@ -125,22 +128,36 @@ std::optional<std::string> member_output_problem(const fs::path& dir, const std:
   const std::streamoff size = in.tellg();
   const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
   in.seekg(from);
-  std::string tail(static_cast<std::size_t>(size - from), '\0');
+  std::string tail(static_cast<std::size_t>(std::max<std::streamoff>(0, size - from)), '\0');
   in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
-  while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r'))
-    tail.pop_back();
+  const std::string want = status == "ok" ? "# end: completed" : "# end: stopped";
+  const auto cut = [&](const std::string& why) {
+    return fmt::format("its {} is cut short ({})", series.string(), why);
+  };
+  // the end line counts only whole: with its line end (the run writes it in one piece, the
+  // line end last), and a completed run's time read in full as the member's end time
+  if (!in || tail.empty() || tail.back() != '\n')
+    return cut(fmt::format("it does not end with a whole '{}' line", want));
+  tail.pop_back();
   const std::string last =
       tail.substr(tail.rfind('\n') == std::string::npos ? 0 : tail.rfind('\n') + 1);
-  const std::string want = status == "ok" ? "# end: completed" : "# end: stopped";
-  if (!in || last.rfind(want, 0) != 0)
-    return fmt::format("its {} is cut short (it does not end with '{}')", series.string(), want);
+  if (last.rfind(want, 0) != 0)
+    return cut(fmt::format("it does not end with '{}'", want));
+  if (status == "ok") {
+    const std::string at = "# end: completed at t = ";
+    const auto t =
+        last.rfind(at, 0) == 0 ? parse_decimal<double>(last.substr(at.size())) : std::nullopt;
+    if (!t || !m.tmax || *t != *m.tmax)
+      return cut(fmt::format("its end line '{}' does not say the member's end time, t = {}",
+                             printable(last), m.tmax ? fmt::format("{}", *m.tmax) : "?"));
+  }
   return std::nullopt;
 }
 
-bool member_done(const fs::path& dir, const std::string& name) {
-  const auto r = recorded_status(dir / "logs" / (name + ".status"));
+bool member_done(const fs::path& dir, const SweepMember& m) {
+  const auto r = recorded_status(dir / "logs" / (m.name + ".status"));
   return r && (r->status == "ok" || r->status == "invalid" || r->status == "blew-up")
-         && !member_output_problem(dir, name, r->status);
+         && !member_output_problem(dir, m, r->status);
 }
 
 std::string token(std::string s) {
@@ -230,7 +247,7 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
       m.args.push_back("--" + flag + "=" + value);
     m.args.push_back("--out=" + (fs::path(out) / m.name).string());
     m.args.push_back("--force");
-    m.inputs = member_inputs(m);
+    set_inputs(m);
   }
   // Two members in one folder would share (and overwrite) their results, and two members of
   // one configuration would run the same thing twice and repeat it in the summary.

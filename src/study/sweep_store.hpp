@@ -26,14 +26,15 @@ std::optional<RecordedStatus> recorded_status(const std::filesystem::path& statu
 /// A missing, empty or broken status file counts as not done, and so does a member recorded
 /// ok or blew-up whose output is not there (member_output_problem): its folder deleted, its
 /// timeseries.dat missing or cut short.
-bool member_done(const std::filesystem::path& dir, const std::string& name);
+bool member_done(const std::filesystem::path& dir, const SweepMember& m);
 
-/// Why the output of member `name` of the sweep in `dir`, recorded with `status`, is not what
-/// that status says it wrote (ok: a timeseries.dat ending "# end: completed"; blew-up: one
-/// ending "# end: stopped"), or nothing when it is (or the status writes no output).
+/// Why the output of member `m` of the sweep in `dir`, recorded with `status`, is not what
+/// that status says it wrote (ok: a timeseries.dat whose last line is a whole "# end:
+/// completed at t = T" line, T the member's tmax; blew-up: one whose last line is a whole
+/// "# end: stopped" line), or nothing when it is (or the status writes no output). A line is
+/// whole with its line end; a file cut anywhere in its end line is cut short.
 std::optional<std::string> member_output_problem(const std::filesystem::path& dir,
-                                                 const std::string& name,
-                                                 const std::string& status);
+                                                 const SweepMember& m, const std::string& status);
 
 /// `s` as one word of a status file or summary.dat: blanks as '_', empty as '-'.
 std::string token(std::string s);

@@ -248,7 +248,7 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
       reasons[k] = why ? token(*why) : "-";
     }
     // a member recorded ok or blew-up whose output is gone or cut short is not a result
-    if (const auto why = member_output_problem(dir, members[k].name, statuses[k])) {
+    if (const auto why = member_output_problem(dir, members[k], statuses[k])) {
       statuses[k] = "missing";
       reasons[k] = token(*why);
     }

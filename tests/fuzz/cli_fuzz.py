@@ -1577,7 +1577,7 @@ def check_sweep_edits(lab, s):
     status = None
     try:
         # members whose timeseries.dat lost only the tail of its end line ('# end: completed
-        # at t = 0.' for '... t = 0.5'): reported apart (a known defect)
+        # at t = 0.' for '... t = 0.5'): reported apart (it was a defect of its own)
         end_cut = {member for member, edit, frac in p["edits"]
                    if edit_sweep(cwd, member, edit, frac)}
         damaged = {member for member, edit, _ in p["edits"] if edit in DAMAGING}
@@ -1641,12 +1641,7 @@ def scenarios(draw, surfaces):
 # Known defects: violations the current program still has, each reported (issue 37); matched
 # by the invariant and the input, they are tallied and printed but do not fail the run. Remove
 # an entry once its defect is fixed, so that it cannot come back unseen.
-KNOWN_DEFECTS = (
-    (("sweep-end-line-cut",), lambda c: True,
-     "sweep takes a member whose timeseries.dat lost the tail of its end line ('# end: "
-     "completed at t = 0.' for '... t = 0.5') as complete: --collect lists it ok, a rerun keeps "
-     "the cut file"),
-)
+KNOWN_DEFECTS = ()
 
 
 def flag_value(args, flag):

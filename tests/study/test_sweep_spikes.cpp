@@ -30,11 +30,12 @@ std::vector<std::string> summary_for(const fs::path& dir, const std::vector<doub
     SweepMember m;
     m.name = "rahA=" + value;
     m.values = {{"rahA", value}};
+    m.tmax = 1.0;
     members.push_back(m);
     fs::create_directories(dir / m.name);
     std::ofstream(dir / "logs" / (m.name + ".status")) << "ok 1.0 -\n";
     std::ofstream(dir / m.name / "timeseries.dat") << fmt::format(
-        "# t H_L2_R\n0 {:.6e}\n1 {:.6e}\n# end: completed\n", H_R_max[k] / 2, H_R_max[k]);
+        "# t H_L2_R\n0 {:.6e}\n1 {:.6e}\n# end: completed at t = 1\n", H_R_max[k] / 2, H_R_max[k]);
   }
   SweepOptions options;
   options.sweeps = {"rahA=..."};
