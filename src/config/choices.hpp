@@ -73,7 +73,17 @@ inline const Choices<AdvectionStencil> driver_stencil_choices{
     {"upwind-full", AdvectionStencil::upwind_full},
     {"centred", AdvectionStencil::centred}};
 
-using ShiftVariant = HorizonShiftParams::Variant;
+/// --rah-variant: the study's inconsistent implementations, of the equations
+/// (HorizonShiftParams::Variant) or of when h_AH is searched (HorizonSearchSettings::Schedule).
+enum class ShiftVariant {
+  consistent,
+  no_shift_derivatives,
+  no_shift_second_derivatives,
+  delta_rhs_from_gd,
+  driver_full_shift,
+  midstep_update,
+  box_substage,
+};
 inline const Choices<ShiftVariant> variant_choices{
     {"consistent", ShiftVariant::consistent},
     {"no-shift-derivatives", ShiftVariant::no_shift_derivatives},

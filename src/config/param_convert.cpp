@@ -2,16 +2,48 @@
 
 #include "config/numbers.hpp"
 #include "config/param_rules.hpp"
+#include "evolution/levels.hpp"
+#include "io/horizon_file.hpp"
 
 #include <fmt/format.h>
 
-#include "evolution/levels.hpp"
-#include "io/horizon_file.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace gbssn1d {
+
+namespace {
+
+/// --rah-variant's part that changes the equations (the schedules discretise them as specified).
+HorizonShiftParams::Variant equations_variant(ShiftVariant v) {
+  using V = HorizonShiftParams::Variant;
+  switch (v) {
+  case ShiftVariant::no_shift_derivatives:
+    return V::no_shift_derivatives;
+  case ShiftVariant::no_shift_second_derivatives:
+    return V::no_shift_second_derivatives;
+  case ShiftVariant::delta_rhs_from_gd:
+    return V::delta_rhs_from_gd;
+  case ShiftVariant::driver_full_shift:
+    return V::driver_full_shift;
+  case ShiftVariant::consistent:
+  case ShiftVariant::midstep_update:
+  case ShiftVariant::box_substage:
+    break;
+  }
+  return V::consistent;
+}
+
+/// --rah-variant's part that changes when h_AH is searched.
+HorizonSearchSettings::Schedule search_schedule(ShiftVariant v) {
+  using S = HorizonSearchSettings::Schedule;
+  return v == ShiftVariant::midstep_update ? S::midstep_update
+         : v == ShiftVariant::box_substage ? S::box_substage
+                                           : S::standard;
+}
+
+} // namespace
 
 EvolutionConfig mesh_config(const Params& p) {
   EvolutionConfig c;
@@ -54,6 +86,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.norms.Rmax = p.norm_Rmax * p.M;
   c.norms.Rint = p.norm_Rint * p.M;
   c.horizon_search.every_steps = ah_every_steps(p);
+  c.horizon_search.schedule = search_schedule(p.rah_variant.value());
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   c.horizon_search.finder.tolerance = p.ah_tol;
@@ -90,7 +123,7 @@ RhsParams rhs_params(const Params& p) {
   r.advection.driver = p.driver_advection.value();
   r.advection.delta = p.delta_advection.value();
   r.upwind = p.upwind.value();
-  r.horizon_shift.variant = p.rah_variant.value();
+  r.horizon_shift.variant = equations_variant(p.rah_variant.value());
   return r;
 }
 

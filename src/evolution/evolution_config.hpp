@@ -25,9 +25,18 @@ struct NormWindows {
 /// When the apparent horizon is searched for, for the horizon shift's h_AH (the schedule that
 /// evolution/horizon_tracker.hpp runs).
 struct HorizonSearchSettings {
-  /// 0: at every RK substage (inside the RHS); n >= 1: every n steps (with the midstep-update
-  /// variant: at the 2nd RK substage of every n-th step)
+  /// Where the searches happen, beyond their cadence. The two study schedules are deliberately
+  /// inconsistent ways of feeding h_AH to the equations (docs/horizon-shift-study.md).
+  enum class Schedule {
+    standard,       ///< as every_steps says
+    midstep_update, ///< every_steps >= 1: inside the RHS, at the 2nd RK substage of every n-th step
+    /// boxes, every_steps = 0: the box holding the horizon searches at its own substages, every
+    /// other box uses its latest value (an h_AH that jumps across refinement boundaries and lags)
+    box_substage,
+  };
+  /// 0: at every RK substage (inside the RHS); n >= 1: every n steps
   long every_steps = 0;
+  Schedule schedule = Schedule::standard;
   double t_min = 0.0;                                     ///< no searches before t_min ...
   double t_max = std::numeric_limits<double>::infinity(); ///< ... or after t_max
   HorizonFinderParams finder{.tolerance = 1e-12};         ///< the root-finder's settings

@@ -23,12 +23,8 @@ constexpr double sample_margin_cells = 4.0;
 std::vector<GbssnRhs> diagnostic_copies(const EvolutionConfig& config,
                                         const mesh::MeshLayout& layout) {
   std::vector<GbssnRhs> rhs;
-  RhsParams r = config.rhs;
-  using V = HorizonShiftParams::Variant;
-  if (r.horizon_shift.variant == V::midstep_update || r.horizon_shift.variant == V::box_substage)
-    r.horizon_shift.variant = V::consistent; // they differ in searches only
   for (std::size_t l = 0; l < layout.levels(); ++l)
-    rhs.emplace_back(layout.grid(l), r);
+    rhs.emplace_back(layout.grid(l), config.rhs);
   return rhs;
 }
 

@@ -57,19 +57,15 @@ struct HorizonShiftParams {
   ShiftProfile profile = ShiftProfile::rational;
   ShiftNormal normal = ShiftNormal::unit;
   double chi_smooth = 0.05; ///< chi_s of ShiftNormal::smooth
-  /// Deliberately inconsistent implementations, for the study of why a 3D code lost
-  /// convergence; `consistent` is the method as specified above.
+  /// Deliberately inconsistent discretisations of the equations, for the study of why a 3D
+  /// code lost convergence; `consistent` is the method as specified above. (When h_AH is
+  /// searched is the tracker's schedule, evolution/evolution_config.hpp, not a variant here.)
   enum class Variant {
     consistent,
     no_shift_derivatives,        ///< beta_H added to the shift's value only: derivatives of beta_GD
     no_shift_second_derivatives, ///< ... only the second derivatives of beta_GD
     delta_rhs_from_gd,           ///< d_t Delta^r computed with beta_GD (for B) reused for Delta^r
     driver_full_shift,           ///< B driven by d_t Delta^r of the full shift
-    midstep_update,              ///< h_AH searched at the 2nd RK substage of every n-th step
-                                 ///< (the schedule: evolution/horizon_tracker.hpp)
-    /// boxes: the box holding the horizon searches at its own substages, every other box uses
-    /// its latest value (an h_AH that jumps across refinement boundaries and lags in time)
-    box_substage,
   };
   Variant variant = Variant::consistent;
   bool active() const { return A != 0.0; }

@@ -118,9 +118,7 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     split_shift(u, t);
     using V = HorizonShiftParams::Variant;
-    if (hs.variant == V::consistent || hs.variant == V::midstep_update
-        || hs.variant == V::box_substage) {
-      // these three differ only in when and where h_AH is searched
+    if (hs.variant == V::consistent) {
       interior<p, upwind, true, V::consistent>(u, dudt);
     } else if constexpr (upwind == fd::Upwind::lopsided) {
       switch (hs.variant) { // dispatched once per call, not per point
