@@ -11,14 +11,6 @@
 
 namespace gbssn1d {
 
-std::string printable(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s)
-    out += (c >= 0x20 && c < 0x7f) ? std::string(1, static_cast<char>(c))
-                                   : fmt::format("\\x{:02x}", c);
-  return out;
-}
-
 bool shrinks_wormhole(const Params& p) {
   return p.id == InitialDataKind::wormhole && p.rahA > 0.0
          && p.rah0 < standard_horizon_radius * p.M;

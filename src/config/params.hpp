@@ -2,6 +2,7 @@
 #pragma once
 
 #include "config/choices.hpp"
+#include "core/text.hpp"
 #include "evolution/evolution_config.hpp"
 
 #include <filesystem>
@@ -131,9 +132,6 @@ public:
 private:
   std::string flag_;
 };
-
-/// Non-printable bytes of a text as \xNN, for messages that quote user input.
-std::string printable(const std::string& s);
 
 /// A horizon shift that shrinks the horizon of wormhole data (rahA != 0, rah0 below the
 /// standard 0.8304 M): with eta = 2/M the Gamma-driver does not settle on wormhole data and such

@@ -1,6 +1,6 @@
 #include "io/horizon_file.hpp"
 
-#include "config/params.hpp"
+#include "core/text.hpp"
 #include "io/table.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>

@@ -1,6 +1,7 @@
 #include "io/table.hpp"
 
-#include "config/numbers.hpp"
+#include "core/decimal.hpp"
+#include "core/text.hpp"
 
 #include <fmt/format.h>
 

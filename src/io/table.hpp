@@ -4,7 +4,7 @@
 //
 // Every cell goes through one checked reader (table_cell): a cell that starts as a number does
 // (a digit or '.', after an optional sign) must be a whole decimal number by the grammar of
-// config/numbers.hpp (no trailing characters, no hexadecimal, within a double's range), else the
+// core/decimal.hpp (no trailing characters, no hexadecimal, within a double's range), else the
 // table is refused, naming the file, the line and the text. The words gbssn1d writes for
 // non-finite values, nan and inf (with a sign), are those values; other words (a sweep
 // summary's status and reasons, '-') are read as NaN. A word that begins with a digit (a sweep
