@@ -24,12 +24,7 @@ struct Run {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gbssn1d::testing::slurp;
 
 Run run(const std::string& args) {
   const fs::path out = scratch("help_stdout"), err = scratch("help_stderr");

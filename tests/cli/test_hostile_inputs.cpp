@@ -30,12 +30,7 @@ namespace {
 
 using gbssn1d::testing::scratch;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gbssn1d::testing::slurp;
 
 /// Every file below `dir` with its bytes (the folder's fingerprint).
 std::map<std::string, std::string> contents(const fs::path& dir) {

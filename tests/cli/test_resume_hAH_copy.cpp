@@ -22,12 +22,7 @@ namespace {
 
 using gbssn1d::testing::scratch;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gbssn1d::testing::slurp;
 
 struct Result {
   int status;

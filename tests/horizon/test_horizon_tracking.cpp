@@ -24,12 +24,7 @@ struct Result {
   std::string err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gbssn1d::testing::slurp;
 
 Result run(const std::string& args) {
   const fs::path err = scratch("tracking_stderr");

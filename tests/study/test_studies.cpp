@@ -50,12 +50,7 @@ bool completed(int status) {
 }
 
 /// The text of a file.
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gbssn1d::testing::slurp;
 
 /// The data rows of a summary.dat, as text (its status and reason columns are words).
 std::vector<std::string> summary_rows(const fs::path& file) {

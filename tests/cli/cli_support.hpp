@@ -1,0 +1,68 @@
+// Helpers of the command-line tests: the real executable run with arguments, and what a refusal
+// must look like.
+#pragma once
+
+#include "../test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+namespace gbssn1d::testing {
+
+/// What a run of the executable left: its exit status, stderr and stdout.
+struct Result {
+  int status;
+  std::string err, out;
+};
+
+/// The executable run with `args` (a shell command line after the program's name).
+inline Result run(const std::string& args) {
+  const std::filesystem::path err = scratch("stderr"), out = scratch("stdout");
+  const std::string cmd =
+      std::string(GBSSN1D_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int raw = std::system(cmd.c_str());
+  Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err), slurp(out)};
+  std::filesystem::remove(err);
+  std::filesystem::remove(out);
+  return r;
+}
+
+inline int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s)
+    n += c == '\n';
+  return n;
+}
+
+/// A refused run: non-zero exit, one line on stderr that names `flag`, no output directory.
+inline void check_refused(const std::string& args, const std::string& flag) {
+  const std::filesystem::path out = scratch("out");
+  const std::string tmax = args.find("--tmax") == std::string::npos ? "--tmax 0 " : "";
+  const Result r = run("evolve " + tmax + "--out " + out.string() + " " + args);
+  INFO("args: " << args << "\nstderr: " << r.err);
+  if (flag != "more than once")
+    CHECK(r.err.find("more than once") == std::string::npos); // refused for its own reason
+  CHECK(r.status != 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find(flag) != std::string::npos);
+  CHECK(r.err.find("error") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+}
+
+/// The file without its `out = ...` header line (the directory's own name).
+inline std::string without_out(const std::filesystem::path& file) {
+  std::istringstream in(slurp(file));
+  std::string kept;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("# out = ", 0) != 0 && line.rfind("out = ", 0) != 0)
+      kept += line + "\n";
+  return kept;
+}
+
+} // namespace gbssn1d::testing

@@ -1,0 +1,285 @@
+// resume: a run continued from its checkpoint is the uninterrupted run, and whatever was done to
+// its folder since (a corrupt, patched, foreign or legacy checkpoint, a missing or linked file)
+// is refused before anything changes.
+#include "cli_support.hpp"
+#include "config/config_file.hpp"
+#include "config/folder_lock.hpp"
+#include "config/params.hpp"
+
+#include <fmt/format.h>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace gbssn1d::testing;
+
+namespace {
+using gbssn1d::ParamError;
+using gbssn1d::read_config_text;
+using gbssn1d::toml_string;
+} // namespace
+
+TEST_CASE("resume with --rah-hAH-file continues with the copy the run took at its start, "
+          "whatever the flag's path names now") {
+  const fs::path whole = scratch("hAH_whole"), parts = scratch("hAH_parts");
+  const fs::path file = scratch("hAH_file.dat"), other = scratch("hAH_other.dat");
+  auto write = [](const fs::path& f, double slope) {
+    std::ofstream out(f);
+    out << "# t r_ah\n";
+    for (int k = 0; k <= 24; ++k)
+      out << 0.5 * k << " " << 0.8304 + slope * 0.5 * k << "\n";
+  };
+  write(file, 0.002);
+  write(other, 0.002); // the uninterrupted run's input: the same content, another file
+  const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 200 --rmax 50 --rahA 0.5 "
+                            "--rah0 0.89 --dt-series 0.5 --dt-profiles 5 --checkpoint-every 2 "
+                            "--rah-hAH-file ";
+  REQUIRE(run(flags + other.string() + " --tmax 10 --out " + whole.string()).status == 0);
+  REQUIRE(run(flags + file.string() + " --tmax 5 --out " + parts.string()).status == 0);
+  CHECK(slurp(parts / "rah-hAH-file.dat") == slurp(file)); // the run's own copy
+  write(file, 0.02); // the file is edited after the run started
+  const Result r = run("resume " + parts.string() + " --tmax 10");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("note: --rah-hAH-file") != std::string::npos);
+  // continued with the content it started with: the same numbers as the uninterrupted run
+  for (const char* f : {"timeseries.dat", "horizon.dat"}) {
+    auto data = [](const std::string& text) {
+      std::string rows;
+      std::istringstream in(text);
+      for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#')
+          rows += line + "\n";
+      return rows;
+    };
+    CHECK(data(slurp(whole / f)) == data(slurp(parts / f)));
+  }
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  fs::remove(file);
+  fs::remove(other);
+}
+
+TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an uninterrupted one") {
+  const fs::path whole = scratch("whole"), parts = scratch("parts");
+  // substage searches, held searches every 4 steps, and the midstep-update variant (whose
+  // searches are timed by the RHS-evaluation counter the checkpoint carries)
+  for (const std::string mode :
+       {"--ah-every substage", "--ah-every 4", "--ah-every 2 --rah-variant midstep-update"}) {
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+    const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 400 --rmax 50 --rahA "
+                              "0.5 --rah0 0.6 --dt-series 0.3 --dt-profiles 2.5 "
+                              "--checkpoint-every 3 "
+                              + mode;
+    REQUIRE(run(flags + " --tmax 20 --out " + whole.string()).status == 0);
+    REQUIRE(run(flags + " --tmax 10 --out " + parts.string()).status == 0);
+    // a kill mid-write: a cut line after the checkpoint and a stale temporary checkpoint
+    std::ofstream(parts / "profiles.dat", std::ios::app) << "1.25 3.5e-0";
+    std::ofstream(parts / "checkpoint.bin.tmp") << "garbage";
+    // checkpoints are replaced by renaming a complete new file over the old one, never
+    // rewritten in place: a hard link to the old one keeps the old bytes
+    const std::string old_checkpoint = slurp(parts / "checkpoint.bin");
+    fs::create_hard_link(parts / "checkpoint.bin", parts / "old_checkpoint.bin");
+    const Result r = run("resume " + parts.string() + " --tmax 20");
+    INFO(mode << ": " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("resuming") != std::string::npos);
+    for (const char* f : {"timeseries.dat", "profiles.dat", "horizon.dat", "config.toml"})
+      CHECK(without_out(whole / f) == without_out(parts / f));
+    CHECK(slurp(parts / "old_checkpoint.bin") == old_checkpoint);
+    CHECK(slurp(parts / "checkpoint.bin") != old_checkpoint);
+    fs::remove(parts / "old_checkpoint.bin");
+  }
+  // a checkpoint of another configuration, a missing one, and --tmax before it are refused
+  const Result before = run("resume " + parts.string() + " --tmax 1");
+  CHECK(before.status == 2);
+  CHECK(before.err.find("--tmax") != std::string::npos);
+  fs::remove(parts / "checkpoint.bin");
+  const Result missing = run("resume " + parts.string());
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find("checkpoint") != std::string::npos);
+  fs::copy_file(whole / "checkpoint.bin", parts / "checkpoint.bin");
+  std::ofstream(parts / "config.toml", std::ios::app) << "N = 200\n";
+  CHECK(run("resume " + parts.string()).status == 2);
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+}
+
+// RK4 is stable for d_t B = -eta B only while eta dt stays inside its real stability interval
+// (-2.785..., 0]: at eta dt = 2.8 the amplification 1 - z + z^2/2 - z^3/6 + z^4/24 exceeds 1.
+
+namespace {
+
+/// Every file of a folder with its bytes.
+std::map<std::string, std::string> folder(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file())
+      files[e.path().filename().string()] = slurp(e.path());
+  return files;
+}
+
+/// FNV-1a 64 (the checkpoint's checksum), written here from its definition.
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes)
+    h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+/// The checkpoint `bytes` with `value` written at `offset` and its checksum made valid again:
+/// a counter changed consistently, which only the checks against the run can catch.
+std::string patched(std::string bytes, std::size_t offset, const void* value, std::size_t n) {
+  std::memcpy(bytes.data() + offset, value, n);
+  bytes.resize(bytes.size() - 8);
+  const std::uint64_t h = fnv1a64(bytes);
+  bytes.append(reinterpret_cast<const char*>(&h), 8);
+  return bytes;
+}
+
+} // namespace
+
+TEST_CASE("a boxes run recorded before --box-taper existed resumes without the taper it never "
+          "had, and today's default is another configuration") {
+  const fs::path whole = scratch("whole"), parts = scratch("parts");
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  const std::string flags = "evolve --grid boxes --levels 6 --rmax 64 --N 24 --box-taper 0 "
+                            "--dt-series 0.5 --dt-profiles 5 --checkpoint-every 2";
+  REQUIRE(run(flags + " --tmax 6 --out " + whole.string()).status == 0);
+  REQUIRE(run(flags + " --tmax 4 --out " + parts.string()).status == 0);
+  // the folder's config.toml as a version without the key wrote it (a key absent from a
+  // recorded configuration means what runs did before it existed: box-taper = 0)
+  std::string config = slurp(parts / "config.toml");
+  const auto at = config.find("box-taper = 0\n");
+  REQUIRE(at != std::string::npos);
+  config.erase(at, std::string("box-taper = 0\n").size());
+  std::ofstream(parts / "config.toml", std::ios::trunc) << config;
+  const Result r = run("resume " + parts.string() + " --tmax 6");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(without_out(whole / "timeseries.dat") == without_out(parts / "timeseries.dat"));
+  CHECK(without_out(whole / "profiles.dat") == without_out(parts / "profiles.dat"));
+  // the comparisons of checkpoints, converge studies and sweep members read it the same way
+  const std::string old_text = config;
+  std::string today = old_text;
+  today.insert(at, "box-taper = 0.5\n");
+  const auto diff = gbssn1d::config_differences(old_text, today, {});
+  REQUIRE(diff.size() == 1);
+  CHECK(diff.front() == "box-taper: 0 -> 0.5");
+  today.replace(at, std::string("box-taper = 0.5\n").size(), "box-taper = 0\n");
+  CHECK(gbssn1d::config_differences(old_text, today, {}).empty());
+  CHECK(gbssn1d::absent_key_args(old_text) == std::vector<std::string>{"--box-taper=0"});
+  CHECK(gbssn1d::absent_key_args(today).empty());
+}
+
+TEST_CASE("resume checks the checkpoint and every file before it changes any: corrupt, patched, "
+          "foreign or incomplete input is refused and the run is left byte for byte") {
+  const fs::path dir = scratch("resume_checks");
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --N 64 --rmax 20 --tmax 4 "
+              "--checkpoint-every 1 --out "
+              + dir.string())
+              .status
+          == 0);
+  const auto finished = folder(dir);
+  const std::string good = finished.at("checkpoint.bin");
+  // a completed run is complete: nothing to do, nothing touched
+  const Result complete = run("resume " + dir.string());
+  CHECK(complete.status == 0);
+  CHECK(complete.err.find("complete at t = 4") != std::string::npos);
+  CHECK(folder(dir) == finished);
+  CHECK(run("resume " + dir.string() + " --tmax 3.5").status == 0);
+  CHECK(folder(dir) == finished);
+  // a killed run (no end line) resumed to a --tmax before its last output would lose the
+  // output after it: refused
+  {
+    std::string series = finished.at("timeseries.dat");
+    series = series.substr(0, series.rfind("# end:"));
+    std::ofstream(dir / "timeseries.dat", std::ios::trunc) << series;
+  }
+  const auto killed = folder(dir);
+  const Result cut = run("resume " + dir.string() + " --tmax 3.5");
+  CHECK(cut.status == 2);
+  CHECK(cut.err.find("--tmax") != std::string::npos);
+  CHECK(folder(dir) == killed);
+
+  // offsets of the fields after the magic line and the configuration text
+  const std::string magic = "gbssn1d checkpoint 3\n";
+  REQUIRE(good.rfind(magic, 0) == 0);
+  std::uint64_t n_config = 0;
+  std::memcpy(&n_config, good.data() + magic.size(), 8);
+  const std::size_t step_at = magic.size() + 8 + n_config, t_at = step_at + 8;
+  const std::size_t evaluations_at = t_at + 8 + 8 + 8 + 8 + 1 + 8 + 1 + 1;
+  const std::size_t count_at = evaluations_at + 8 + 6 * 8;
+  std::string flipped = good;
+  for (std::size_t k = 0; k < 4; ++k) // 4 bytes inside the state
+    flipped[count_at + 8 + 800 + k] ^= 0x5a;
+  const double t_patched = 2.5;
+  const std::int64_t step_patched = 3;
+  const std::uint64_t evaluations_patched = 0, count_patched = std::uint64_t{1} << 60;
+  std::string old_format = good;
+  old_format[magic.size() - 2] = '1';
+  const std::pair<const char*, std::string> bad[] = {
+      {"checksum", flipped},
+      {"time", patched(good, t_at, &t_patched, 8)},
+      {"step", patched(good, step_at, &step_patched, 8)},
+      {"RHS count", patched(good, evaluations_at, &evaluations_patched, 8)},
+      {"value count", patched(good, count_at, &count_patched, 8)},
+      {"another checkpoint format", old_format},
+      {"truncated", good.substr(0, magic.size() + 4)},
+  };
+  for (const auto& [why, bytes] : bad) {
+    std::ofstream(dir / "checkpoint.bin", std::ios::binary | std::ios::trunc) << bytes;
+    const auto before = folder(dir);
+    const Result r = run("resume " + dir.string() + " --tmax 6");
+    INFO(why << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("DIR") != std::string::npos);
+    CHECK(r.err.find("std::") == std::string::npos);
+    CHECK(folder(dir) == before);
+  }
+  // a missing output file: refused before timeseries.dat is cut back
+  std::ofstream(dir / "checkpoint.bin", std::ios::binary | std::ios::trunc) << good;
+  fs::rename(dir / "profiles.dat", dir / "profiles.moved");
+  const auto before = folder(dir);
+  const Result missing = run("resume " + dir.string() + " --tmax 6");
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find("profiles.dat") != std::string::npos);
+  CHECK(folder(dir) == before);
+  fs::rename(dir / "profiles.moved", dir / "profiles.dat");
+  // and with everything in place the run continues
+  CHECK(run("resume " + dir.string() + " --tmax 6").status == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("resume: a run's file that is a loop of symbolic links is refused, naming DIR") {
+  const fs::path out = scratch("resume_loop");
+  REQUIRE(run("evolve --N 64 --tmax 1 --checkpoint-every 0.5 --out " + out.string()).status == 0);
+  for (const char* name : {"checkpoint.bin", "config.toml"}) {
+    const fs::path keep = scratch("resume_loop_keep");
+    fs::rename(out / name, keep);
+    fs::create_symlink(name, out / name); // points at itself
+    const Result r = run("resume " + out.string() + " --tmax 2");
+    INFO(name << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("DIR = ") != std::string::npos);
+    CHECK(r.err.find(std::string("its ") + name + " cannot be read") != std::string::npos);
+    fs::remove(out / name);
+    fs::rename(keep, out / name);
+  }
+  fs::remove_all(out);
+}
