@@ -45,8 +45,8 @@ export ASAN_OPTIONS="log_path=$logs/asan:exitcode=86:detect_leaks=1:strict_strin
 export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1:exitcode=86"
 status=0
 # ctest's -j balances the cases over the cores. Without --full: the doctest cases (-LE script)
-# but the slowest under the sanitizers (39-650 s each; about 1800 of the 1970 s that all cases
-# take on 2 cores): convergence studies at several resolutions and study drivers whose code the faster
+# but the slowest under the sanitizers (17-650 s each; the rest took 278 s on 2 idle cores in
+# CI on 2026-11-27, before the last five below joined the list): convergence studies at several resolutions and study drivers whose code the faster
 # cases run too (the same RHS, transfer and time-interpolation kernels, converge's and sweep's
 # member handling, emitted task lines, signals), the resumed progress line's speed (300 s:
 # two runs long enough to show a terminal's progress; the resume it exercises runs elsewhere),
@@ -57,7 +57,11 @@ status=0
 # (the wormhole settling onto the trumpet, B's driver stencils compared, the trumpet on four
 # boxes, M_AH and r_AH of the trumpet, the held h_AH with quadratic time interpolation): the
 # RHS, the finder, the boxes' transfer and time interpolation, and the held h_AH's tracker mode
-# all run in faster cases, and the physics these five check is checked in the tests stage.
+# all run in faster cases, and the physics these five check is checked in the tests stage; and
+# (measured at 17-79 s under the sanitizers) the sweep's periodic progress lines (waiting for
+# members long enough to print them; the [k/n] lines run in every sweep case), the converge study
+# at the round-off floor (its verdict classes run as unit cases), the dense-output gauge pulse,
+# the horizon moving both ways and the trumpet on five boxes (kernels the faster cases run).
 slow=(
   "a resumed run's progress line counts its speed from the resume"
   "a stretched horizon (0.89 M) converges at coarse spacing"
@@ -77,6 +81,11 @@ slow=(
   "the 1+log trumpet on four boxes stays stationary at 4th order"
   "during a 1+log trumpet evolution M_AH and r_AH stay where the data put them"
   "a held h_AH with quadratic time interpolation loses convergence under refinement"
+  "sweep: progress lines while members run, k of n as they finish, resumed counts"
+  "converge: a member at the round-off floor converges until the floor"
+  "gauge pulse, RK4 dense output at the stage times"
+  "the horizon moves outward in r when h > h_AH and inward when h < h_AH"
+  "the 1+log trumpet on five boxes converges at 4th order through refinement boundaries"
 )
 for name in "${slow[@]}"; do # a renamed case would otherwise run unnoticed: say so
   pattern=$(sed 's/[][\\.^$*+?(){}|]/\\&/g' <<<"$name")
