@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # The demonstration: installs what is missing (Debian packages), builds, runs a precollapsed
 # wormhole until it has become the stationary 1+log trumpet, evolves the trumpet itself at
-# three resolutions, and draws the figures into demo/. After the build, about 10 s on 2 cores.
+# three resolutions, and draws the figures into demo/. After the build, 11 s on 2 idle cores
+# (32 s on 2 cores busy with other work; measured on a fresh clone, 2026-11-27).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 echo "== set-up: Debian packages that are missing (apt-get), then a Release build in build/"
 bash .ci/install-deps
-echo "== build of the program: the first takes about a minute on 2 idle cores (2-3 on busy"
-echo "   ones), later ones seconds; cmake's progress below, and a line every 20 s while it works"
+echo "== build of the program: the first took 103 s on 2 idle cores (a fresh clone, no compiler"
+echo "   cache) and 570 s on 2 cores busy with other work; later ones take seconds; cmake's"
+echo "   progress below, and a line every 20 s while it works"
 start=$SECONDS
 (while sleep 20; do echo "   ... building, $((SECONDS - start)) s"; done) &
 ticker=$!
