@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,16 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+/// Every regular file below `dir` with its bytes, by path relative to `dir` (a folder's
+/// fingerprint: two equal maps, nothing written or changed).
+inline std::map<std::string, std::string> contents(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.is_regular_file())
+      files[std::filesystem::relative(e.path(), dir).string()] = slurp(e.path());
+  return files;
 }
 
 /// A table with its columns by name.

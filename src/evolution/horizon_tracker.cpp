@@ -6,7 +6,7 @@ namespace gbssn1d {
 
 namespace {
 
-using Schedule = HorizonSearchSettings::Schedule;
+using SearchSchedule = HorizonSearchSettings::Schedule;
 
 HorizonTracker::Mode decide_mode(const EvolutionConfig& config, const mesh::MeshLayout& layout) {
   using Mode = HorizonTracker::Mode;
@@ -17,7 +17,7 @@ HorizonTracker::Mode decide_mode(const EvolutionConfig& config, const mesh::Mesh
     return Mode::prescribed;
   if (config.horizon_search.every_steps > 0)
     return Mode::held;
-  if (layout.levels() > 1 && config.horizon_search.schedule != Schedule::box_substage)
+  if (layout.levels() > 1 && config.horizon_search.schedule != SearchSchedule::box_substage)
     return Mode::extrapolated;
   return Mode::substage;
 }
@@ -53,7 +53,7 @@ std::optional<double> HorizonTracker::at_evaluation(std::size_t level, const Sta
     return s.in_window(t) ? locate(level, u, grid, seed, t) : held;
   case Mode::held:
     // midstep-update: the 2nd RK substage (evaluation 4k + 1) of every n-th step
-    if (s.schedule == Schedule::midstep_update
+    if (s.schedule == SearchSchedule::midstep_update
         && evaluation % static_cast<std::uint64_t>(4 * s.every_steps) == 1 && s.in_window(t))
       return locate(level, u, grid, seed, t);
     return held;
@@ -129,7 +129,8 @@ void HorizonTracker::search_at_step(double t) {
 
 void HorizonTracker::update_held(double t) {
   if (mode_ != Mode::held || !config_.horizon_search.in_window(t)
-      || config_.horizon_search.schedule == Schedule::midstep_update) // searched inside the RHS
+      || config_.horizon_search.schedule
+             == SearchSchedule::midstep_update) // searched inside the RHS
     return;
   const std::size_t l = level();
   const auto found = search(l, rhs_[l].horizon_radius().value_or(config_.rhs.horizon_shift.h), t);
@@ -145,7 +146,7 @@ void HorizonTracker::update_held(double t) {
 void HorizonTracker::start(double t) {
   update_held(t);
   search_at_step(t);
-  if (layout_.levels() > 1 && config_.horizon_search.schedule == Schedule::box_substage) {
+  if (layout_.levels() > 1 && config_.horizon_search.schedule == SearchSchedule::box_substage) {
     // every box starts from the radius found on the box holding the horizon
     const auto found = search(level(), config_.rhs.horizon_shift.h, t);
     shared_ = found ? std::optional<double>(found->r) : std::nullopt;

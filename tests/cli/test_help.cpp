@@ -1,6 +1,6 @@
 // What the top-level help and the resume message print: a help page that ends in a sentence, and
 // times as the decimals they stand for.
-#include "../test_support.hpp"
+#include "cli_support.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,23 +19,9 @@ namespace {
 
 using gbssn1d::testing::scratch;
 
-struct Run {
-  int status;
-  std::string out, err;
-};
-
+using gbssn1d::testing::Result;
+using gbssn1d::testing::run;
 using gbssn1d::testing::slurp;
-
-Run run(const std::string& args) {
-  const fs::path out = scratch("help_stdout"), err = scratch("help_stderr");
-  const std::string cmd =
-      std::string(GBSSN1D_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -58,7 +44,7 @@ std::string value_after(const std::string& text, const std::string& key) {
 
 TEST_CASE("gbssn1d --help ends in a sentence that names the subcommands' own help pages, and "
           "announces no list it does not give") {
-  const Run r = run("--help");
+  const Result r = run("--help");
   REQUIRE(r.status == 0);
   const auto lines = lines_of(r.out);
   std::vector<std::string> filled;
@@ -89,11 +75,11 @@ TEST_CASE("resume says the checkpoint's time as the decimal it stands for: t = 0
               + dir.string())
               .status
           == 0);
-  const Run early = run("resume " + dir.string() + " --tmax 0.2");
+  const Result early = run("resume " + dir.string() + " --tmax 0.2");
   INFO(early.err);
   CHECK(early.status == 2);
   CHECK(value_after(early.err, "before the checkpoint at t = ") == "0.3");
-  const Run resumed = run("resume " + dir.string() + " --tmax 0.6");
+  const Result resumed = run("resume " + dir.string() + " --tmax 0.6");
   INFO(resumed.err);
   CHECK(resumed.status == 0);
   CHECK(value_after(resumed.err, "resuming " + dir.string() + " at t = ") == "0.3");

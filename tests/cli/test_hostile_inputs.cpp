@@ -32,14 +32,7 @@ using gbssn1d::testing::scratch;
 
 using gbssn1d::testing::slurp;
 
-/// Every file below `dir` with its bytes (the folder's fingerprint).
-std::map<std::string, std::string> contents(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file())
-      files[fs::relative(e.path(), dir).string()] = slurp(e.path());
-  return files;
-}
+using gbssn1d::testing::contents;
 
 /// Shell-like words: white space separates, '...' quotes (may be empty: ''), \n in a quoted word
 /// is a newline. No expansion of anything else.

@@ -3,7 +3,7 @@
 // or with a copy changed since the run read it (its hash, recorded in the checkpoint, differs:
 // other valid data or unreadable content) the folder is refused as other non-resumable folders
 // are (exit 2, nothing changed), naming the copy, instead of continuing with other data.
-#include "../test_support.hpp"
+#include "cli_support.hpp"
 #include "evolution/checkpoint.hpp"
 
 #include <doctest/doctest.h>
@@ -24,29 +24,9 @@ using gbssn1d::testing::scratch;
 
 using gbssn1d::testing::slurp;
 
-struct Result {
-  int status;
-  std::string err;
-};
-
-Result run(const std::string& args) {
-  const fs::path err = scratch("hAH_copy_stderr");
-  const std::string cmd =
-      std::string(GBSSN1D_EXECUTABLE) + " " + args + " >/dev/null 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err)};
-  fs::remove(err);
-  return r;
-}
-
-/// Every regular file below `dir` with its bytes.
-std::map<std::string, std::string> contents(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file())
-      files[fs::relative(e.path(), dir).string()] = slurp(e.path());
-  return files;
-}
+using gbssn1d::testing::contents;
+using gbssn1d::testing::Result;
+using gbssn1d::testing::run;
 
 void write_history(const fs::path& f, double slope) {
   std::ofstream out(f);

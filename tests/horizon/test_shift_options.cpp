@@ -38,10 +38,6 @@ Params trumpet(int n, double rmax, double tmax) {
   return p;
 }
 
-std::filesystem::path scratch(const std::string& name) {
-  return gbssn1d::testing::scratch(name, true);
-}
-
 } // namespace
 
 TEST_CASE("shift profiles: odd, their stated shapes at the origin, the peak and far away") {
@@ -320,7 +316,7 @@ TEST_CASE("the advection stencil options change exactly the term they name") {
 }
 
 TEST_CASE("--rah-hAH-file: h_AH(t) read from a file and interpolated smoothly (open loop)") {
-  const auto dir = scratch("prescribed");
+  const auto dir = gbssn1d::testing::scratch("prescribed", true);
   const auto path = dir / "horizon.dat";
   {
     std::ofstream f(path);
