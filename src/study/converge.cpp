@@ -1,5 +1,6 @@
 #include "study/converge.hpp"
 
+#include "config/paths.hpp"
 #include "study/converge_records.hpp"
 #include "study/converge_report.hpp"
 
@@ -11,9 +12,7 @@
 #include "config/params.hpp"
 #include "core/registry.hpp"
 #include "evolution/simulation.hpp"
-#include "grid/interpolation.hpp"
 #include "io/output.hpp"
-#include "study/orders.hpp"
 #include "study/parallel.hpp"
 #include "study/verdict.hpp"
 
@@ -80,6 +79,22 @@ std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const 
   return from;
 }
 
+/// One output time of a member: its timeseries row, the fields and H at the study's radii.
+void record_samples(Simulation& s, const std::vector<Var>& fields, const std::vector<double>& radii,
+                    MemberRecord& rec) {
+  const std::vector<DerivedProfiles> levels_d = s.level_profiles();
+  rec.rows.push_back(s.series_row(s.composite_profiles(levels_d)));
+  std::vector<double> samples;
+  for (Var v : fields)
+    for (double r : radii)
+      samples.push_back(s.at_radius(v, r));
+  rec.field_samples.push_back(std::move(samples));
+  std::vector<double> H_samples;
+  for (double r : radii)
+    H_samples.push_back(s.H_at_radius(levels_d, r));
+  rec.H_samples.push_back(std::move(H_samples));
+}
+
 /// Member k run (or continued) into its folder, recording into study.records[k]; a failure is
 /// recorded there, not thrown.
 void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
@@ -104,19 +119,7 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
     const std::string config = config_text(p); // the member's own configuration
     // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
     write_file_atomically(fs::path(p.out) / "config.toml", header_text("") + config);
-    sim.on_series = [&](Simulation& s) {
-      const std::vector<DerivedProfiles> levels_d = s.level_profiles();
-      rec.rows.push_back(s.series_row(s.composite_profiles(levels_d)));
-      std::vector<double> samples;
-      for (Var v : fields)
-        for (double r : radii)
-          samples.push_back(s.at_radius(v, r));
-      rec.field_samples.push_back(std::move(samples));
-      std::vector<double> H_samples;
-      for (double r : radii)
-        H_samples.push_back(s.H_at_radius(levels_d, r));
-      rec.H_samples.push_back(std::move(H_samples));
-    };
+    sim.on_series = [&](Simulation& s) { record_samples(s, fields, radii, rec); };
     sim.checkpoint_config = config;
     sim.label = fmt::format(" converge N={}", p.N);
     const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
