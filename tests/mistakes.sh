@@ -121,6 +121,9 @@ mistakes=(
   "config files: a bare value not ended by a carriage return (CRLF files refused)|src/config/config_reader.cpp|line.find_first_of(\" \t\r#\", k);|line.find_first_of(\" \t#\", k);|a config file with CRLF line ends reads as the same file with LF ones"
   "6-point interpolation one node off centre|src/grid/interpolation.hpp|const std::size_t start = k >= 2 ? k - 2 : 0;|const std::size_t start = k >= 1 ? k - 1 : 0;|6-point interpolation at radius: the error on x^6 is the remainder of the centred six nodes, next to the ends too"
   "resume: a quadratic time level at or after the checkpoint's time accepted|src/evolution/checkpoint.cpp| !(h.t < c.t))| false)|resume refuses a checkpoint whose quadratic time level is not before its time"
+  "--dr-inner called idle on the sinh grid (two runs of other spacings called the same run)|src/config/flag_table.cpp|       Acts::on_sinh},|       Acts::on_boxes},|the same run: a flag the table calls idle changes no number the run writes, and where it acts it changes them and the run key"
+  "--lapse0 said to act on every data set (no idle-flag warning, trumpets with other lapse0 told apart)|src/config/flag_table.cpp| precollapsed\", Acts::with_wormhole},| precollapsed\"},|the same run: a flag the table calls idle changes no number the run writes, and where it acts it changes them and the run key"
+  "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs

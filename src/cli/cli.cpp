@@ -1,16 +1,15 @@
 #include "cli/cli.hpp"
 
+#include "core/text.hpp"
 #include "study/verdict.hpp"
 
 #include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
-#include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/console.hpp"
 #include "core/registry.hpp"
 #include "core/stop_signal.hpp"
-#include "evolution/simulation.hpp"
 #include "study/converge.hpp"
 #include "study/sweep.hpp"
 

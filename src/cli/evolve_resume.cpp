@@ -2,16 +2,15 @@
 
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
-#include "config/numbers.hpp"
 #include "config/params.hpp"
+#include "config/paths.hpp"
 #include "core/console.hpp"
 #include "core/registry.hpp"
 #include "core/stop_signal.hpp"
+#include "core/text.hpp"
 #include "evolution/checkpoint.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
-#include "study/converge.hpp"
-#include "study/sweep.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -49,7 +48,7 @@ const char* const prescribed_horizon_copy = "rah-hAH-file.dat";
 
 /// The bytes of --rah-hAH-file when it is in use (rahA != 0), nothing otherwise.
 std::optional<std::string> prescribed_horizon_content(const Params& p) {
-  if (p.rah_hAH_file.empty() || p.rahA == 0.0)
+  if (!uses_hAH_file(p))
     return std::nullopt;
   std::ifstream in(p.rah_hAH_file, std::ios::binary);
   std::ostringstream text;
@@ -236,7 +235,7 @@ KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_n
   namespace fs = std::filesystem;
   KeptHorizonFile run{p, ""};
   Params& run_params = run.params;
-  if (p.rah_hAH_file.empty() || p.rahA == 0.0)
+  if (!uses_hAH_file(p))
     return run;
   const fs::path copy = fs::path(dir_name) / prescribed_horizon_copy;
   const auto refuse = [&](const std::string& why) {

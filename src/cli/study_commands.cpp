@@ -3,12 +3,11 @@
 #include "config/config_file.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
+#include "config/paths.hpp"
 #include "core/console.hpp"
 #include "core/registry.hpp"
-#include "core/stop_signal.hpp"
-#include "evolution/simulation.hpp"
+#include "core/text.hpp"
 #include "study/converge.hpp"
-#include "study/sweep.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>

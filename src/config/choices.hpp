@@ -6,7 +6,7 @@
 
 #include "gbssn/horizon_shift_params.hpp"
 #include "gbssn/rhs_params.hpp"
-#include "initial_data/initial_data.hpp"
+#include "initial_data/initial_data_params.hpp"
 #include "mesh/time_interpolation_kind.hpp"
 
 #include <initializer_list>

@@ -2,6 +2,8 @@
 // the `key = value` lines of a file (declared in config/config_file.hpp).
 #include "config/config_file.hpp"
 
+#include "core/text.hpp"
+
 #include <fmt/format.h>
 
 #include <charconv>

@@ -1,6 +1,7 @@
 #include "config/folder_lock.hpp"
 
 #include "config/params.hpp"
+#include "config/paths.hpp"
 
 #include <fmt/format.h>
 

@@ -4,6 +4,7 @@
 
 #include "config/params.hpp"
 #include "core/decimal.hpp"
+#include "core/text.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "config/params.hpp"
 
-#include "config/numbers.hpp"
 #include "config/param_rules.hpp"
+#include "core/text.hpp"
 #include "evolution/levels.hpp"
 #include "io/horizon_file.hpp"
 
@@ -90,7 +90,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
   c.horizon_search.finder.tolerance = p.ah_tol;
-  if (!p.rah_hAH_file.empty() && p.rahA != 0.0)
+  if (uses_hAH_file(p))
     c.horizon_search.prescribed = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
   return c;
 }

@@ -1,11 +1,10 @@
 #include "config/params.hpp"
 
-#include "config/numbers.hpp"
 #include "config/param_rules.hpp"
+#include "config/same_run.hpp"
 
 #include <fmt/format.h>
 
-#include "evolution/levels.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,13 +24,13 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.N > 0) {
     const double finest_extent = std::ldexp(p.rmax, -(*p.levels - 1));
     const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
-    const double horizon = std::max(standard_horizon_radius * p.M, p.rahA != 0.0 ? p.rah0 : 0.0);
+    const double horizon = std::max(standard_horizon_radius * p.M, shift_on(p) ? p.rah0 : 0.0);
     if (horizon > trusted)
       w.push_back(fmt::format(
           "the horizon (r ~ {} M{}) lies outside the finest box's inner part (r <= {:.4g} M of "
           "its {:.4g} M with --N {}): it will be found on a coarser box; use fewer --levels or "
           "a larger --N",
-          num(horizon), p.rahA != 0.0 ? ", --rah0" : "", trusted, finest_extent, p.N));
+          num(horizon), shift_on(p) ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
   // Quadratic time interpolation loses its order at the default step (Sec. 11: six boxes,
   // h = 2 M, orders 0.12, 1.03 at cfl 0.5 against 1.4 or more at 0.25)
@@ -48,7 +47,7 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // to 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the
   // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
-      && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && p.rahA != 0.0
+      && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && shift_on(p)
       && p.ah_every != SearchEvery::substage)
     w.push_back(fmt::format(
         "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
@@ -81,36 +80,11 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   }
 }
 
-/// The horizon-shift flags given with --rahA 0.
-void idle_shift_flag_warnings(const Params& p, std::vector<std::string>& w) {
-  // The horizon-shift flags act only with a strength: given with --rahA 0 they change nothing,
-  // which a user who forgot --rahA would not otherwise learn.
-  if (p.rahA == 0.0) {
-    const Params d;
-    std::vector<std::string> idle;
-    if (p.rah0 != d.rah0)
-      idle.push_back("--rah0 " + num(p.rah0));
-    if (p.rah_profile != d.rah_profile)
-      idle.push_back("--rah-profile " + p.rah_profile.name());
-    if (p.rah_width != d.rah_width)
-      idle.push_back("--rah-width " + num(p.rah_width));
-    if (p.rah_rcut)
-      idle.push_back("--rah-rcut " + num(*p.rah_rcut));
-    if (p.rah_taper)
-      idle.push_back("--rah-taper " + p.rah_taper->name());
-    if (p.rah_ramp != d.rah_ramp)
-      idle.push_back("--rah-ramp " + num(p.rah_ramp));
-    if (p.rah_normal != d.rah_normal)
-      idle.push_back("--rah-normal " + p.rah_normal.name());
-    if (!p.rah_hAH_file.empty())
-      idle.push_back("--rah-hAH-file " + p.rah_hAH_file);
-    if (p.rah_variant != d.rah_variant)
-      idle.push_back("--rah-variant " + p.rah_variant.name());
-    if (!idle.empty())
-      w.push_back(fmt::format("{} {} nothing with --rahA 0: the horizon-adjusting shift is off "
-                              "(give --rahA A, e.g. 0.5, to move the horizon)",
-                              fmt::join(idle, ", "), idle.size() == 1 ? "does" : "do"));
-  }
+/// Flags given where they do nothing (each flag's table entry says where it acts): a user who
+/// forgot --rahA, or gave --dr-inner to a uniform grid, would not otherwise learn it.
+void idle_flag_warnings(const Params& p, std::vector<std::string>& w) {
+  for (const auto& idle : idle_flags(p))
+    w.push_back(idle.warning());
 }
 
 /// The radial spacing at r = M: where the horizon and the puncture's throat are resolved.
@@ -139,7 +113,7 @@ void upwind_warnings(const Params& p, std::vector<std::string>& w) {
         "times the default lopsided stencil's H on the 1+log trumpet at M/8, where it is 1.5-8 "
         "times better from M/12 on (docs/horizon-shift-study.md, Sec. 7.4)",
         dr / p.M));
-  if (p.rahA != 0.0 && p.rah0 < standard_horizon_radius * p.M)
+  if (shift_on(p) && p.rah0 < standard_horizon_radius * p.M)
     w.push_back(fmt::format(
         "--upwind biased with a shrink (--rah0 {} < {} M): it measured 1.5 times the default "
         "lopsided stencil's H on a shrink to 0.6 M at M/8 to M/16 (docs/horizon-shift-study.md, "
@@ -199,7 +173,7 @@ std::vector<std::string> warnings(const Params& p) {
         std::ceil(window + speed * p.tmax)));
   box_warnings(p, w);
   upwind_warnings(p, w);
-  idle_shift_flag_warnings(p, w);
+  idle_flag_warnings(p, w);
   output_size_warning(p, w);
   return w;
 }

@@ -1,7 +1,6 @@
 #include "config/params.hpp"
 
-#include "config/numbers.hpp"
-#include "config/param_rules.hpp"
+#include "core/decimal.hpp"
 
 #include <fmt/format.h>
 
@@ -48,7 +47,7 @@ void resolve_defaults(Params& p) {
     p.box_taper = p.grid == RadialGrid::boxes ? 0.5 : 0.0;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
-  if (p.rahA != 0.0) {
+  if (shift_on(p)) {
     if (!p.rah_rcut)
       p.rah_rcut = 0.5 * p.rmax;
     if (!p.rah_taper)

@@ -2,7 +2,6 @@
 #pragma once
 
 #include "config/choices.hpp"
-#include "core/text.hpp"
 #include "evolution/evolution_config.hpp"
 
 #include <filesystem>
@@ -40,7 +39,9 @@ struct Params {
   /// unset: 0.5 on boxes, 0 on a single grid (resolve_defaults; docs/horizon-shift-study.md
   /// Sec. 6.6)
   std::optional<double> box_taper;
-  double box_taper_from = 16.0; ///< boxes: only boxes reaching beyond this radius / M are tapered
+  /// boxes: only boxes reaching beyond this radius / M are tapered
+  double box_taper_from =
+      evolution_defaults().stepping.taper_min_extent / evolution_defaults().initial_data.M;
   /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
   double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data
@@ -133,6 +134,17 @@ private:
   std::string flag_;
 };
 
+/// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.
+inline bool shift_on(const Params& p) {
+  return p.rahA != 0.0;
+}
+
+/// h_AH(t) comes from --rah-hAH-file (open loop, no searches steer beta_H): the shift is on and
+/// a file is named.
+inline bool uses_hAH_file(const Params& p) {
+  return shift_on(p) && !p.rah_hAH_file.empty();
+}
+
 /// A horizon shift that shrinks the horizon of wormhole data (rahA != 0, rah0 below the
 /// standard 0.8304 M): with eta = 2/M the Gamma-driver does not settle on wormhole data and such
 /// runs go non-finite after 100-200 M; eta = 1/M holds them (docs/horizon-shift-study.md,
@@ -152,25 +164,6 @@ void validate(const Params& p);
 
 /// Valid but known-bad combinations, each a sentence for stderr (the run goes ahead).
 std::vector<std::string> warnings(const Params& p);
-
-/// Throws ParamError if --out cannot be used (exists and is not an empty directory, unless
-/// --force; not writable; a path the file system cannot take). Creates nothing.
-void validate_output_dir(const Params& p);
-/// Whether a folder holds nothing but (perhaps) its lock file (config/folder_lock.hpp).
-bool folder_is_empty(const std::filesystem::path& dir);
-
-/// Refuses (ParamError naming `flag`) a path the file system cannot take: a name in it longer
-/// than 255 bytes or the whole longer than 4095, a loop of symbolic links, a part that is not a
-/// folder, a folder it cannot search. A path that does not exist yet is fine.
-void check_path(const std::string& flag, const std::filesystem::path& path);
-
-/// check_path(), and the path names a regular file that can be read: not missing, not a
-/// folder, a FIFO or a device.
-void check_input_file(const std::string& flag, const std::filesystem::path& path);
-
-/// create_directories(dir), or ParamError naming `flag` and the reason (no filesystem_error
-/// text leaks out).
-void create_output_dir(const std::string& flag, const std::filesystem::path& dir);
 
 // Conversions of the validated (and resolved) parameters into the typed pieces the code uses.
 /// The evolution's configuration; may read --rah-hAH-file (ParamError if it cannot).

@@ -7,6 +7,8 @@
 // conditions and output columns are all driven from this table.
 #pragma once
 
+#include "core/wave.hpp"
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -17,13 +19,6 @@ namespace gbssn1d {
 enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r };
 
 inline constexpr std::size_t n_vars = 9;
-
-/// The characteristic family whose outgoing mode a variable carries at the outer boundary.
-enum class Wave {
-  light,   ///< speed 1
-  slicing, ///< the lapse's gauge mode: sqrt(mu_L), sqrt(2) for 1+log
-  shift,   ///< the Gamma-driver's longitudinal mode: sqrt(4 xi / 3), 1 for xi = 3/4
-};
 
 struct VarInfo {
   Var var;

@@ -6,9 +6,9 @@
 
 #include "gbssn/rhs_params.hpp"
 #include "grid/grid.hpp"
-#include "horizon/apparent_horizon.hpp"
-#include "initial_data/initial_data.hpp"
-#include "mesh/hierarchy.hpp"
+#include "horizon/horizon_finder_params.hpp"
+#include "initial_data/initial_data_params.hpp"
+#include "mesh/stepper_options.hpp"
 
 #include <functional>
 #include <limits>
@@ -59,8 +59,9 @@ struct EvolutionConfig {
   RefinementSettings refinement;
   /// How the levels step (RK4 at dt = cfl x their spacing; on boxes also the time interpolation
   /// at fine boundaries, subcycling and the largest step); cfl 0.5 (docs/horizon-shift-study.md
-  /// Sec. 11).
-  mesh::StepperOptions stepping{.cfl = 0.5};
+  /// Sec. 11); a tapered buffer (where one is asked for) only on boxes reaching beyond 16 M
+  /// (Sec. 6.6).
+  mesh::StepperOptions stepping{.cfl = 0.5, .taper_min_extent = 16.0};
   InitialDataParams initial_data;
   RhsParams rhs;           ///< equations, gauge, dissipation, horizon shift
   double chi_floor = 1e-5; ///< chi is raised to at least this after every RK4 step (0: off)

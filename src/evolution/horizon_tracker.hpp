@@ -19,7 +19,7 @@
 #include "evolution/evolution_config.hpp"
 #include "gbssn/rhs.hpp"
 #include "horizon/apparent_horizon.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/layout.hpp"
 
 #include <array>
 #include <optional>

@@ -11,7 +11,6 @@
 #include "horizon/apparent_horizon.hpp"
 #include "io/output.hpp"
 #include "mesh/composite.hpp"
-#include "mesh/hierarchy.hpp"
 
 #include <optional>
 #include <stdexcept>

@@ -6,7 +6,7 @@
 
 #include "evolution/evolution_config.hpp"
 #include "gbssn/state.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/layout.hpp"
 
 #include <array>
 #include <optional>

@@ -4,7 +4,6 @@
 
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
-#include "grid/interpolation.hpp"
 
 #include <fmt/format.h>
 

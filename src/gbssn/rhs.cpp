@@ -1,5 +1,6 @@
 #include "gbssn/rhs.hpp"
 
+#include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs_loop.hpp"
 
 #include <algorithm>

@@ -6,8 +6,6 @@
 
 #include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
-#include "gbssn/gauge.hpp"
-#include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs.hpp"
 
 #include <algorithm>

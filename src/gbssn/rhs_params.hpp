@@ -4,7 +4,7 @@
 // point-wise equations (gbssn/equations.hpp, gbssn/gauge.hpp, gbssn/horizon_shift.hpp).
 #pragma once
 
-#include "core/registry.hpp"
+#include "core/wave.hpp"
 #include "fd/stencils.hpp"
 #include "gbssn/horizon_shift_params.hpp"
 

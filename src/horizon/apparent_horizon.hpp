@@ -9,6 +9,7 @@
 
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
+#include "horizon/horizon_finder_params.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -38,11 +39,6 @@ struct HorizonSearch {
 class HorizonFinderError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
-};
-
-struct HorizonFinderParams {
-  double tolerance = 1e-13; ///< absolute tolerance of the root in r (M)
-  double r_min = 0.0;       ///< scan only r >= r_min (keeps clear of the puncture)
 };
 
 /// Finds every marginally trapped sphere on the grid, between the first and the last interior

@@ -3,17 +3,9 @@
 
 #include "gbssn/state.hpp"
 #include "grid/grid.hpp"
+#include "initial_data/initial_data_params.hpp"
 
 namespace gbssn1d {
-
-enum class InitialDataKind { wormhole, maximal_trumpet, onelog_trumpet };
-enum class InitialLapse { one, precollapsed };
-
-struct InitialDataParams {
-  InitialDataKind kind = InitialDataKind::wormhole;
-  double M = 1.0;
-  InitialLapse lapse0 = InitialLapse::precollapsed; ///< wormhole only
-};
 
 /// The state on every point of the grid (ghosts included).
 ///  wormhole:        isotropic puncture psi = 1 + M/(2r), chi = psi^-4, a = b = 1,

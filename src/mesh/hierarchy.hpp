@@ -55,6 +55,7 @@
 
 #include "gbssn/state.hpp"
 #include "mesh/layout.hpp"
+#include "mesh/stepper_options.hpp"
 #include "mesh/time_interpolation_kind.hpp"
 
 #include <array>
@@ -67,25 +68,6 @@ namespace gbssn1d::mesh {
 
 /// One level's right-hand side d u / dt (GbssnRhs has this signature).
 using LevelRhs = std::function<void(const State&, State&, double)>;
-
-struct StepperOptions {
-  TimeInterpolation time = TimeInterpolation::rk_stages;
-  bool subcycling = true; ///< false: every level steps with the finest dt
-  double cfl = 0.25;      ///< dt_l = cfl dr_l (at most dt_max)
-  /// Largest step any level takes (e.g. the stability limit of a stiff damping term, which
-  /// does not shrink with the spacing): a level whose CFL step would exceed it steps with the
-  /// largest dt_finest x 2^k below it, as often as its child (time refinement factor 1, as
-  /// Carpet's time_refinement_factors do for the outer levels).
-  double dt_max = std::numeric_limits<double>::infinity();
-  /// A fine box's outermost `taper_cells` interior cells are blended towards the prolongation
-  /// of their parent at every synchronisation (after restriction), with weights rising
-  /// smoothly from 0 inside to 1 at the outermost cell: a tapered buffer (Lehner, Liebling &
-  /// Reula 2006; the 3 outermost cells that OllinSphere-BiB overwrites). Between
-  /// synchronisations the stages are untouched, so each RK4 step stays consistent. 0: off.
-  std::size_t taper_cells = 0;
-  /// Only boxes that reach beyond this radius are tapered (0: every box but level 0).
-  double taper_min_extent = 0.0;
-};
 
 /// Steps level l takes per step of the hierarchy (level 0's step) under `options`: 1 on level
 /// 0, then the same or twice its parent's (see StepperOptions::dt_max).

@@ -3,8 +3,6 @@
 // stored coarse arrays; these functions give its weights.
 #pragma once
 
-#include "mesh/time_interpolation_kind.hpp"
-
 #include <array>
 
 namespace gbssn1d::mesh {

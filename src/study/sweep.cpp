@@ -2,18 +2,17 @@
 
 #include "config/folder_lock.hpp"
 
+#include "config/paths.hpp"
+#include "core/text.hpp"
 #include "study/sweep_process.hpp"
 #include "study/sweep_store.hpp"
 #include "study/sweep_summary.hpp"
 
 #include "config/config_file.hpp"
-#include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
 #include "io/output.hpp"
-#include "io/table.hpp"
-#include "study/orders.hpp"
 #include "study/parallel.hpp"
 
 #include <fmt/format.h>
@@ -372,10 +371,8 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
                                  member_name(first), count > 1 ? " ... " + member_name(last) : ""));
   }
   if (options.member.empty() && !options.collect)
-    for (const auto& g : same_runs(members))
-      say("gbssn1d sweep: note: {} are the same run (the horizon-shift flags do nothing with "
-          "rahA = 0); each is run and listed, with the same results\n",
-          g);
+    for (const auto& same : same_runs(members))
+      say("gbssn1d sweep: note: {}: each is run and listed, with the same results\n", same.text());
   check_some_member_valid(options, members);
   const std::string exe = fs::canonical("/proc/self/exe").string();
   if (!options.member.empty() && !options.collect && options.emit_tasks.empty())

@@ -26,6 +26,17 @@ struct SweepMember {
   /// Its effective configuration (defaults resolved; its arguments if they do not parse): what
   /// a rerun of the sweep is compared against.
   std::string inputs;
+  /// Its run key (config/config_file.hpp: run_key(), the effective configuration without the
+  /// flags that do nothing in it): members with equal keys are the same run. Its arguments if
+  /// they do not parse.
+  std::string run_key;
+  /// The flags it gives where they do nothing (config/config_file.hpp: idle_flags()): each
+  /// warning its run gives about them, with the flags that warning names.
+  struct Idle {
+    std::string warning;
+    std::vector<std::string> flags;
+  };
+  std::vector<Idle> idle;
   /// Its end time (its --tmax, defaults resolved): where the end line of its timeseries.dat
   /// says a completed run ended; nothing if its arguments do not parse.
   std::optional<double> tmax;

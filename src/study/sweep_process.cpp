@@ -2,15 +2,8 @@
 
 #include "study/sweep_store.hpp"
 
-#include "config/config_file.hpp"
-#include "config/numbers.hpp"
-#include "config/params.hpp"
-#include "core/console.hpp"
 #include "core/stop_signal.hpp"
 #include "io/output.hpp"
-#include "io/table.hpp"
-#include "study/orders.hpp"
-#include "study/parallel.hpp"
 
 #include <fmt/format.h>
 

@@ -1,14 +1,12 @@
 #include "study/sweep_store.hpp"
 
 #include "config/config_file.hpp"
-#include "config/numbers.hpp"
 #include "config/params.hpp"
-#include "core/console.hpp"
-#include "core/stop_signal.hpp"
+#include "config/paths.hpp"
+#include "config/same_run.hpp"
+#include "core/decimal.hpp"
+#include "core/text.hpp"
 #include "io/output.hpp"
-#include "io/table.hpp"
-#include "study/orders.hpp"
-#include "study/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -58,9 +56,15 @@ void set_inputs(SweepMember& m) {
     p.out.clear();
     resolve_defaults(p);
     m.inputs = config_text(p);
+    m.run_key = run_key(p);
+    m.idle.clear();
+    for (const auto& group : idle_flags(p))
+      m.idle.push_back({group.warning(), group.flags});
     m.tmax = p.tmax;
   } catch (const std::exception&) {
     m.inputs = fmt::format("args = \"{}\"\n", fmt::join(m.args, " "));
+    m.run_key = m.inputs;
+    m.idle.clear();
     m.tmax.reset();
   }
 }
@@ -78,19 +82,6 @@ std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
       return s.str();
     }
   return {};
-}
-
-/// A member's inputs without the horizon-shift flags if its strength is 0 (where they do
-/// nothing): members with equal keys are the same run.
-std::string same_run_key(const std::string& inputs) {
-  if (inputs.find("\nrahA = 0\n") == std::string::npos && inputs.rfind("rahA = 0\n", 0) != 0)
-    return inputs;
-  std::istringstream lines(inputs);
-  std::string key;
-  for (std::string line; std::getline(lines, line);)
-    if (line.rfind("rah", 0) != 0 || line.rfind("rahA ", 0) == 0)
-      key += line + "\n";
-  return key;
 }
 
 /// The sweep's axes in their order (OUT/logs/axes): member folders are named in that order,
@@ -277,23 +268,35 @@ std::vector<SweepMember> sweep_members(const std::vector<SweepAxis>& axes,
   return members;
 }
 
-/// Groups of members that are the same run (the horizon-shift flags of a member with rahA = 0
-/// do nothing), each as "a = b = c"; said on stderr and in summary.dat, so that nobody reads
-/// them as different results.
-std::vector<std::string> same_runs(const std::vector<SweepMember>& members) {
-  std::map<std::string, std::vector<std::string>> groups;
+std::string SameRun::text() const {
+  return fmt::format("{} are the same run ({} {} nothing there)", fmt::join(members, " = "),
+                     fmt::join(flags, ", "), flags.size() == 1 ? "does" : "do");
+}
+
+std::vector<SameRun> same_runs(const std::vector<SweepMember>& members) {
+  std::map<std::string, std::vector<const SweepMember*>> groups;
   std::vector<std::string> order;
   for (const auto& m : members) {
-    const std::string key = same_run_key(m.inputs);
-    auto& g = groups[key];
+    auto& g = groups[m.run_key];
     if (g.empty())
-      order.push_back(key);
-    g.push_back(m.name);
+      order.push_back(m.run_key);
+    g.push_back(&m);
   }
-  std::vector<std::string> out;
-  for (const auto& key : order)
-    if (groups[key].size() > 1)
-      out.push_back(fmt::format("{}", fmt::join(groups[key], " = ")));
+  std::vector<SameRun> out;
+  for (const auto& key : order) {
+    const auto& g = groups[key];
+    if (g.size() < 2)
+      continue;
+    SameRun same;
+    std::set<std::string> flags;
+    for (const SweepMember* m : g) {
+      same.members.push_back(m->name);
+      for (const auto& change : config_differences(g.front()->inputs, m->inputs))
+        flags.insert(change.substr(0, change.find(':')));
+    }
+    same.flags.assign(flags.begin(), flags.end());
+    out.push_back(same);
+  }
   return out;
 }
 

@@ -39,10 +39,16 @@ std::optional<std::string> member_output_problem(const std::filesystem::path& di
 /// `s` as one word of a status file or summary.dat: blanks as '_', empty as '-'.
 std::string token(std::string s);
 
-/// Groups of members that are the same run (the horizon-shift flags of a member with rahA = 0
-/// do nothing), each as "a = b = c"; said on stderr and in summary.dat, so that nobody reads
-/// them as different results.
-std::vector<std::string> same_runs(const std::vector<SweepMember>& members);
+/// Members that are the same run (equal run keys: they differ only in flags that do nothing
+/// in them, e.g. rah0 with rahA = 0): their names and the flags they differ in.
+struct SameRun {
+  std::vector<std::string> members;
+  std::vector<std::string> flags;
+  /// "a = b = c are the same run (rah0 does nothing there)": said on stderr and in summary.dat, so
+  /// that nobody reads them as different results.
+  std::string text() const;
+};
+std::vector<SameRun> same_runs(const std::vector<SweepMember>& members);
 
 /// Why `m` cannot run (its flags do not validate), or nullopt.
 std::optional<std::string> invalid_reason(const SweepMember& m);

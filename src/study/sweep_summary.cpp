@@ -2,15 +2,11 @@
 
 #include "study/sweep_store.hpp"
 
-#include "config/config_file.hpp"
 #include "config/numbers.hpp"
-#include "config/params.hpp"
 #include "core/console.hpp"
-#include "core/stop_signal.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"
 #include "study/orders.hpp"
-#include "study/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -140,19 +136,31 @@ std::vector<Spike> find_spikes(const std::vector<SweepAxis>& axes,
 
 namespace {
 
-/// A member that the sweep itself gave rahA = 0 (the unshifted reference of a sweep over rahA):
-/// its other horizon-shift flags are idle by design, not by a user's slip.
-bool swept_to_no_shift(const SweepMember& m) {
-  return std::any_of(m.values.begin(), m.values.end(), [](const auto& kv) {
-    const auto v = parse_decimal<double>(kv.second);
-    return kv.first == "rahA" && v && *v == 0.0;
+/// Whether `flag` is idle in member `m`: given where it does nothing.
+bool idle_in(const SweepMember& m, const std::string& flag) {
+  return std::any_of(m.idle.begin(), m.idle.end(), [&](const SweepMember::Idle& i) {
+    return std::find(i.flags.begin(), i.flags.end(), flag) != i.flags.end();
   });
+}
+
+/// The warnings of member `m` about flags that the sweep itself made idle: each flag the
+/// warning names acts in another member (e.g. rah0 in a sweep over rahA = 0, 0.5), so the
+/// member is a reference by design, not a user's slip.
+std::set<std::string> idle_by_design(const SweepMember& m, const std::vector<SweepMember>& all) {
+  std::set<std::string> out;
+  for (const auto& idle : m.idle)
+    if (std::all_of(idle.flags.begin(), idle.flags.end(), [&](const std::string& flag) {
+          return std::any_of(all.begin(), all.end(),
+                             [&](const SweepMember& o) { return &o != &m && !idle_in(o, flag); });
+        }))
+      out.insert(idle.warning);
+  return out;
 }
 
 } // namespace
 
 /// Each distinct `gbssn1d: warning:` line of the members' logs, once, with the members that
-/// gave it (but the idle horizon-shift flags of members the sweep set to rahA = 0).
+/// gave it (but the warnings about flags that the sweep itself made idle: idle_by_design).
 void report_warnings(const fs::path& dir, const std::vector<SweepMember>& members) {
   const std::string prefix = "gbssn1d: warning: ";
   std::vector<std::string> order;
@@ -160,11 +168,12 @@ void report_warnings(const fs::path& dir, const std::vector<SweepMember>& member
   for (const auto& m : members) {
     std::ifstream log(dir / "logs" / (m.name + ".log"));
     std::set<std::string> seen; // a member counts once per warning
+    const std::set<std::string> by_design = idle_by_design(m, members);
     for (std::string line; std::getline(log, line);) {
       if (line.rfind(prefix, 0) != 0)
         continue;
       const std::string text = line.substr(prefix.size());
-      if (swept_to_no_shift(m) && text.find("nothing with --rahA 0") != std::string::npos)
+      if (by_design.count(text))
         continue;
       if (!seen.insert(text).second)
         continue;
@@ -263,7 +272,7 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
                           results[sp.member].H_R_max, sp.factor, sp.median, sp.axis));
   std::string same;
   for (const auto& g : same_runs(members))
-    same += "same run (rahA = 0: the horizon-shift flags do nothing): " + g + "\n";
+    same += g.text() + "\n";
   DataFile summary(
       dir / "summary.dat",
       same

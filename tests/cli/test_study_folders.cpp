@@ -4,6 +4,7 @@
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
 #include "config/params.hpp"
+#include "config/paths.hpp"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,77 @@
+// The table of evolve flags (internal to src/config): for each flag its name, where it lives in
+// Params, its --help group and text, and where it acts. One row per flag: the CLI11 options,
+// config files (config_file.cpp) and the effective configuration (same_run.cpp) all read it.
+#pragma once
+
+#include "config/params.hpp"
+
+#include <concepts>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace gbssn1d {
+
+/// A choice flag's value (config/choices.hpp): read from its name, written as its name.
+template <class T>
+concept ChoiceValue = requires(const T& value, std::string_view text) {
+  { T::parse(text) } -> std::same_as<T>;
+  { value.name() } -> std::same_as<std::string>;
+};
+/// A choice flag whose unset value stands for a rule (resolve_defaults).
+template <class T>
+inline constexpr bool is_optional_choice = false;
+template <ChoiceValue C>
+inline constexpr bool is_optional_choice<std::optional<C>> = true;
+
+/// Where a flag acts: everywhere, or only in configurations where what it sets exists (in
+/// others it does nothing, whatever its value).
+enum class Acts {
+  always,
+  with_shift,         ///< the horizon-adjusting shift is on: shift_on()
+  with_smooth_normal, ///< the shift is on with --rah-normal smooth
+  on_boxes,           ///< --grid boxes
+  on_sinh,            ///< --grid sinh
+  with_wormhole,      ///< --id wormhole
+};
+
+/// Whether a flag that acts `where` acts in `p`.
+bool acts(Acts where, const Params& p);
+
+/// Why a flag that acts `where` does nothing in `p` (acts(where, p) is false), as a user reads
+/// it ("with --rahA 0"), and what to do instead.
+std::pair<std::string, std::string> idle_because(Acts where, const Params& p);
+
+/// One run parameter: its flag (without "--"), where it lives in Params, group and help, and
+/// where it acts. The same table drives the CLI11 options, the config file and the effective
+/// configuration (a flag's value where it does nothing is not part of the run), so they cannot
+/// drift apart.
+struct ParamSpec {
+  const char* name;
+  std::variant<int Params::*, double Params::*, std::optional<double> Params::*,
+               std::optional<int> Params::*, std::string Params::*, bool Params::*,
+               GridChoice Params::*, TimeInterpChoice Params::*, InitialDataChoice Params::*,
+               LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
+               ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
+               StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*>
+      member;
+  const char* group;
+  const char* help;
+  Acts acts = Acts::always;
+};
+
+/// Every evolve parameter, in the order of --help and config.toml.
+const std::vector<ParamSpec>& param_specs();
+
+/// The value as config-file text, or nothing for an unset optional (the file then leaves the
+/// key out, which reads back as unset).
+std::optional<std::string> value_text(const Params& p, const ParamSpec& spec);
+
+/// The rule a flag's unset value stands for, shown by --help as its default.
+const std::map<std::string, std::string>& default_rules();
+
+} // namespace gbssn1d

@@ -1,0 +1,86 @@
+#include "config/same_run.hpp"
+
+#include "config/config_file.hpp"
+#include "config/flag_table.hpp"
+#include "core/text.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <type_traits>
+
+namespace gbssn1d {
+
+namespace {
+
+/// `p` with the value of `spec` as an unset flag would resolve it (resolve_defaults, given
+/// the other flags of `p`).
+Params with_default(const Params& p, const ParamSpec& spec) {
+  Params q = p;
+  const Params unset;
+  std::visit([&](auto member) { q.*member = unset.*member; }, spec.member);
+  resolve_defaults(q);
+  return q;
+}
+
+/// A value as a user gives it on the command line ("0.6", "gauss", a path; "" for a switch).
+std::string shown(const Params& p, const ParamSpec& spec) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        using T = std::decay_t<decltype(p.*member)>;
+        if constexpr (std::is_same_v<T, std::string>)
+          return printable(p.*member);
+        else if constexpr (ChoiceValue<T>)
+          return (p.*member).name();
+        else if constexpr (is_optional_choice<T>)
+          return p.*member ? (p.*member)->name() : "";
+        else if constexpr (std::is_same_v<T, bool>)
+          return "";
+        else if constexpr (std::is_same_v<
+                               T, std::optional<double>> || std::is_same_v<T, std::optional<int>>)
+          return p.*member ? fmt::format("{}", *(p.*member)) : "";
+        else
+          return fmt::format("{}", p.*member);
+      },
+      spec.member);
+}
+
+} // namespace
+
+std::vector<IdleFlags> idle_flags(const Params& p) {
+  std::vector<IdleFlags> groups;
+  for (const auto& spec : param_specs()) {
+    if (acts(spec.acts, p) || value_text(p, spec) == value_text(with_default(p, spec), spec))
+      continue;
+    const auto [because, instead] = idle_because(spec.acts, p);
+    auto group = std::find_if(groups.begin(), groups.end(),
+                              [&](const IdleFlags& g) { return g.because == because; });
+    if (group == groups.end())
+      group = groups.insert(groups.end(), IdleFlags{because, instead, {}, {}});
+    group->flags.push_back(spec.name);
+    const std::string value = shown(p, spec);
+    group->given.push_back(fmt::format("--{}{}{}", spec.name, value.empty() ? "" : " ", value));
+  }
+  return groups;
+}
+
+std::string IdleFlags::warning() const {
+  return fmt::format("{} {} nothing {}: {}", fmt::join(given, ", "),
+                     given.size() == 1 ? "does" : "do", because, instead);
+}
+
+Params effective(const Params& p) {
+  Params e = p;
+  for (const auto& spec : param_specs())
+    if (!acts(spec.acts, p))
+      e = with_default(e, spec);
+  e.out.clear();
+  e.force = false;
+  return e;
+}
+
+std::string run_key(const Params& p) {
+  return config_text(effective(p));
+}
+
+} // namespace gbssn1d

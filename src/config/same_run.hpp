@@ -1,0 +1,38 @@
+// One notion of "the same run" (docs/design.md): the effective configuration of a run, which
+// leaves out the flags that do nothing in it, and those flags, for warnings and study notes.
+// Where each flag acts is its row of the flag table (config/flag_table.*).
+#pragma once
+
+#include "config/params.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gbssn1d {
+
+/// Flags given a value (other than the one an unset flag resolves to) in a configuration where
+/// they do nothing, grouped by why: e.g. because "with --rahA 0", flags {"rah0"}, given
+/// {"--rah0 0.6"}, and what to do instead. Each flag's table entry says where it acts
+/// (config_file.cpp).
+struct IdleFlags {
+  std::string because;
+  std::string instead;            ///< what they need to act, or what to do instead
+  std::vector<std::string> flags; ///< their names, without "--"
+  std::vector<std::string> given; ///< "--name value" as on a command line
+  /// The warning a run gives (config/params.hpp: warnings()): "--rah0 0.6 does nothing with
+  /// --rahA 0: ..."
+  std::string warning() const;
+};
+std::vector<IdleFlags> idle_flags(const Params& p);
+
+/// The effective configuration of resolved parameters (resolve_defaults): `p` with every flag
+/// that does nothing in it at the value an unset flag resolves to, and without --out and
+/// --force. It is what decides a run's outputs.
+Params effective(const Params& p);
+
+/// The one notion of "the same run": two resolved parameter sets are the same run (the same
+/// outputs but for the folder's name) exactly when their keys are equal. config_text() of the
+/// effective configuration.
+std::string run_key(const Params& p);
+
+} // namespace gbssn1d

@@ -1,0 +1,171 @@
+// The one notion of "the same run" (config/config_file.hpp: effective, run_key, idle_flags):
+// each flag's table entry says where it acts, and these tests hold the table to what the runs
+// do. A flag that the table calls idle in a configuration must change no number the run writes
+// (else two different runs would be called the same), and where the table says it acts, the
+// key and the numbers change with it (else the comparison could not fail).
+#include "../cli/cli_support.hpp"
+#include "config/config_file.hpp"
+#include "config/params.hpp"
+#include "config/same_run.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace gbssn1d;
+using gbssn1d::testing::run;
+using gbssn1d::testing::scratch;
+using gbssn1d::testing::slurp;
+
+namespace {
+
+std::vector<std::string> words(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;)
+    out.push_back(w);
+  return out;
+}
+
+/// The resolved parameters of an evolve command line.
+Params resolved(const std::string& args) {
+  Params p = parse_evolve_args(words(args));
+  resolve_defaults(p);
+  return p;
+}
+
+/// The numbers a run wrote: every .dat file's lines that are not '#' comments (headers echo
+/// the flags, which differ by design).
+std::map<std::string, std::string> numbers(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".dat")
+      continue;
+    std::istringstream in(slurp(e.path()));
+    std::string kept;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind('#', 0) != 0)
+        kept += line + "\n";
+    out[e.path().filename().string()] = kept;
+  }
+  return out;
+}
+
+/// The numbers of an evolve run with `args` (which must succeed).
+std::map<std::string, std::string> numbers_of(const std::string& args, const std::string& name) {
+  const fs::path out = scratch("same_run_" + name);
+  const auto r = run("evolve " + args + " --out " + out.string());
+  INFO(args << "\n" << r.err);
+  REQUIRE(r.status == 0);
+  auto n = numbers(out);
+  REQUIRE(n.count("timeseries.dat") == 1);
+  REQUIRE(n.count("profiles.dat") == 1);
+  fs::remove_all(out);
+  return n;
+}
+
+const std::string trumpet =
+    "--id 1log-trumpet --grid uniform --N 64 --rmax 16 --tmax 1 --dt-series 0.25 "
+    "--dt-profiles 0.5";
+
+} // namespace
+
+TEST_CASE("the same run: a flag the table calls idle changes no number the run writes, and "
+          "where it acts it changes them and the run key") {
+  const fs::path file = scratch("same_run_hAH.dat");
+  {
+    std::ofstream f(file);
+    f << "# t r_ah\n";
+    for (int k = 0; k <= 8; ++k)
+      f << 0.25 * k << " " << 0.8304 + 0.01 * k << "\n";
+  }
+  struct Case {
+    std::string base, flag, acting; // the flag is idle with `base`, acts with `acting`
+  };
+  const std::string shifted = trumpet + " --rahA 0.5 --rah0 1";
+  const std::vector<Case> cases{
+      {trumpet, "--rah0 0.6", trumpet + " --rahA 0.5"},
+      // an explicit profile: auto sets the width itself (--rah-width is then not used)
+      {trumpet, "--rah-width 2", shifted + " --rah-profile rational"},
+      {trumpet, "--rah-rcut 6", shifted},
+      {trumpet, "--rah-taper step", shifted},
+      {trumpet, "--rah-ramp 3", shifted},
+      {trumpet, "--rah-profile gauss", shifted},
+      {trumpet, "--rah-normal unit", shifted},
+      {trumpet, "--rah-chi-smooth 0.1", shifted + " --rah-normal smooth"},
+      {shifted, "--rah-chi-smooth 0.1", shifted + " --rah-normal smooth"},
+      {trumpet, "--rah-hAH-file " + file.string(), shifted},
+      {trumpet, "--rah-variant no-shift-derivatives", shifted},
+      {trumpet, "--rah-variant no-shift-second-derivatives", shifted},
+      {trumpet, "--rah-variant delta-rhs-from-gd", shifted},
+      {trumpet, "--rah-variant driver-full-shift", shifted},
+      // searches inside the step need searches every n steps
+      {trumpet + " --ah-every step", "--rah-variant midstep-update", shifted + " --ah-every step"},
+      {trumpet, "--dr-inner 0.03", "--id 1log-trumpet --N 64 --rmax 16 --tmax 1"},
+      {trumpet, "--lapse0 one", "--id wormhole --grid uniform --N 64 --rmax 16 --tmax 1"},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    INFO("flag " << c.flag << " with " << c.base);
+    // the table: idle with the base, and the same run key
+    const Params base = resolved(c.base), with = resolved(c.base + " " + c.flag);
+    CHECK_FALSE(idle_flags(with).empty());
+    CHECK(idle_flags(base).empty());
+    CHECK(run_key(with) == run_key(base));
+    // the runs: the same numbers
+    CHECK(numbers_of(c.base + " " + c.flag, "idle_a") == numbers_of(c.base, "idle_b"));
+    // where it acts: another key, other numbers
+    const Params acting = resolved(c.acting), acting_with = resolved(c.acting + " " + c.flag);
+    CHECK(idle_flags(acting_with).empty());
+    CHECK(run_key(acting_with) != run_key(acting));
+    if (c.flag.rfind("--rah-variant midstep", 0) == 0 || c.flag.rfind("--rah-hAH", 0) == 0
+        || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
+        || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
+        || c.flag == "--rah-profile gauss")
+      CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
+  }
+  fs::remove(file);
+}
+
+TEST_CASE("idle flags: named with their values, grouped by why, in the run's warnings, and a "
+          "resolved default is not one") {
+  const Params quiet = resolved(trumpet);
+  CHECK(idle_flags(quiet).empty());
+  CHECK(warnings(quiet).empty()); // box-taper resolved to 0 on a single grid: not given
+  const Params p = resolved(trumpet + " --rah0 0.6 --rah-profile gauss --dr-inner 0.03");
+  const auto idle = idle_flags(p);
+  REQUIRE(idle.size() == 2);
+  CHECK(idle[0].because == "with --grid uniform");
+  CHECK(idle[0].given == std::vector<std::string>{"--dr-inner 0.03"});
+  CHECK(idle[1].because == "with --rahA 0");
+  CHECK(idle[1].given == std::vector<std::string>{"--rah0 0.6", "--rah-profile gauss"});
+  CHECK(idle[1].warning().rfind("--rah0 0.6, --rah-profile gauss do nothing with --rahA 0: ", 0)
+        == 0);
+  const auto w = warnings(p);
+  CHECK(std::count(w.begin(), w.end(), idle[0].warning()) == 1);
+  CHECK(std::count(w.begin(), w.end(), idle[1].warning()) == 1);
+  // smooth normal's chi_s with the shift on but another normal
+  const auto chi = idle_flags(resolved(trumpet + " --rahA 0.5 --rah-chi-smooth 0.1"));
+  REQUIRE(chi.size() == 1);
+  CHECK(chi[0].because == "with --rah-normal conformal");
+}
+
+TEST_CASE("the effective configuration: without --out and --force, idle flags at their "
+          "resolved defaults, the rest as given") {
+  Params p = resolved(trumpet + " --rah0 0.6 --ko-sigma 0.2");
+  p.out = "somewhere";
+  p.force = true;
+  const Params e = effective(p);
+  CHECK(e.out.empty());
+  CHECK_FALSE(e.force);
+  CHECK(e.rah0 == Params{}.rah0);
+  CHECK(e.ko_sigma == 0.2);
+  CHECK(e.box_taper == p.box_taper); // resolved on a single grid: 0, kept
+  CHECK(run_key(p) == config_text(e));
+}
