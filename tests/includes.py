@@ -57,6 +57,8 @@ DECL = [
     re.compile(r'^enum[ \t]+(?:class[ \t]+|struct[ \t]+)?(\w+)', re.M),
     re.compile(r'^using[ \t]+(\w+)[ \t]*=', re.M),
     re.compile(r'^#[ \t]*define[ \t]+(\w+)', re.M),
+    # a function whose return type is on the line before (clang-format's wrap)
+    re.compile(r'^([A-Za-z_]\w*)\(', re.M),
     # a function or constant at namespace scope: a declaration starting in column 0
     re.compile(r'^(?:template[ \t]*<[^\n]*>\n)?(?:(?:inline|constexpr|static|extern|const)[ \t]+'
                r'|\[\[[^\]]*\]\][ \t]*)*[A-Za-z_][\w:<>,\*& \t]*?[ \t\*&](\w+)[ \t]*(?:\(|=|\{|;)',

@@ -51,6 +51,11 @@ struct StudyVerdict {
 };
 StudyVerdict judge_study(const ConvergeStudy& s, const StudyEnding& e);
 
+/// Every judged norm at each pair of neighbouring members and every field's differences at
+/// each triple, over the common times, with the round-off floor of the finest member involved:
+/// what judge_study() (converge_verdict.cpp) judges.
+std::vector<OrderSeries> order_series(const ConvergeStudy& s);
+
 void write_convergence_dat(const ConvergeStudy& s, const std::string& base_config,
                            const StudyEnding& e, const StudyVerdict& v);
 void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, const StudyEnding& e);

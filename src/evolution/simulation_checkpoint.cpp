@@ -1,0 +1,77 @@
+// A Simulation to and from a checkpoint (evolution/checkpoint.hpp): every level's state, the
+// stepper's time levels, the horizon tracker's history and the output counters, so that a
+// resumed run is bit-identical to one never stopped.
+#include "evolution/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gbssn1d {
+
+void Simulation::restore(const Checkpoint& checkpoint) {
+  const std::size_t n_levels = layout_.levels();
+  std::vector<std::size_t> sizes;
+  for (const State& u : levels_u_)
+    sizes.push_back(u.size());
+  const Checkpoint c =
+      resumable_checkpoint(checkpoint, {config_, layout_, sizes, schedule_.dt, schedule_.n_steps,
+                                        initial_evaluations_[0]});
+  levels_u_[0] = c.u;
+  for (std::size_t l = 1; l < n_levels; ++l)
+    levels_u_[l] = c.finer[l - 1];
+  t_ = c.t;
+  step_ = c.step;
+  clock_.k_series = c.k_series;
+  clock_.k_profiles = c.k_profiles;
+  rhs_[0].set_horizon_radius(c.h_AH);
+  rhs_[0].set_evaluations(c.evaluations);
+  if (n_levels > 1) {
+    tracker_.restore(c.shared_h_AH, c.h_AH_history);
+    for (std::size_t l = 1; l < n_levels; ++l) {
+      rhs_[l].set_horizon_radius(c.level_h_AH[l]);
+      // level l takes steps(l) steps of 4 evaluations per step of the hierarchy
+      const std::uint64_t n =
+          initial_evaluations_[l]
+          + 4 * static_cast<std::uint64_t>(c.step) * static_cast<std::uint64_t>(stepper_.steps(l));
+      rhs_[l].set_evaluations(n);
+      stepper_.set_evaluations(l, n);
+    }
+    for (std::size_t l = 0; l < n_levels; ++l)
+      stepper_.set_history(l, c.history[l]);
+  } else {
+    tracker_.restore(c.h_AH, {});
+  }
+  had_horizon_ = c.had_horizon;
+  reported_ = c.reported;
+  resumed_ = true;
+}
+
+Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH_before_rhs) const {
+  Checkpoint c;
+  c.config = checkpoint_config;
+  c.step = step_;
+  c.t = t_;
+  c.dt = schedule_.dt;
+  c.k_series = clock_.k_series;
+  c.k_profiles = clock_.k_profiles;
+  c.h_AH = h_AH_before_rhs;
+  c.had_horizon = had_horizon_;
+  c.reported = reported_;
+  c.evaluations = evaluations_before_rhs_;
+  c.marks = out.marks();
+  c.u = levels_u_[0];
+  if (layout_.levels() > 1) {
+    c.finer.assign(levels_u_.begin() + 1, levels_u_.end());
+    c.shared_h_AH = tracker_.shared_before_rhs(); // before the next step's first RHS, as h_AH
+    c.h_AH_history = tracker_.history();
+    for (std::size_t l = 0; l < layout_.levels(); ++l) {
+      c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
+      c.history.push_back(stepper_.history(l));
+    }
+  }
+  return c;
+}
+
+} // namespace gbssn1d
