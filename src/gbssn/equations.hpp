@@ -176,6 +176,21 @@ inline Constraints constraints(const PointData& p) {
   return c;
 }
 
+/// The BSSN formulation as a policy of the point loop (gbssn/rhs_loop.hpp: GbssnRhs::interior,
+/// a template parameter like the differencing order and the upwind pair): its right-hand sides
+/// at one point with the part of the shift that drives B, d_t Delta^r for a given shift (the
+/// delta-rhs-from-gd study variant), and its constraints. Another formulation is another type
+/// with these members (docs/design.md, "A formulation").
+struct Bssn {
+  static Rhs rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_shift) {
+    return gbssn_rhs(p, gauge, gauge_shift);
+  }
+  static double rhs_Delta_r(const PointData& p, const Shift& s) {
+    return gbssn1d::rhs_Delta_r(p, metric_pieces(p), s);
+  }
+  static Constraints constraints(const PointData& p) { return gbssn1d::constraints(p); }
+};
+
 /// (T1) outgoing expansion of the sphere r = const, chi form.
 inline double expansion_plus(const PointData& p) {
   using enum Var;

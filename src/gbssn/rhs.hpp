@@ -24,6 +24,8 @@
 
 namespace gbssn1d {
 
+struct Bssn; // the formulation of the point loop (gbssn/equations.hpp)
+
 /// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
 /// order p (needs i - p/2 - 1 ... i + p/2 + 1), advection with the upwind pair `upwind`.
 PointData point_data(const State& u, const Grid& grid, std::size_t i,
@@ -62,9 +64,10 @@ public:
   void set_outer_ghosts_from_parent(bool from_parent) { outer_from_parent_ = from_parent; }
 
 private:
-  /// The point loop; the horizon shift and its variant are template parameters, so that each
+  /// The point loop; the formulation (a policy type such as Bssn), the differencing order, the
+  /// upwind pair, the horizon shift and its variant are template parameters, so that each
   /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <int order, fd::Upwind upwind, bool with_horizon_shift,
+  template <class Formulation, int order, fd::Upwind upwind, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const State& u, State& dudt) const;
   /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.

@@ -110,27 +110,27 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   dudt.resize(u.size());
   const HorizonShiftParams& hs = params_.horizon_shift;
   if (!hs.active()) {
-    interior<p, upwind, false>(u, dudt);
+    interior<Bssn, p, upwind, false>(u, dudt);
   } else {
     if (source_)
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     split_shift(u, t);
     using V = HorizonShiftParams::Variant;
     if (hs.variant == V::consistent) {
-      interior<p, upwind, true, V::consistent>(u, dudt);
+      interior<Bssn, p, upwind, true, V::consistent>(u, dudt);
     } else if constexpr (upwind == fd::Upwind::lopsided) {
       switch (hs.variant) { // dispatched once per call, not per point
       case V::no_shift_derivatives:
-        interior<p, upwind, true, V::no_shift_derivatives>(u, dudt);
+        interior<Bssn, p, upwind, true, V::no_shift_derivatives>(u, dudt);
         break;
       case V::no_shift_second_derivatives:
-        interior<p, upwind, true, V::no_shift_second_derivatives>(u, dudt);
+        interior<Bssn, p, upwind, true, V::no_shift_second_derivatives>(u, dudt);
         break;
       case V::delta_rhs_from_gd:
-        interior<p, upwind, true, V::delta_rhs_from_gd>(u, dudt);
+        interior<Bssn, p, upwind, true, V::delta_rhs_from_gd>(u, dudt);
         break;
       case V::driver_full_shift:
-        interior<p, upwind, true, V::driver_full_shift>(u, dudt);
+        interior<Bssn, p, upwind, true, V::driver_full_shift>(u, dudt);
         break;
       default:
         break;
@@ -201,7 +201,7 @@ advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, doub
 
 } // namespace point_loop
 
-template <int order, fd::Upwind upwind, bool with_horizon_shift,
+template <class Formulation, int order, fd::Upwind upwind, bool with_horizon_shift,
           HorizonShiftParams::Variant variant>
 void GbssnRhs::interior(const State& u, State& dudt) const {
   using namespace point_loop;
@@ -270,11 +270,11 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
         k6[Var::beta] = fd::difference<order>(f);
         p.adv[Var::beta] = fd::advect_from<order, upwind>(
             p.f[Var::beta] * d1_scale, fd::upwind_sum<order, upwind>(f), k6[Var::beta]);
-        rhs = gbssn_rhs(p, gauge, gd);
+        rhs = Formulation::rhs(p, gauge, gd);
         if constexpr (variant == Variant::delta_rhs_from_gd)
-          rhs[Var::Delta_r] = rhs_Delta_r(p, metric_pieces(p), gd);
+          rhs[Var::Delta_r] = Formulation::rhs_Delta_r(p, gd);
       } else {
-        rhs = gbssn_rhs(p, gauge, gd);
+        rhs = Formulation::rhs(p, gauge, gd);
       }
       const double ko = ko_scale * inv_rx[i];
 #pragma GCC unroll 16

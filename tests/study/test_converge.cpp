@@ -27,23 +27,20 @@ namespace fs = std::filesystem;
 namespace {
 
 using gbssn1d::testing::completed;
+using gbssn1d::testing::run_study;
 using gbssn1d::testing::scratch;
 using gbssn1d::testing::slurp;
 using gbssn1d::testing::summary_rows;
-
-int run(const std::string& args, std::string* err = nullptr) {
-  return gbssn1d::testing::run_study(args, err);
-}
 
 } // namespace
 
 TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field differences") {
   const fs::path out = scratch("converge");
   std::string err;
-  REQUIRE(run("converge --N 600,900,1200 -j 2 --out " + out.string()
-                  + " --id 1log-trumpet --grid uniform --rmax 30 --tmax 3 --dt-series 1 "
-                    "--norm-rmin 1 --norm-rmax 10 --fields alpha,chi",
-              &err)
+  REQUIRE(run_study("converge --N 600,900,1200 -j 2 --out " + out.string()
+                        + " --id 1log-trumpet --grid uniform --rmax 30 --tmax 3 --dt-series 1 "
+                          "--norm-rmin 1 --norm-rmax 10 --fields alpha,chi",
+                    &err)
           == 0);
   // the verdict, on the terminal and in the header
   CHECK(err.find("N = 600, 900, 1200 completed at t = 3; converges: every judged order")
@@ -103,7 +100,7 @@ TEST_CASE("converge: a study whose errors fall short of the expected order is pr
                             + " --id 1log-trumpet --grid uniform --rmax 30 --tmax 3"
                               " --dt-series 1 --norm-rmin 1 --norm-rmax 10 --fields alpha";
   std::string err;
-  REQUIRE(run(flags + " --expect-order 8", &err) == 5);
+  REQUIRE(run_study(flags + " --expect-order 8", &err) == 5);
   INFO(err);
   CHECK(err.find("completed at t = 3, but pre-asymptotic: H_L2_ext at N = 600 and 900: "
                  "order 4.00 at t = 0 is the first below 6.50")
@@ -119,14 +116,14 @@ TEST_CASE("converge: a study whose errors fall short of the expected order is pr
   CHECK(text.find("\n# end: completed at t = 3\n") != std::string::npos); // it did complete
   // a grid too coarse for the trumpet (M/5 to M/9): the constraints fall, at orders 2.4-2.9 over
   // some windows (the study's pre-asymptotic regime, not a failure)
-  REQUIRE(run("converge --N 100,140,180 --out " + out.string()
-                  + " --force --id 1log-trumpet --grid uniform --rmax 20 --tmax 1",
-              &err)
+  REQUIRE(run_study("converge --N 100,140,180 --out " + out.string()
+                        + " --force --id 1log-trumpet --grid uniform --rmax 20 --tmax 1",
+                    &err)
           == 5);
   CHECK(err.find("but pre-asymptotic: ") != std::string::npos);
   CHECK(err.find(" is the first below 2.50") != std::string::npos);
   // an expected order that is no order is refused before anything runs
-  CHECK(run(flags + " --force --expect-order 0", &err) == 2);
+  CHECK(run_study(flags + " --force --expect-order 0", &err) == 2);
   CHECK(err.find("--expect-order") != std::string::npos);
   fs::remove_all(out);
 }
@@ -153,11 +150,11 @@ TEST_CASE("converge: the box-substage shift on seven boxes does not converge (ex
           "errors do not fall with N") {
   const fs::path out = scratch("converge_diverges");
   std::string err;
-  REQUIRE(run("converge" + seven_boxes
-                  + "--tmax 10 --rahA 0.5 --rah0 0.89 --rah-variant "
-                    "box-substage --out "
-                  + out.string(),
-              &err)
+  REQUIRE(run_study("converge" + seven_boxes
+                        + "--tmax 10 --rahA 0.5 --rah0 0.89 --rah-variant "
+                          "box-substage --out "
+                        + out.string(),
+                    &err)
           == 4);
   INFO(err);
   CHECK(err.find("completed at t = 10, but does not converge: H_L2_ext at N = 24 and 32: the "
@@ -183,7 +180,8 @@ TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) is pre-asympt
   const fs::path out = scratch("converge_pre_asymptotic");
   std::string err;
   REQUIRE(
-      run("converge" + seven_boxes + "--tmax 20 --rahA 0.5 --rah0 0.89 --out " + out.string(), &err)
+      run_study("converge" + seven_boxes + "--tmax 20 --rahA 0.5 --rah0 0.89 --out " + out.string(),
+                &err)
       == 5);
   INFO(err);
   // alpha's differences fall at order 1.7 over the run (errors fall, below 2.5); the norms
@@ -194,7 +192,8 @@ TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) is pre-asympt
   std::string text = slurp(out / "convergence.dat");
   CHECK(text.find("\n# verdict: pre-asymptotic: alpha at N = 24, 32 and 48") != std::string::npos);
   CHECK(order_line(text, "H_L2_ext", "N = 32 and 48").find(": converges") != std::string::npos);
-  REQUIRE(run("converge" + seven_boxes + "--tmax 20 --force --out " + out.string(), &err) == 0);
+  REQUIRE(run_study("converge" + seven_boxes + "--tmax 20 --force --out " + out.string(), &err)
+          == 0);
   CHECK(err.find("completed at t = 20; converges: every judged order of an RMS over time (norms: "
                  "also over each tenth of the run) at least 2.50 (expected order 4); the lowest "
                  "over time is 3.0")
@@ -214,7 +213,7 @@ TEST_CASE("converge: a member at the round-off floor converges until the floor (
   const std::string flags = "converge --id 1log-trumpet --rahA 0.5 --rah0 1.5 -j 2 --out "
                             + out.string() + " --force --tmax ";
   std::string err;
-  REQUIRE(run(flags + "1 --N 400,800,1600", &err) == 0);
+  REQUIRE(run_study(flags + "1 --N 400,800,1600", &err) == 0);
   INFO(err);
   CHECK(err.find("completed at t = 1; converges until the round-off floor: every judged order of "
                  "an RMS over time (norms: also over each tenth of the run) at least 2.50")
@@ -233,7 +232,7 @@ TEST_CASE("converge: a member at the round-off floor converges until the floor (
   CHECK(coarser.find("order of its RMS over time 3.8") != std::string::npos);
   CHECK(coarser.substr(coarser.rfind(": ")) == ": converges");
   // one level finer, every pair and triple at the floor: nothing is judged, and it says so
-  REQUIRE(run(flags + "0.5 --N 800,1600,3200", &err) == 0);
+  REQUIRE(run_study(flags + "0.5 --N 800,1600,3200", &err) == 0);
   CHECK(err.find("converges until the round-off floor: no monitored value lies above its "
                  "round-off floor: nothing is judged; ")
         != std::string::npos);
@@ -244,8 +243,8 @@ TEST_CASE("converge: a member at the round-off floor converges until the floor (
 
 TEST_CASE("converge: a base N and factors") {
   const fs::path out = scratch("converge_factors");
-  REQUIRE(completed(run("converge --N 64 --factors 1,1.5,2 --out " + out.string()
-                        + " --id 1log-trumpet --grid uniform --rmax 20 --tmax 0")));
+  REQUIRE(completed(run_study("converge --N 64 --factors 1,1.5,2 --out " + out.string()
+                              + " --id 1log-trumpet --grid uniform --rmax 20 --tmax 0")));
   for (const char* d : {"N64", "N96", "N128"})
     CHECK(fs::exists(out / d / "timeseries.dat"));
   fs::remove_all(out);
@@ -254,9 +253,9 @@ TEST_CASE("converge: a base N and factors") {
 TEST_CASE("converge refuses bad input before running anything") {
   const fs::path out = scratch("converge_bad");
   std::string err;
-  CHECK(run("converge --N 600,900 --out " + out.string(), &err) == 2);
+  CHECK(run_study("converge --N 600,900 --out " + out.string(), &err) == 2);
   CHECK(err.find("--N") != std::string::npos);
-  CHECK(run("converge --N 600,900,1200 --out " + out.string() + " --cfl 9", &err) == 2);
+  CHECK(run_study("converge --N 600,900,1200 --out " + out.string() + " --cfl 9", &err) == 2);
   CHECK(err.find("--cfl") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
 }
@@ -295,11 +294,11 @@ TEST_CASE("converge: a rerun continues members from their checkpoints, bit-ident
   const fs::path whole = scratch("conv_whole"), parts = scratch("conv_parts");
   const std::string flags = "converge --N 100,150,200 --id 1log-trumpet --grid uniform --rmax 30 "
                             "--rahA 0.5 --rah0 0.7 --checkpoint-every 3 --dt-series 0.5 ";
-  const int whole_status = run(flags + "--tmax 20 --out " + whole.string());
+  const int whole_status = run_study(flags + "--tmax 20 --out " + whole.string());
   REQUIRE(completed(whole_status));
-  REQUIRE(completed(run(flags + "--tmax 10 --out " + parts.string())));
+  REQUIRE(completed(run_study(flags + "--tmax 10 --out " + parts.string())));
   std::string err;
-  REQUIRE(run(flags + "--tmax 20 --force --out " + parts.string(), &err) == whole_status);
+  REQUIRE(run_study(flags + "--tmax 20 --force --out " + parts.string(), &err) == whole_status);
   CHECK(err.find("member N = 150 resumes at t = 9") != std::string::npos);
   auto text = [](const fs::path& f) {
     std::ifstream in(f);

@@ -28,13 +28,10 @@ namespace fs = std::filesystem;
 namespace {
 
 using gbssn1d::testing::completed;
+using gbssn1d::testing::run_study;
 using gbssn1d::testing::scratch;
 using gbssn1d::testing::slurp;
 using gbssn1d::testing::summary_rows;
-
-int run(const std::string& args, std::string* err = nullptr) {
-  return gbssn1d::testing::run_study(args, err);
-}
 
 } // namespace
 
@@ -47,7 +44,7 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
         " --rahA 0.5 --rah0 0.6";
   std::string err;
   // members that did not complete make the sweep's exit status 3, and it says how many
-  REQUIRE(run(sweep, &err) == 3);
+  REQUIRE(run_study(sweep, &err) == 3);
   CHECK(err.find("members did not complete") != std::string::npos);
   const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
@@ -76,20 +73,20 @@ TEST_CASE("sweep: failing members are marked, the others finish, a rerun resumes
   // a second run skips finished members
   const auto stamp =
       fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat");
-  REQUIRE(run(sweep, &err) == 3);
+  REQUIRE(run_study(sweep, &err) == 3);
   CHECK(err.find("consistent_cfl=0.25 ok") == std::string::npos); // nothing reran
   CHECK(fs::last_write_time(out / "rah-variant=consistent_cfl=0.25" / "timeseries.dat") == stamp);
   // an unfinished member (no status) is rerun
   fs::remove(out / "logs" / "rah-variant=consistent_cfl=0.25.status");
   // ... and so is one whose status file is empty (a write cut short)
   std::ofstream(out / "logs" / "rah-variant=delta-rhs-from-gd_cfl=0.25.status").flush();
-  REQUIRE(run(sweep, &err) == 3);
+  REQUIRE(run_study(sweep, &err) == 3);
   CHECK(err.find("rah-variant=delta-rhs-from-gd_cfl=0.25 blew-up") != std::string::npos);
   CHECK(err.find("rah-variant=consistent_cfl=0.25 ok") != std::string::npos);
 
   // -j means nothing for task lines (the scheduler runs them) and is refused
   const fs::path tasks = scratch("tasks.txt");
-  CHECK(run(sweep + " --emit-tasks " + tasks.string(), &err) == 2);
+  CHECK(run_study(sweep + " --emit-tasks " + tasks.string(), &err) == 2);
   CHECK(err.find("-j") != std::string::npos);
   CHECK_FALSE(fs::exists(tasks));
   fs::remove_all(out);
@@ -151,7 +148,7 @@ TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --coll
                             " --dt-series 1 --dt-profiles 500 --rahA 0.5 --rah0 0.6"
                             " --checkpoint-every 5";
   const fs::path direct = scratch("sweep_direct"), queued = scratch("sweep_queued");
-  REQUIRE(run("sweep -j 2 --out " + direct.string() + flags) == 3);
+  REQUIRE(run_study("sweep -j 2 --out " + direct.string() + flags) == 3);
   // the lines, emitted from the scratch folder with a relative --out
   const fs::path tasks = scratch("sweep_tasks.txt");
   const std::string rel = fs::relative(queued, queued.parent_path()).string();
@@ -162,7 +159,7 @@ TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --coll
     REQUIRE(std::system(cmd.c_str()) == 0);
   }
   // before any line ran, --collect reports the members as missing (exit 1) and runs nothing
-  CHECK(run("sweep --out " + queued.string() + flags + " --collect") == 1);
+  CHECK(run_study("sweep --out " + queued.string() + flags + " --collect") == 1);
   CHECK_FALSE(fs::exists(queued / "rah-variant=consistent_cfl=0.25"));
   // only the 2 valid members are emitted; each line runs from another folder (/)
   const auto status = run_lines(tasks, "/");
@@ -173,7 +170,7 @@ TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --coll
   CHECK(fs::exists(queued / "logs" / "rah-variant=consistent_cfl=0.25.status"));
   // --collect gives the direct sweep's summary (wall time aside), the invalid member marked
   std::string err;
-  CHECK(run("sweep --out " + queued.string() + flags + " --collect", &err) == 3);
+  CHECK(run_study("sweep --out " + queued.string() + flags + " --collect", &err) == 3);
   CHECK(err.find("1 blew-up") != std::string::npos);
   CHECK(err.find("2 invalid") != std::string::npos);
   const auto a = without_wall(direct / "summary.dat", direct),
@@ -229,16 +226,16 @@ TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --coll
     text << log.rdbuf();
     CHECK(text.str().find("resuming") != std::string::npos);
   }
-  CHECK(run("sweep --out " + queued.string() + flags + " --collect") == 3);
+  CHECK(run_study("sweep --out " + queued.string() + flags + " --collect") == 3);
   CHECK(without_wall(queued / "summary.dat", queued) == a);
   // a member line of other flags than the folder's members were run with is refused
-  CHECK(run("sweep --out " + queued.string() + flags
-                + " --ko-sigma 0.2 --member "
-                  "rah-variant=consistent_cfl=0.25",
-            &err)
+  CHECK(run_study("sweep --out " + queued.string() + flags
+                      + " --ko-sigma 0.2 --member "
+                        "rah-variant=consistent_cfl=0.25",
+                  &err)
         == 2);
   CHECK(err.find("other inputs") != std::string::npos);
-  CHECK(run("sweep --out " + queued.string() + flags + " --member nobody", &err) == 2);
+  CHECK(run_study("sweep --out " + queued.string() + flags + " --member nobody", &err) == 2);
   CHECK(err.find("--member") != std::string::npos);
   fs::remove(tasks);
   fs::remove_all(direct);
@@ -247,9 +244,10 @@ TEST_CASE("sweep on a cluster: emitted lines run from any folder, resume, --coll
 
 TEST_CASE("sweep refuses a --sweep that names no flag") {
   std::string err;
-  CHECK(run("sweep --out " + scratch("sweep_bad").string() + " --sweep rahAA=1,2", &err) == 2);
+  CHECK(run_study("sweep --out " + scratch("sweep_bad").string() + " --sweep rahAA=1,2", &err)
+        == 2);
   CHECK(err.find("--sweep") != std::string::npos);
-  CHECK(run("sweep --out " + scratch("sweep_bad").string() + " --sweep rahA", &err) == 2);
+  CHECK(run_study("sweep --out " + scratch("sweep_bad").string() + " --sweep rahA", &err) == 2);
 }
 
 TEST_CASE("sweep: an invalid member before a valid one is marked invalid and the valid one runs, "
@@ -260,13 +258,13 @@ TEST_CASE("sweep: an invalid member before a valid one is marked invalid and the
       " --id 1log-trumpet --grid uniform --N 32 --rmax 8 --tmax 0.5 --out " + out.string();
   std::string err;
   // cfl 7 is refused by every member with it; 0.25 runs
-  CHECK(run("sweep --sweep cfl=7,0.25" + flags, &err) == 3);
+  CHECK(run_study("sweep --sweep cfl=7,0.25" + flags, &err) == 3);
   INFO(err);
   CHECK(err.find("1 invalid") != std::string::npos);
   CHECK(fs::exists(out / "cfl=0.25" / "timeseries.dat"));
   CHECK_FALSE(fs::exists(out / "cfl=7" / "timeseries.dat"));
   fs::remove_all(out);
-  CHECK(run("sweep --sweep cfl=7,8" + flags, &err) == 2);
+  CHECK(run_study("sweep --sweep cfl=7,8" + flags, &err) == 2);
   CHECK(err.find("no member is valid") != std::string::npos);
   CHECK_FALSE(fs::exists(out / "summary.dat"));
   fs::remove_all(out);
@@ -274,9 +272,9 @@ TEST_CASE("sweep: an invalid member before a valid one is marked invalid and the
 
 TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted orders") {
   const fs::path out = scratch("sweep_tied");
-  REQUIRE(run("sweep -j 2 --out " + out.string()
-              + " --sweep N=200,400 --sweep rahA,rah0=0:0.89,0.5:0.7 --id 1log-trumpet"
-                " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3")
+  REQUIRE(run_study("sweep -j 2 --out " + out.string()
+                    + " --sweep N=200,400 --sweep rahA,rah0=0:0.89,0.5:0.7 --id 1log-trumpet"
+                      " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3")
           == 0);
   const auto rows = summary_rows(out / "summary.dat");
   REQUIRE(rows.size() == 4);
@@ -294,15 +292,15 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
     CHECK(order == doctest::Approx(4.0).epsilon(0.15));
   }
   std::string err;
-  CHECK(run("sweep --out " + out.string() + " --sweep rahA,rah0=0:0.89,0.5", &err) == 2);
+  CHECK(run_study("sweep --out " + out.string() + " --sweep rahA,rah0=0:0.89,0.5", &err) == 2);
   CHECK(err.find("joined by ':'") != std::string::npos);
   // the member folders are named in the axes' order: --collect with the axes in another order
   // is refused, naming the order, and summary.dat stays as it was
   const std::string summary = slurp(out / "summary.dat");
-  CHECK(run("sweep --out " + out.string()
-                + " --sweep rahA,rah0=0:0.89,0.5:0.7 --sweep N=200,400 --id 1log-trumpet"
-                  " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3 --collect",
-            &err)
+  CHECK(run_study("sweep --out " + out.string()
+                      + " --sweep rahA,rah0=0:0.89,0.5:0.7 --sweep N=200,400 --id 1log-trumpet"
+                        " --grid sinh --dr-inner 0.04 --rmax 60 --tmax 3 --collect",
+                  &err)
         == 2);
   CHECK(err.find("in another order: give them as it did, N then rahA,rah0") != std::string::npos);
   CHECK(slurp(out / "summary.dat") == summary);
@@ -345,10 +343,10 @@ TEST_CASE("sweep and converge pass --config on: members' own flags override the 
                  conv_out = scratch("cfg_conv");
   std::ofstream(cfg) << "id = \"1log-trumpet\"\ngrid = \"uniform\"\nN = 120\nrmax = 20\ntmax = 1\n";
   std::string err;
-  REQUIRE(
-      run("sweep --out " + sweep_out.string() + " --config " + cfg.string() + " --sweep N=100,140",
-          &err)
-      == 0);
+  REQUIRE(run_study("sweep --out " + sweep_out.string() + " --config " + cfg.string()
+                        + " --sweep N=100,140",
+                    &err)
+          == 0);
   const auto rows = summary_rows(sweep_out / "summary.dat");
   REQUIRE(rows.size() == 2);
   CHECK(rows[0].find("100 ok") == 0);
@@ -357,7 +355,7 @@ TEST_CASE("sweep and converge pass --config on: members' own flags override the 
   const std::string text((std::istreambuf_iterator<char>(member_cfg)), {});
   CHECK(text.find("\nN = 140\n") != std::string::npos);
   CHECK(text.find("id = \"1log-trumpet\"") != std::string::npos);
-  REQUIRE(completed(run(
+  REQUIRE(completed(run_study(
       "converge --N 100,140,180 --out " + conv_out.string() + " --config " + cfg.string(), &err)));
   CHECK(fs::exists(conv_out / "N180" / "timeseries.dat"));
   fs::remove_all(sweep_out);
@@ -371,17 +369,17 @@ TEST_CASE("sweep: progress lines while members run, k of n as they finish, resum
       " --sweep N=1600,2000 --id 1log-trumpet --grid uniform --rmax 100 --tmax 30";
   std::string err;
   // each member takes about 0.6 s here, so a line every 0.1 s shows them running
-  REQUIRE(run("sweep -j 2 --progress-every 0.1 --out " + out.string() + members, &err) == 0);
+  REQUIRE(run_study("sweep -j 2 --progress-every 0.1 --out " + out.string() + members, &err) == 0);
   INFO(err);
   CHECK(err.find("gbssn1d sweep: 0 of 2 members done, 2 running (longest: N=")
         != std::string::npos);
   CHECK(err.find("] N=1600 ok") != std::string::npos);
   CHECK(err.find("[2/2]") != std::string::npos);
   // --progress-every 0: no progress lines; a rerun has nothing left to run
-  REQUIRE(run("sweep -j 2 --progress-every 0 --out " + out.string() + members, &err) == 0);
+  REQUIRE(run_study("sweep -j 2 --progress-every 0 --out " + out.string() + members, &err) == 0);
   CHECK(err.find("members done") == std::string::npos);
   CHECK(err.find("[") == std::string::npos);
-  CHECK(run("sweep --progress-every -1 --out " + out.string() + members, &err) == 2);
+  CHECK(run_study("sweep --progress-every -1 --out " + out.string() + members, &err) == 2);
   CHECK(err.find("--progress-every = -1 is invalid") != std::string::npos);
   fs::remove_all(out);
 }
@@ -392,11 +390,12 @@ TEST_CASE("sweep: progress lines while members run, k of n as they finish, resum
 TEST_CASE("sweep: members that are the same run (rahA = 0, other rah0) are said to be") {
   const fs::path out = scratch("sweep_same");
   std::string err;
-  REQUIRE(run("sweep -j 2 --out " + out.string()
-                  + " --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet --grid uniform"
-                    " --N 60 --rmax 20 --tmax 1",
-              &err)
-          == 0);
+  REQUIRE(
+      run_study("sweep -j 2 --out " + out.string()
+                    + " --sweep rahA=0,0.5 --sweep rah0=0.6,1.2 --id 1log-trumpet --grid uniform"
+                      " --N 60 --rmax 20 --tmax 1",
+                &err)
+      == 0);
   CHECK(err.find("rahA=0_rah0=0.6 = rahA=0_rah0=1.2 are the same run (rah0 does nothing there)")
         != std::string::npos);
   CHECK(err.find("rahA=0.5_rah0=0.6 =") == std::string::npos); // those two differ
@@ -418,7 +417,8 @@ TEST_CASE("sweep: a member whose constraints spike far above its neighbours' is 
   // B driven without the second derivatives of beta_H: H about 3000 times the others'
   const fs::path out = scratch("sweep_spike");
   std::string err;
-  REQUIRE(run("sweep -j 2 --out " + out.string()
+  REQUIRE(run_study(
+              "sweep -j 2 --out " + out.string()
                   + " --sweep rah-variant=consistent,no-shift-second-derivatives,driver-full-shift"
                     " --id maximal-trumpet --grid uniform --N 100 --rmax 20 --tmax 10"
                     " --dt-series 1 --rahA 0.5 --rah0 0.6",
@@ -518,7 +518,7 @@ TEST_CASE("sweep: a failed or killed member runs again from its checkpoint, a bl
     REQUIRE(fd >= 0);
     REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
     std::string err;
-    CHECK(run("sweep --out " + out.string() + flags + " --member " + good, &err) == 2);
+    CHECK(run_study("sweep --out " + out.string() + flags + " --member " + good, &err) == 2);
     CHECK(err.find("another process runs this member") != std::string::npos);
     CHECK(recorded_status(out / "logs" / (good + ".status")) == "failed");
     ::close(fd);
@@ -526,7 +526,7 @@ TEST_CASE("sweep: a failed or killed member runs again from its checkpoint, a bl
 
   // the rerun runs the failed member again, resuming from its checkpoint, and leaves the
   // blown-up one alone (rerunning it would blow up again)
-  CHECK(run("sweep -j 2 --out " + out.string() + flags) == 3);
+  CHECK(run_study("sweep -j 2 --out " + out.string() + flags) == 3);
   CHECK(recorded_status(out / "logs" / (good + ".status")) == "ok");
   CHECK(slurp(out / "logs" / (good + ".log")).find("resuming") != std::string::npos);
   CHECK(fs::last_write_time(out / bad / "timeseries.dat") == bad_stamp);
@@ -539,7 +539,7 @@ TEST_CASE("sweep: a failed or killed member runs again from its checkpoint, a bl
   CHECK(wall_after > wall_before); // the member's total over both attempts
   // the finished member is not run a third time
   const auto good_stamp = fs::last_write_time(out / good / "timeseries.dat");
-  CHECK(run("sweep -j 2 --out " + out.string() + flags) == 3);
+  CHECK(run_study("sweep -j 2 --out " + out.string() + flags) == 3);
   CHECK(fs::last_write_time(out / good / "timeseries.dat") == good_stamp);
   fs::remove(done_flag);
   fs::remove_all(out);
