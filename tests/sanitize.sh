@@ -46,9 +46,9 @@ export ASAN_OPTIONS="log_path=$logs/asan:exitcode=86:detect_leaks=1:strict_strin
 export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1:exitcode=86"
 status=0
 # ctest's -j balances the cases over the cores. Without --full: the doctest cases (-LE script)
-# but the slowest under the sanitizers (17-650 s each; the rest took 278 s on 2 idle cores in
-# CI on 2026-11-27, before the last five below joined the list): convergence studies at several resolutions and study drivers whose code the faster
-# cases run too (the same RHS, transfer and time-interpolation kernels, converge's and sweep's
+# but the slowest under the sanitizers (17-650 s each; the other 195 took 276 s in CI on
+# 2026-11-27, 1843e04, on 2 cores shared with the planted-mistake stage): convergence studies
+# at several resolutions and study drivers whose code the faster cases run too (the same RHS, transfer and time-interpolation kernels, converge's and sweep's
 # member handling, emitted task lines, signals), the resumed progress line's speed (300 s:
 # two runs long enough to show a terminal's progress; the resume it exercises runs elsewhere),
 # the 10 M trumpet evolution (49 s: the same RHS and stepping as the 1 M runs of the
