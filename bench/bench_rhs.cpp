@@ -5,7 +5,8 @@
 // Evaluates the full grid RHS (derivatives, upwinding, equations, dissipation, boundary) on
 // 1+log-trumpet data on a sinh grid, for N = 256, 1024, 4096, and also one RK4 step's cost;
 // for the plain Gamma-driver and with the horizon-adjusting shift (rahA = 0.5, rah0 = 0.89:
-// the horizon search on every evaluation and the split shift included).
+// the horizon search on every evaluation and the split shift included); each --fd-order, each
+// --upwind pair, each --formulation, and whole runs on nested boxes.
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
 
@@ -138,6 +139,25 @@ int main(int argc, char** argv) {
       const double rate = static_cast<double>(evals) * n / elapsed;
       fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", upwind, horizon_shift ? "horizon" : "plain",
                  n, evals, elapsed, rate, 1e9 / rate);
+    }
+  // The formulations (--formulation): Z4c evolves Theta besides, plain and with the horizon
+  // shift, on the largest size.
+  fmt::print("# --formulation: N = {}\n", sizes.back());
+  fmt::print("# formulation shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+  for (const bool horizon_shift : {false, true})
+    for (const char* formulation : {"bssn", "z4c"}) {
+      const int n = sizes.back();
+      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+      p.dr_inner = 0.01;
+      p.tmax = 0.0;
+      p.formulation = FormulationChoice::parse(formulation);
+      resolve_defaults(p);
+      validate(p);
+      Simulation sim(evolution_config(p));
+      const auto [evals, elapsed] = time_rhs(sim, seconds);
+      const double rate = static_cast<double>(evals) * n / elapsed;
+      fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", formulation,
+                 horizon_shift ? "horizon" : "plain", n, evals, elapsed, rate, 1e9 / rate);
     }
   // Nested boxes: whole runs of the hierarchy to 100 M (every level, subcycled, with
   // prolongation, restriction, stage-value time interpolation, the horizon searches and the

@@ -42,6 +42,11 @@ What is checked (each prints PASS/FAIL):
   V7  parity / regularity: every RHS has the parity of its variable, and all
       RHS are finite at r=0 for regular (even/odd Taylor) data; the local
       flatness conditions a-b=O(r^2), A_a=O(r^2) are preserved.
+  V8  Z4c with constraint damping (Sec. 17): the 1D right-hand sides equal the 3D covariant
+      Z4c ones (Hilditch et al. 2013, eq. (5), in Brown's form) on a diagonal spherical metric;
+      with Theta = 0 and Delta^r = Delta_gamma^r they are BSSN's, and d_t Theta = (alpha/2) H
+      (so the exact data of V5, V6 are stationary); the constraint subsystem's identities
+      (I1)-(I3) hold for arbitrary data.
 """
 import os
 import sys
@@ -216,6 +221,23 @@ def misner_sharp(a, b, phi, K, Ab):
     return R/2*(1 - D(R)**2/(sp.exp(4*phi)*a) + R**2*Ktt**2)
 
 
+def rhs_z4c_1d(a, b, phi, Kh, Th, Aa, L, alpha, beta, k1, k2):
+    """Z4c field RHS (Sec. 17), A_b = -A_a/2: BSSN's with K = K-hat + 2 Theta wherever K is
+    undifferentiated (Z1), d_t K-hat advecting K-hat and damped (Z2), Theta's equation (Z3), and
+    Delta^r's with -(2/3)(alpha/a) d_r(2 K-hat + Theta) and the damping -2 alpha kappa1 G^r (Z4)."""
+    K = Kh + 2*Th
+    o = rhs_1d(a, b, phi, K, Aa, -Aa/2, L, alpha, beta)
+    R = Ricci_rr(a, b, phi, L) + 2*Ricci_thth(a, b, phi, L)
+    out = {'phi': o['phi'], 'a': o['a'], 'b': o['b'], 'Aa': o['Aa']}
+    out['K'] = (beta*D(Kh) - lap_alpha(a, b, phi, alpha) + alpha*(sp.Rational(3, 2)*Aa**2 + K**2/3)
+                + alpha*k1*(1 - k2)*Th)
+    out['L'] = (o['L'] + sp.Rational(4, 3)*alpha*D(K)/a - sp.Rational(2, 3)*alpha*D(2*Kh + Th)/a
+                - 2*alpha*k1*(L - Delta_gamma(a, b)))
+    out['Theta'] = (beta*D(Th) + alpha/2*(R - sp.Rational(3, 2)*Aa**2 + sp.Rational(2, 3)*K**2)
+                    - alpha*k1*(2 + k2)*Th)
+    return out
+
+
 # chi versions (as written in the .md)
 def rhs_chi(a, b, chi, K, alpha, beta):
     return beta*D(chi) + sp.Rational(2, 3)*chi*(alpha*K - divbeta(a, b, beta))
@@ -381,6 +403,30 @@ def brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u):
     out['Rij'] = Rij
     out['Rphys_direct'] = Rphys_direct
     out['Delta_u'] = Du
+    return out
+
+
+def brown_z4c_rhs_3d(gb, gh, Abar, phi, Kh, Th, Lam, alpha, beta_u, k1, k2):
+    """Z4c (Bernuzzi & Hilditch 2010; Hilditch et al. 2013, eq. (5)) in the covariant form of
+    brown_bssn_rhs_3d, full 3D index sums: the BSSN equations with K = K-hat + 2 Theta, then in
+    tensor form d_t K-hat's advection of K-hat and its damping alpha kappa1 (1 - kappa2) Theta,
+    Lambda's -(2/3) alpha gbar^ij d_j(2 K-hat + Theta) in place of -(4/3) alpha gbar^ij d_j K and
+    its damping -2 alpha kappa1 (Lambda^i - Delta^i), and
+    d_t Theta = beta^k d_k Theta + (alpha/2)(R - Abar_ij Abar^ij + (2/3) K^2)
+                - alpha kappa1 (2 + kappa2) Theta, R from R_ij with the evolved Lambda."""
+    K = Kh + 2*Th
+    out = brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u)
+    gbi = gb.inv()
+    Auu = gbi*Abar*gbi
+    AA = sum(Abar[i, j]*Auu[i, j] for i in range(3) for j in range(3))
+    adv = lambda f: sum(beta_u[k]*pd(f, k) for k in range(3))
+    out['K'] = out['K'] - adv(2*Th) + alpha*k1*(1 - k2)*Th
+    out['L'] = [out['L'][i]
+                + sum(gbi[i, j]*(sp.Rational(4, 3)*alpha*pd(K, j)
+                                 - sp.Rational(2, 3)*alpha*pd(2*Kh + Th, j)) for j in range(3))
+                - 2*alpha*k1*(Lam[i] - out['Delta_u'][i]) for i in range(3)]
+    Rscalar = sp.exp(-4*phi)*sum(gbi[i, j]*out['Rij'][i, j] for i in range(3) for j in range(3))
+    out['Theta'] = adv(Th) + alpha/2*(Rscalar - AA + sp.Rational(2, 3)*K**2) - alpha*k1*(2 + k2)*Th
     return out
 
 
@@ -830,6 +876,55 @@ report(okC, 'd_t (a-b) = O(r^2)  (local flatness a(0)=b(0) is preserved)')
 report(okD, 'H finite, M_r = O(r), G^r = O(r) at r=0 for regular data')
 report(okE, 'R^r_r and R^theta_theta individually finite at r=0')
 report(okF, 'Theta_+ ~ 2 e^{-2phi}/(sqrt(a) r) as r -> 0')
+print(f'      ({time.time()-t:.1f}s)', flush=True)
+
+# ============================================================================
+print('=== V8: Z4c with constraint damping (Sec. 17) ===', flush=True)
+t = time.time()
+fKh, fTh = [sp.Function(n)(r) for n in ['Khat', 'Theta']]
+k1, k2 = sp.symbols('kappa1 kappa2')
+Abar_z = sp.diag(fa*fAa, r**2*fb*(-fAa/2), r**2*fb*(-fAa/2)*sp.sin(th)**2)
+Z3 = brown_z4c_rhs_3d(sph_diag(fa, fb), sph_diag(1, 1), Abar_z, fphi, fKh, fTh, [fL, 0, 0], fal,
+                      [fbe, 0, 0], k1, k2)
+z1 = rhs_z4c_1d(fa, fb, fphi, fKh, fTh, fAa, fL, fal, fbe, k1, k2)
+report(zero(Z3['phi'] - z1['phi']), 'Z4c 3D == 1D: d_t phi (K = K-hat + 2 Theta)')
+report(zero(Z3['gb'][0, 0] - z1['a']) and zero(Z3['gb'][1, 1]/r**2 - z1['b']), 'Z4c 3D == 1D: d_t a, d_t b')
+report(zero(Z3['K'] - z1['K']), 'Z4c 3D == 1D: d_t K-hat')
+report(zero((Z3['Abar'][0, 0] - fAa*Z3['gb'][0, 0])/fa - z1['Aa']), 'Z4c 3D == 1D: d_t A_a')
+report(zero(Z3['L'][0] - z1['L']) and zero(Z3['L'][1]) and zero(Z3['L'][2]), 'Z4c 3D == 1D: d_t Delta^r (Lambda^theta = Lambda^phi = 0)')
+report(zero(Z3['Theta'] - z1['Theta']), 'Z4c 3D == 1D: d_t Theta')
+# Theta = 0 and Delta^r = Delta_gamma^r (no constraint violation of Z4's kind): Z4c is BSSN, and
+# d_t Theta = (alpha/2) H, so that exact data (V5, V6: BSSN-stationary with H = 0) are Z4c-stationary
+Lg = Delta_gamma(fa, fb)
+zb = rhs_z4c_1d(fa, fb, fphi, fK, 0, fAa, Lg, fal, fbe, k1, k2)
+ob = rhs_1d(fa, fb, fphi, fK, fAa, -fAa/2, Lg, fal, fbe)
+report(all(zero(zb[k] - ob[k]) for k in ['phi', 'a', 'b', 'K', 'Aa', 'L']),
+       'Theta = 0, G^r = 0: the Z4c RHS equal the BSSN RHS (every field, any kappa1, kappa2)')
+report(zero(zb['Theta'] - fal/2*hamiltonian(fa, fb, fphi, fK, fAa, -fAa/2, Lg)),
+       'Theta = 0, G^r = 0: d_t Theta = (alpha/2) H')
+# Constraint subsystem, arbitrary data (Theta, G^r != 0): with K = K-hat + 2 Theta and
+# G^r = Delta^r - Delta_gamma^r,
+#  (I1) d_t(K-hat + 2 Theta) = [beta K' - D^2 alpha + alpha (R[metric] + K^2)] (ADM's d_t K before
+#       the Hamiltonian constraint is used) + alpha e^{-4 phi}(d_r G^r + 2 G^r/r) - 3 alpha kappa1 (1 + kappa2) Theta
+#  (I3) d_t Theta - beta Theta' + alpha kappa1 (2 + kappa2) Theta = (alpha/2)[H + e^{-4 phi}(d_r G^r + 2 G^r/r)]
+#  (I2) at G^r = 0: d_t Delta^r - d_t[Delta_gamma^r(a, b)] = (2 alpha/a)(M_r + d_r Theta) (Z4's
+#       d_t Z_r = alpha (M_r + d_r Theta) + ..., Delta^r - Delta_gamma^r = 2 gbar^rr Z_r), and
+#       d(d_t Delta^r)/d kappa1 = -2 alpha G^r
+K_ = fKh + 2*fTh
+Gr = gconstraint(fa, fb, fL)
+divG = sp.exp(-4*fphi)*(D(Gr) + 2*Gr/r)
+adm_dtK = fbe*D(K_) - lap_alpha(fa, fb, fphi, fal) + fal*(Ricci_scalar_metric(fa, fb, fphi) + K_**2)
+report(zero(z1['K'] + 2*z1['Theta'] - adm_dtK - fal*divG + 3*fal*k1*(1 + k2)*fTh),
+       '(I1) d_t(K-hat + 2 Theta) = ADM d_t K + alpha e^{-4phi} div G - 3 alpha kappa1 (1 + kappa2) Theta')
+report(zero(z1['Theta'] - fbe*D(fTh) + fal*k1*(2 + k2)*fTh
+            - fal/2*(hamiltonian(fa, fb, fphi, K_, fAa, -fAa/2, Lg) + divG)),
+       '(I3) d_t Theta = beta Theta\' + (alpha/2)(H + e^{-4phi} div G) - alpha kappa1 (2 + kappa2) Theta')
+zg = rhs_z4c_1d(fa, fb, fphi, fKh, fTh, fAa, Lg, fal, fbe, k1, k2)
+sub_z = {fa: fa + eps*zg['a'], fb: fb + eps*zg['b']}
+dtDg_z = sp.diff(Lg.xreplace(sub_z).doit(), eps).subs(eps, 0)
+report(zero(zg['L'] - dtDg_z - 2*fal/fa*(momentum(fa, fb, fphi, K_, fAa, -fAa/2) + D(fTh))),
+       '(I2) G^r = 0: d_t Delta^r - d_t Delta_gamma^r = (2 alpha/a)(M_r + d_r Theta)')
+report(zero(sp.diff(z1['L'], k1) + 2*fal*Gr), '(I2) the damping of Delta^r: d/dkappa1 d_t Delta^r = -2 alpha G^r')
 print(f'      ({time.time()-t:.1f}s)', flush=True)
 
 print(f'\nTotal time {time.time()-T0:.1f}s;  failures: {NFAIL}')

@@ -122,7 +122,7 @@ int evolve(Params p, bool print_config) {
   write_file_atomically(dir / "config.toml", header_text("") + config);
   if (hAH_content)
     write_file_atomically(dir / prescribed_horizon_copy, *hAH_content);
-  Output out(dir, config + sim.run_facts());
+  Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation);
   sim.checkpoint_config =
       config + (hAH_content ? fmt::format("{}{}\n", copy_hash_key, copy_hash(*hAH_content)) : "");
   return run_and_report(sim, out, p);
@@ -350,7 +350,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   write_file_atomically(dir / "config.toml", header_text("") + config);
   say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, time_text(c.t), c.step,
       time_text(p.tmax));
-  Output out(dir, config + sim.run_facts(), c.marks);
+  Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation, c.marks);
   return run_and_report(sim, out, p);
 }
 

@@ -60,6 +60,8 @@ inline const Choices<mesh::TimeInterpolation> time_interp_choices{
     {"rk-stages", mesh::TimeInterpolation::rk_stages},
     {"dense", mesh::TimeInterpolation::dense_output},
     {"quadratic", mesh::TimeInterpolation::quadratic}};
+inline const Choices<Formulation> formulation_choices{{"bssn", Formulation::bssn},
+                                                      {"z4c", Formulation::z4c}};
 inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
                                                 {"biased", fd::Upwind::biased}};
 inline const Choices<AdvectionStencil> stencil_choices{
@@ -138,6 +140,7 @@ using TaperChoice = Choice<Taper, taper_choices>;
 using NormalChoice = Choice<ShiftNormal, normal_choices>;
 using TimeInterpChoice = Choice<mesh::TimeInterpolation, time_interp_choices>;
 using UpwindChoice = Choice<fd::Upwind, upwind_choices>;
+using FormulationChoice = Choice<Formulation, formulation_choices>;
 using StencilChoice = Choice<AdvectionStencil, stencil_choices>;
 using DriverStencilChoice = Choice<AdvectionStencil, driver_stencil_choices>;
 using VariantChoice = Choice<ShiftVariant, variant_choices>;

@@ -23,6 +23,8 @@ bool acts(Acts where, const Params& p) {
     return p.grid == RadialGrid::sinh;
   case Acts::with_wormhole:
     return p.id == InitialDataKind::wormhole;
+  case Acts::with_z4c:
+    return z4c_on(p);
   }
   return true;
 }
@@ -45,6 +47,9 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
             "only the sinh grid has an innermost width to set, and only boxes have boxes"};
   case Acts::with_wormhole:
     return {"with --id " + p.id.name(), "the trumpets' data fix their own lapse"};
+  case Acts::with_z4c:
+    return {"with --formulation " + p.formulation.name(),
+            "BSSN has no constraint damping (give --formulation z4c)"};
   case Acts::always:
     break;
   }
@@ -90,6 +95,16 @@ std::vector<ParamSpec> evolution_specs() {
       {"M", &Params::M, "Initial data", "black-hole mass"},
       {"lapse0", &Params::lapse0, "Initial data",
        "initial lapse of the wormhole: one | precollapsed", Acts::with_wormhole},
+      {"formulation", &Params::formulation, "Formulation",
+       "bssn | z4c (Z4c: K-hat = K - 2 Theta and Theta evolved, constraint damping kappa1, "
+       "kappa2; docs/gbssn1d-equations.md Sec. 17)"},
+      {"kappa1", &Params::kappa1, "Formulation",
+       "Z4c: constraint damping kappa1 (1/length, as --eta), >= 0: Theta and G^r decay at "
+       "~ alpha kappa1",
+       Acts::with_z4c},
+      {"kappa2", &Params::kappa2, "Formulation",
+       "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard)",
+       Acts::with_z4c},
       {"eta", &Params::eta, "Gauge",
        "Gamma-driver damping eta (1/M); default 2/M, 1/M for a shrink of wormhole data "
        "(--rahA != 0, --rah0 < 0.8304 M)"},

@@ -37,6 +37,7 @@ enum class Acts {
   on_boxes,           ///< --grid boxes
   on_sinh,            ///< --grid sinh
   with_wormhole,      ///< --id wormhole
+  with_z4c,           ///< --formulation z4c
 };
 
 /// Whether a flag that acts `where` acts in `p`.
@@ -57,7 +58,8 @@ struct ParamSpec {
                GridChoice Params::*, TimeInterpChoice Params::*, InitialDataChoice Params::*,
                LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
                ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
-               StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*>
+               StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*,
+               FormulationChoice Params::*>
       member;
   const char* group;
   const char* help;

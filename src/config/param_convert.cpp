@@ -105,6 +105,9 @@ InitialDataParams initial_data_params(const Params& p) {
 
 RhsParams rhs_params(const Params& p) {
   RhsParams r;
+  r.formulation = p.formulation.value();
+  r.damping.kappa1 = p.kappa1;
+  r.damping.kappa2 = p.kappa2;
   r.gauge.shift.eta = p.eta.value();
   r.gauge.shift.advective = p.advective_shift;
   r.gauge.slicing.advective = !p.non_advective_lapse;

@@ -48,6 +48,10 @@ struct Params {
   InitialDataChoice id = InitialDataKind::wormhole; ///< wormhole | maximal-trumpet | 1log-trumpet
   double M = evolution_defaults().initial_data.M;
   LapseChoice lapse0 = InitialLapse::precollapsed; ///< one | precollapsed (wormhole)
+  // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/M) and kappa2
+  FormulationChoice formulation = Formulation::bssn; ///< bssn | z4c
+  double kappa1 = evolution_defaults().rhs.damping.kappa1;
+  double kappa2 = evolution_defaults().rhs.damping.kappa2;
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
   std::optional<double> eta;
@@ -133,6 +137,11 @@ public:
 private:
   std::string flag_;
 };
+
+/// The Z4c equations: --kappa1 and --kappa2 act only then.
+inline bool z4c_on(const Params& p) {
+  return p.formulation == Formulation::z4c;
+}
 
 /// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.
 inline bool shift_on(const Params& p) {

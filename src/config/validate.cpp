@@ -191,6 +191,22 @@ void validate_horizon_shift(const Params& p) {
   require_choice("--driver-advection", p.driver_advection);
   require_choice("--delta-advection", p.delta_advection);
   require_choice("--upwind", p.upwind);
+  require_choice("--formulation", p.formulation);
+  require_finite("--kappa1", p.kappa1);
+  if (p.kappa1 < 0.0)
+    throw ParamError("--kappa1", num(p.kappa1),
+                     "must be >= 0 (a negative kappa1 makes the constraints grow)");
+  require_finite("--kappa2", p.kappa2);
+  if (!(p.kappa2 > -1.0))
+    throw ParamError("--kappa2", num(p.kappa2),
+                     "must be > -1 (the damping of Theta in Z4c's constraint subsystem needs it)");
+  if (z4c_on(p) && shift_on(p) && p.rah_variant != ShiftVariant::consistent
+      && p.rah_variant != ShiftVariant::midstep_update
+      && p.rah_variant != ShiftVariant::box_substage)
+    throw ParamError("--formulation", p.formulation.name(),
+                     fmt::format("--rah-variant {} is a study variant of the BSSN equations; with "
+                                 "z4c take consistent, midstep-update or box-substage",
+                                 p.rah_variant.name()));
   if (p.upwind == fd::Upwind::biased && shift_on(p) && p.rah_variant != ShiftVariant::consistent
       && p.rah_variant != ShiftVariant::midstep_update
       && p.rah_variant != ShiftVariant::box_substage)

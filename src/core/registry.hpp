@@ -4,21 +4,25 @@
 // in output headers, its parity at r = 0 (equations document, Sec. 7) and its asymptotic value,
 // wave family and fall-off for the Sommerfeld outer boundary (Sec. 8); the family's speed comes
 // from the gauge (Gauge::speed, gbssn/rhs_params.hpp). Ghost zones, point data, boundary
-// conditions and output columns are all driven from this table.
+// conditions and output columns are all driven from this table. A formulation evolves the first
+// n_evolved(f) rows: BSSN all but Theta, Z4c all (with K-hat = K - 2 Theta in K's row, Sec. 17).
 #pragma once
 
+#include "core/formulation.hpp"
 #include "core/wave.hpp"
 
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace gbssn1d {
 
-enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r };
+enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r, Theta };
 
-inline constexpr std::size_t n_vars = 9;
+/// Every variable any formulation evolves; a state holds the first n_evolved() of them.
+inline constexpr std::size_t n_vars = 10;
 
 struct VarInfo {
   Var var;
@@ -41,6 +45,8 @@ inline constexpr std::array<VarInfo, n_vars> registry{{
     {Var::K, "K", +1, 0.0, Wave::slicing, 1.0},
     {Var::A_a, "A_a", +1, 0.0, Wave::light, 1.0},
     {Var::Delta_r, "Delta_r", -1, 0.0, Wave::shift, 1.0},
+    // Z4c only (Sec. 17): the constraint Theta propagates at the speed of light
+    {Var::Theta, "Theta", +1, 0.0, Wave::light, 1.0},
 }};
 
 constexpr std::size_t index(Var v) {
@@ -48,6 +54,25 @@ constexpr std::size_t index(Var v) {
 }
 constexpr const VarInfo& info(Var v) {
   return registry[index(v)];
+}
+
+/// How many variables formulation f evolves: the registry's first rows.
+constexpr std::size_t n_evolved(Formulation f) {
+  return f == Formulation::z4c ? n_vars : n_vars - 1;
+}
+
+/// The registry rows formulation f evolves, in order.
+constexpr std::span<const VarInfo> evolved(Formulation f) {
+  return {registry.data(), n_evolved(f)};
+}
+
+/// The formulation whose state holds `n_fields` variables (a state's size over the points).
+constexpr std::optional<Formulation> formulation_with(std::size_t n_fields) {
+  if (n_fields == n_evolved(Formulation::bssn))
+    return Formulation::bssn;
+  if (n_fields == n_evolved(Formulation::z4c))
+    return Formulation::z4c;
+  return std::nullopt;
 }
 
 /// One number per evolved variable, indexed by the registry: values[index(v)] is v's.

@@ -16,8 +16,12 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
   out.G_r.resize(n);
   out.R_areal.resize(n);
   out.Theta_plus.resize(n);
+  if (formulation_of(u, grid) == Formulation::z4c) {
+    const auto theta = field(u, grid, Var::Theta).subspan(grid.first_interior(), n);
+    out.Theta.assign(theta.begin(), theta.end());
+  }
   for (std::size_t k = 0; k < n; ++k) {
-    const PointData p = point_data(u, grid, grid.first_interior() + k);
+    const PointData p = adm_point_data(u, grid, grid.first_interior() + k);
     const Constraints c = constraints(p);
     out.H[k] = c.H;
     out.M_r[k] = c.M_r;

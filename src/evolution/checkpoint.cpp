@@ -246,10 +246,11 @@ constexpr std::size_t legacy_ghosts = 3;
 /// them but their own boundary condition, so the run continues as it would have.
 void widen_legacy_ghosts(State& u, const Grid& grid) {
   const std::size_t n = grid.n_interior(), old_total = n + 2 * legacy_ghosts;
-  if (u.size() != n_vars * old_total || grid.n_total() == old_total)
+  constexpr std::size_t n_fields = n_evolved(Formulation::bssn); // legacy files are BSSN's
+  if (u.size() != n_fields * old_total || grid.n_total() == old_total)
     return;
-  State w(n_vars * grid.n_total(), 0.0);
-  for (std::size_t v = 0; v < n_vars; ++v) {
+  State w(n_fields * grid.n_total(), 0.0);
+  for (std::size_t v = 0; v < n_fields; ++v) {
     const double* from = u.data() + v * old_total;
     double* to = w.data() + v * grid.n_total();
     for (std::size_t k = 0; k < n + legacy_ghosts; ++k) // interior and the old outer ghosts

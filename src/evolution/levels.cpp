@@ -47,10 +47,11 @@ std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::
   return rhs;
 }
 
-std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id) {
+std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id,
+                                  Formulation formulation) {
   std::vector<State> u;
   for (std::size_t l = 0; l < layout.levels(); ++l)
-    u.push_back(initial_data(layout.grid(l), id));
+    u.push_back(initial_data(layout.grid(l), id, formulation));
   return u;
 }
 

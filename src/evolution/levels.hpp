@@ -35,7 +35,8 @@ using LevelHorizonSource = std::function<std::optional<double>(
 std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::MeshLayout& layout,
                                      const LevelHorizonSource& source);
 /// The initial data on every level.
-std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id);
+std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id,
+                                  Formulation formulation);
 /// The stepper's view of each level's RHS (which must outlive it).
 std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs);
 

@@ -54,13 +54,20 @@ DerivedProfiles composite_profiles(const mesh::MeshLayout& layout, const mesh::C
   c.G_r = gather(&DerivedProfiles::G_r);
   c.R_areal = gather(&DerivedProfiles::R_areal);
   c.Theta_plus = gather(&DerivedProfiles::Theta_plus);
+  if (!levels.front().Theta.empty())
+    c.Theta = gather(&DerivedProfiles::Theta);
   return c;
 }
 
 double value_at_radius(const mesh::MeshLayout& layout, const std::vector<State>& levels, Var v,
                        double r) {
   const std::size_t l = layout.finest_level_covering(r, sample_margin_cells);
-  return interpolate_at_radius(layout.grid(l), field(levels[l], layout.grid(l), v), r);
+  const Grid& g = layout.grid(l);
+  const double value = interpolate_at_radius(g, field(levels[l], g, v), r);
+  // K is the ADM K = K-hat + 2 Theta in Z4c (Z1), as in profiles.dat
+  if (v == Var::K && formulation_of(levels[l], g) == Formulation::z4c)
+    return value + 2.0 * interpolate_at_radius(g, field(levels[l], g, Var::Theta), r);
+  return value;
 }
 
 double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProfiles>& levels,
@@ -130,6 +137,12 @@ SeriesRow SeriesDiagnostics::row(const std::vector<State>& levels, double t,
   row.H_L2_R = l2_norm_areal(d.H, d.R_areal, w.Rmin, w.Rmax);
   row.M_L2_R = l2_norm_areal(d.M_r, d.R_areal, w.Rmin, w.Rmax);
   row.H_L2_int = l2_norm_interior(d.H, d.R_areal, g, w.Rint);
+  // Z4c's own (Sec. 17): G^r and Theta in the areal window, Theta in the coordinate one
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool z4c = !d.Theta.empty();
+  row.G_L2_R = z4c ? l2_norm_areal(d.G_r, d.R_areal, w.Rmin, w.Rmax) : nan;
+  row.Theta_L2_ext = z4c ? l2_norm(d.Theta, g, w.rmin, w.rmax) : nan;
+  row.Theta_L2_R = z4c ? l2_norm_areal(d.Theta, d.R_areal, w.Rmin, w.Rmax) : nan;
   // d_t alpha on every level with the h_AH the evolution would use now
   std::vector<std::span<const double>> dt_alpha_levels;
   for (std::size_t l = 0; l < layout_.levels(); ++l) {
@@ -168,7 +181,7 @@ void check_physical_range(const mesh::MeshLayout& layout, const std::vector<Stat
     const State& u = levels[l];
     const std::string where = layout.levels() > 1 ? fmt::format(" (box {})", l) : "";
     for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
-      for (const auto& entry : registry)
+      for (const auto& entry : state_vars(u, g))
         if (!std::isfinite(field(u, g, entry.var)[i]))
           throw NonFiniteError(t, g.r()[i], std::string(entry.name) + where);
     const auto chi = field(u, g, Var::chi), alpha = field(u, g, Var::alpha);

@@ -28,7 +28,8 @@ Simulation::Simulation(const EvolutionConfig& config)
                                  std::uint64_t evaluation, std::optional<double> held) {
                             return tracker_.at_evaluation(l, u, g, t, evaluation, held);
                           })),
-      diagnostics_(config_, layout_), levels_u_(initial_levels(layout_, config.initial_data)),
+      diagnostics_(config_, layout_),
+      levels_u_(initial_levels(layout_, config.initial_data, config.rhs.formulation)),
       tracker_(config_, layout_, levels_u_, rhs_),
       schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, config.stepping))),
       stepper_(layout_, level_functors(rhs_), config.stepping), clock_(config_, schedule_.dt),

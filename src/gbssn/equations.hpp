@@ -120,19 +120,16 @@ inline double rhs_Delta_r(const PointData& p, const MetricPieces& m, const Shift
   return lie_derivative + flat_laplacian_of_shift + lagrangian_terms + lapse_and_curvature;
 }
 
-/// The complete right-hand side at one point: fields (C1), (E2)-(E6) with the full shift,
-/// gauge (G1)-(G3). `gauge_shift` is the part of the shift whose d_t Delta^r drives B (Sec. 14,
-/// (H2)); pass full_shift(p) for the plain Gamma-driver.
-inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_shift) {
+/// (C1), (E2)-(E5): the right-hand sides of chi, a, b, K and A_a with the full shift, whose
+/// divergence is `div_beta`, into `rhs`; `trace_K` is the K of the undifferentiated terms:
+/// p.f[K] for BSSN, K-hat + 2 Theta for Z4c (Z1).
+[[gnu::always_inline]] inline void metric_and_curvature_rhs(const PointData& p,
+                                                            const MetricPieces& m, double div_beta,
+                                                            double trace_K, Rhs& rhs) {
   using enum Var;
-  const MetricPieces m = metric_pieces(p);
-  const Shift shift = full_shift(p);
-  const double div_beta = divbeta(p, m, shift);
   const double AA = 1.5 * p.f[A_a] * p.f[A_a]; // A_a^2 + 2 A_b^2
-
-  Rhs rhs;
   // (C1)
-  rhs[chi] = p.adv[chi] + (2.0 / 3.0) * p.f[chi] * (p.f[alpha] * p.f[K] - div_beta);
+  rhs[chi] = p.adv[chi] + (2.0 / 3.0) * p.f[chi] * (p.f[alpha] * trace_K - div_beta);
   // (E2)
   rhs[a] = p.adv[a] + 2.0 * p.f[a] * p.d[beta] - (2.0 / 3.0) * p.f[a] * div_beta
            - 2.0 * p.f[alpha] * p.f[a] * p.f[A_a];
@@ -140,11 +137,22 @@ inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_
   rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - (2.0 / 3.0) * p.f[b] * div_beta
            + p.f[alpha] * p.f[b] * p.f[A_a];
   // (E4)
-  rhs[K] = p.adv[K] - lap_alpha(p, m) + p.f[alpha] * (AA + p.f[K] * p.f[K] / 3.0);
+  rhs[K] = p.adv[K] - lap_alpha(p, m) + p.f[alpha] * (AA + trace_K * trace_K / 3.0);
   // (E5), trace-free form
   rhs[A_a] = p.adv[A_a] - (2.0 / 3.0) * hessian_alpha_tracefree(p, m)
              + (2.0 / 3.0) * p.f[alpha] * (ricci_rr(p, m) - ricci_thth(p, m))
-             + p.f[alpha] * p.f[K] * p.f[A_a];
+             + p.f[alpha] * trace_K * p.f[A_a];
+}
+
+/// The complete right-hand side at one point: fields (C1), (E2)-(E6) with the full shift,
+/// gauge (G1)-(G3). `gauge_shift` is the part of the shift whose d_t Delta^r drives B (Sec. 14,
+/// (H2)); pass full_shift(p) for the plain Gamma-driver.
+inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_shift) {
+  using enum Var;
+  const MetricPieces m = metric_pieces(p);
+  const Shift shift = full_shift(p);
+  Rhs rhs;
+  metric_and_curvature_rhs(p, m, divbeta(p, m, shift), p.f[K], rhs);
   // (E6)
   rhs[Delta_r] = rhs_Delta_r(p, m, shift);
 
@@ -177,18 +185,20 @@ inline Constraints constraints(const PointData& p) {
 }
 
 /// The BSSN formulation as a policy of the point loop (gbssn/rhs_loop.hpp: GbssnRhs::interior,
-/// a template parameter like the differencing order and the upwind pair): its right-hand sides
-/// at one point with the part of the shift that drives B, d_t Delta^r for a given shift (the
-/// delta-rhs-from-gd study variant), and its constraints. Another formulation is another type
-/// with these members (docs/design.md, "A formulation").
+/// a template parameter like the differencing order and the upwind pair): the variables it
+/// evolves, its right-hand sides at one point with the part of the shift that drives B, d_t
+/// Delta^r for a given shift (the delta-rhs-from-gd study variant), and its constraints.
+/// Another formulation is another type with these members (gbssn/z4c.hpp; docs/design.md,
+/// "A formulation").
 struct Bssn {
-  static Rhs rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_shift) {
+  static constexpr Formulation formulation = Formulation::bssn;
+  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
+  Rhs rhs(const PointData& p, const Gauge& gauge, const Shift& gauge_shift) const {
     return gbssn_rhs(p, gauge, gauge_shift);
   }
-  static double rhs_Delta_r(const PointData& p, const Shift& s) {
+  double rhs_Delta_r(const PointData& p, const Shift& s) const {
     return gbssn1d::rhs_Delta_r(p, metric_pieces(p), s);
   }
-  static Constraints constraints(const PointData& p) { return gbssn1d::constraints(p); }
 };
 
 /// (T1) outgoing expansion of the sphere r = const, chi form.

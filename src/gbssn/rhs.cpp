@@ -13,9 +13,17 @@ namespace {
 template <int p, fd::Upwind upwind>
 PointData point_data_at(const State& u, const Grid& grid, std::size_t i) {
   point_loop::Differences ko;
-  return point_loop::gather<p, upwind>(point_loop::Rows(u, grid), i, grid.r()[i], grid.inv_r()[i],
-                                       1.0 / grid.dx(), grid.inv_dr_dx()[i], grid.d2_fx_coeff()[i],
-                                       ko);
+  const point_loop::Rows rows(u, grid);
+  const double r = grid.r()[i], inv_r = grid.inv_r()[i], inv_dx = 1.0 / grid.dx(),
+               inv_rx = grid.inv_dr_dx()[i], d2_fx = grid.d2_fx_coeff()[i];
+  if (formulation_of(u, grid) == Formulation::z4c) {
+    constexpr std::size_t n = n_evolved(Formulation::z4c);
+    return point_loop::gather<p, upwind, n>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
+  }
+  constexpr std::size_t n = n_evolved(Formulation::bssn);
+  PointData pd = point_loop::gather<p, upwind, n>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
+  pd.f[Var::Theta] = pd.d[Var::Theta] = pd.dd[Var::Theta] = pd.adv[Var::Theta] = 0.0;
+  return pd;
 }
 
 template <fd::Upwind upwind>
@@ -37,6 +45,11 @@ PointData point_data_with(const State& u, const Grid& grid, std::size_t i) {
 PointData point_data(const State& u, const Grid& grid, std::size_t i, fd::Upwind upwind) {
   return upwind == fd::Upwind::biased ? point_data_with<fd::Upwind::biased>(u, grid, i)
                                       : point_data_with<fd::Upwind::lopsided>(u, grid, i);
+}
+
+PointData adm_point_data(const State& u, const Grid& grid, std::size_t i) {
+  const PointData p = point_data(u, grid, i);
+  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;
 }
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
@@ -82,7 +95,7 @@ void GbssnRhs::outer_boundary(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
   const double inv_dx = 1.0 / g.dx();
-  for (const auto& entry : registry) {
+  for (const auto& entry : state_vars(u, g)) {
     const double* f = u.data() + index(entry.var) * nt;
     double* out = dudt.data() + index(entry.var) * nt;
     const double speed = params_.gauge.speed(entry.wave);

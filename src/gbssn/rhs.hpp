@@ -24,12 +24,18 @@
 
 namespace gbssn1d {
 
-struct Bssn; // the formulation of the point loop (gbssn/equations.hpp)
+struct Bssn; // the formulations of the point loop (gbssn/equations.hpp, gbssn/z4c.hpp)
+struct Z4c;
 
 /// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
 /// order p (needs i - p/2 - 1 ... i + p/2 + 1), advection with the upwind pair `upwind`.
 PointData point_data(const State& u, const Grid& grid, std::size_t i,
                      fd::Upwind upwind = fd::Upwind::lopsided);
+
+/// point_data with the ADM trace K in K's place (Z1): K-hat + 2 Theta for a Z4c state, K itself
+/// for BSSN's (whose Theta reads 0). What the constraints, the expansion and the areal radius
+/// read.
+PointData adm_point_data(const State& u, const Grid& grid, std::size_t i);
 
 class GbssnRhs {
 public:
@@ -67,9 +73,9 @@ private:
   /// The point loop; the formulation (a policy type such as Bssn), the differencing order, the
   /// upwind pair, the horizon shift and its variant are template parameters, so that each
   /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <class Formulation, int order, fd::Upwind upwind, bool with_horizon_shift,
+  template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
-  void interior(const State& u, State& dudt) const;
+  void interior(const Equations& equations, const State& u, State& dudt) const;
   /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.
   template <fd::Upwind upwind>
   void evaluate_with(const State& u, State& dudt, double t);

@@ -7,6 +7,7 @@
 #include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
+#include "gbssn/z4c.hpp"
 
 #include <algorithm>
 #include <array>
@@ -42,11 +43,12 @@ template <int p, fd::Upwind u>
 }
 
 /// Pointers to the start of each variable's array, in registry order (passed by value, so that
-/// the compiler keeps them in registers in the point loop).
+/// the compiler keeps them in registers in the point loop); null for a variable the state's
+/// formulation does not evolve.
 struct Rows {
-  std::array<const double*, n_vars> row;
+  std::array<const double*, n_vars> row{};
   Rows(const State& u, const Grid& grid) {
-    for (const auto& entry : registry)
+    for (const auto& entry : state_vars(u, grid))
       row[index(entry.var)] = field(u, grid, entry.var).data();
   }
   const double*& operator[](Var v) { return row[index(v)]; }
@@ -57,9 +59,10 @@ struct Rows {
 /// stencils (fd::advect_from) and the dissipation.
 using Differences = PerVar;
 
-/// All of point_data at order p with the upwind pair `upwind`, with the per-point grid factors
-/// passed in (the hot loop); `ko` receives the (p+2)-th differences.
-template <int p, fd::Upwind upwind>
+/// All of point_data at order p with the upwind pair `upwind` for the registry's first n_fields
+/// variables (a formulation's), with the per-point grid factors passed in (the hot loop); `ko`
+/// receives the (p+2)-th differences.
+template <int p, fd::Upwind upwind, std::size_t n_fields>
 [[gnu::always_inline]] inline PointData gather(const Rows u, std::size_t i, double r, double inv_r,
                                                double inv_dx, double inv_rx, double d2_fx,
                                                Differences& ko) {
@@ -73,8 +76,8 @@ template <int p, fd::Upwind upwind>
   // difference.
   const double beta_r = u[Var::beta][i] * d1_scale;
 #pragma GCC unroll 16 // unrolled, so that the point loop around it vectorises
-  for (const auto& entry : registry) {
-    const Var v = entry.var;
+  for (std::size_t k = 0; k < n_fields; ++k) {
+    const Var v = registry[k].var;
     const double* f = u[v] + i;
     pd.f[v] = f[0];
     // f_r = f_x / r_x;  f_rr = f_xx / r_x^2 - f_x r_xx / r_x^3
@@ -109,39 +112,49 @@ template <int p, fd::Upwind upwind>
 void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   dudt.resize(u.size());
   const HorizonShiftParams& hs = params_.horizon_shift;
-  if (!hs.active()) {
-    interior<Bssn, p, upwind, false>(u, dudt);
-  } else {
+  if (hs.active()) {
     if (source_)
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     split_shift(u, t);
-    using V = HorizonShiftParams::Variant;
-    if (hs.variant == V::consistent) {
-      interior<Bssn, p, upwind, true, V::consistent>(u, dudt);
-    } else if constexpr (upwind == fd::Upwind::lopsided) {
-      switch (hs.variant) { // dispatched once per call, not per point
-      case V::no_shift_derivatives:
-        interior<Bssn, p, upwind, true, V::no_shift_derivatives>(u, dudt);
-        break;
-      case V::no_shift_second_derivatives:
-        interior<Bssn, p, upwind, true, V::no_shift_second_derivatives>(u, dudt);
-        break;
-      case V::delta_rhs_from_gd:
-        interior<Bssn, p, upwind, true, V::delta_rhs_from_gd>(u, dudt);
-        break;
-      case V::driver_full_shift:
-        interior<Bssn, p, upwind, true, V::driver_full_shift>(u, dudt);
-        break;
-      default:
-        break;
-      }
-    } else {
-      // the study variants exist with the lopsided pair only; validate() rejects the rest
-      throw std::logic_error("--upwind biased with a study --rah-variant (rejected by validate)");
-    }
   }
+  using V = HorizonShiftParams::Variant;
+  if (params_.formulation == Formulation::z4c) {
+    // the study variants are BSSN's; validate() rejects them with --formulation z4c
+    if (hs.active() && hs.variant != V::consistent)
+      throw std::logic_error("--formulation z4c with a study --rah-variant (rejected by validate)");
+    const Z4c z4c{params_.damping};
+    if (!hs.active())
+      interior<Z4c, p, upwind, false>(z4c, u, dudt);
+    else
+      interior<Z4c, p, upwind, true, V::consistent>(z4c, u, dudt);
+  } else if (!hs.active()) {
+    interior<Bssn, p, upwind, false>(Bssn{}, u, dudt);
+  } else if (hs.variant == V::consistent) {
+    interior<Bssn, p, upwind, true, V::consistent>(Bssn{}, u, dudt);
+  } else if constexpr (upwind == fd::Upwind::lopsided) {
+    switch (hs.variant) { // dispatched once per call, not per point
+    case V::no_shift_derivatives:
+      interior<Bssn, p, upwind, true, V::no_shift_derivatives>(Bssn{}, u, dudt);
+      break;
+    case V::no_shift_second_derivatives:
+      interior<Bssn, p, upwind, true, V::no_shift_second_derivatives>(Bssn{}, u, dudt);
+      break;
+    case V::delta_rhs_from_gd:
+      interior<Bssn, p, upwind, true, V::delta_rhs_from_gd>(Bssn{}, u, dudt);
+      break;
+    case V::driver_full_shift:
+      interior<Bssn, p, upwind, true, V::driver_full_shift>(Bssn{}, u, dudt);
+      break;
+    default:
+      break;
+    }
+  } else {
+    // the study variants exist with the lopsided pair only; validate() rejects the rest
+    throw std::logic_error("--upwind biased with a study --rah-variant (rejected by validate)");
+  }
+  const std::size_t n_fields = u.size() / grid_->n_total();
   if (outer_from_parent_)
-    for (std::size_t v = 0; v < n_vars; ++v)
+    for (std::size_t v = 0; v < n_fields; ++v)
       std::fill(dudt.begin()
                     + static_cast<std::ptrdiff_t>(v * grid_->n_total() + grid_->end_interior()),
                 dudt.begin() + static_cast<std::ptrdiff_t>((v + 1) * grid_->n_total()), 0.0);
@@ -164,20 +177,18 @@ struct Block {
   Rows in;
   const double *beta_GD, *r, *inv_r, *inv_rx, *d2_fx;
 };
-template <std::size_t R, std::size_t B>
+template <std::size_t R, std::size_t B, std::size_t n_fields>
 [[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const double* beta_GD_full,
                                                 double* buf, std::size_t i0, std::size_t n,
                                                 const double* grid) {
   constexpr std::size_t W = B + 2 * R; // block with the halo
-  Block b{in_full, buf + n_vars * W + R, grid, grid + B, grid + 2 * B, grid + 3 * B};
-  for (const auto& entry : registry) {
-    const std::size_t v = index(entry.var);
+  Block b{in_full, buf + n_fields * W + R, grid, grid + B, grid + 2 * B, grid + 3 * B};
+  for (std::size_t v = 0; v < n_fields; ++v)
     std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
-  }
 #pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
-  for (const auto& entry : registry)
-    b.in[entry.var] = buf + index(entry.var) * W + R;
-  std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_vars * W);
+  for (std::size_t v = 0; v < n_fields; ++v)
+    b.in.row[v] = buf + v * W + R;
+  std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_fields * W);
   return b;
 }
 
@@ -201,9 +212,9 @@ advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, doub
 
 } // namespace point_loop
 
-template <class Formulation, int order, fd::Upwind upwind, bool with_horizon_shift,
+template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
           HorizonShiftParams::Variant variant>
-void GbssnRhs::interior(const State& u, State& dudt) const {
+void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt) const {
   using namespace point_loop;
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
@@ -223,14 +234,14 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
   static_assert(R <= Grid::n_ghost, "the stencils reach beyond the ghosts");
   // blocks of B points, each with the stencils' halo: W points of each input row (stage_block)
   constexpr std::size_t B = block_size, W = B + 2 * R;
-  constexpr std::size_t rows_in = n_vars + 1, rows_grid = 4;
+  constexpr std::size_t n_fields = Equations::n, rows_in = n_fields + 1, rows_grid = 4;
   thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
   for (std::size_t i0 = g.first_interior(); i0 < g.end_interior(); i0 += B) {
     const std::size_t n = std::min(B, g.end_interior() - i0);
-    const Block blk =
-        stage_block<R, B>(in_full, beta_GD_full, buf, i0, n,
-                          grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B);
+    const Block blk = stage_block<R, B, n_fields>(
+        in_full, beta_GD_full, buf, i0, n,
+        grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B);
     const Rows in = blk.in;
     const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,
                         *const inv_rx = blk.inv_rx, *const d2_fx = blk.d2_fx;
@@ -241,7 +252,8 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
 #pragma GCC ivdep
     for (std::size_t i = begin; i < end; ++i) {
       Differences k6;
-      PointData p = gather<order, upwind>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
+      PointData p =
+          gather<order, upwind, n_fields>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
       const double d1_scale = inv_dx * inv_rx[i];
       // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
       // beta_GD alone with the horizon shift (H2).
@@ -270,16 +282,16 @@ void GbssnRhs::interior(const State& u, State& dudt) const {
         k6[Var::beta] = fd::difference<order>(f);
         p.adv[Var::beta] = fd::advect_from<order, upwind>(
             p.f[Var::beta] * d1_scale, fd::upwind_sum<order, upwind>(f), k6[Var::beta]);
-        rhs = Formulation::rhs(p, gauge, gd);
+        rhs = equations.rhs(p, gauge, gd);
         if constexpr (variant == Variant::delta_rhs_from_gd)
-          rhs[Var::Delta_r] = Formulation::rhs_Delta_r(p, gd);
+          rhs[Var::Delta_r] = equations.rhs_Delta_r(p, gd);
       } else {
-        rhs = Formulation::rhs(p, gauge, gd);
+        rhs = equations.rhs(p, gauge, gd);
       }
       const double ko = ko_scale * inv_rx[i];
 #pragma GCC unroll 16
-      for (const auto& entry : registry)
-        out0[index(entry.var) * nt + i] = rhs[entry.var] + ko * k6[entry.var];
+      for (std::size_t v = 0; v < n_fields; ++v)
+        out0[v * nt + i] = rhs.values[v] + ko * k6.values[v];
     }
   }
 }

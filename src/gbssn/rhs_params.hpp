@@ -4,6 +4,7 @@
 // point-wise equations (gbssn/equations.hpp, gbssn/gauge.hpp, gbssn/horizon_shift.hpp).
 #pragma once
 
+#include "core/formulation.hpp"
 #include "core/wave.hpp"
 #include "fd/stencils.hpp"
 #include "gbssn/horizon_shift_params.hpp"
@@ -69,7 +70,17 @@ struct AdvectionParams {
   AdvectionStencil delta = AdvectionStencil::upwind_full;
 };
 
+/// Z4c's constraint damping (Sec. 17, (Z2)-(Z4)): kappa1 (1/length) damps Theta and
+/// G^r = Delta^r - Delta_gamma^r at the rate ~ alpha kappa1; kappa2 weights the damping of
+/// Theta's part in K-hat (kappa2 = 0: the standard choice, Bernuzzi & Hilditch 2010).
+struct Damping {
+  double kappa1 = 0.02;
+  double kappa2 = 0.0;
+};
+
 struct RhsParams {
+  Formulation formulation = Formulation::bssn;
+  Damping damping; ///< Z4c only
   Gauge gauge;
   double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
   AdvectionParams advection;

@@ -37,7 +37,7 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
   const std::size_t fill_hi = std::min(n, k_hi + stencil + 1);
   for (std::size_t k = fill_lo; k < fill_hi; ++k) {
     const std::size_t i = grid.first_interior() + k;
-    const PointData p = point_data(u, grid, i);
+    const PointData p = adm_point_data(u, grid, i);
     x[k] = grid.x()[i];
     theta[k] = expansion_plus(p);
     R[k] = areal_radius(p);

@@ -22,7 +22,7 @@ SliceValues flat() {
 
 void store(State& u, const Grid& grid, std::size_t i, const SliceValues& s, double sign) {
   // sign = -1 for points at r < 0 (origin ghosts): odd variables flip.
-  for (const auto& entry : registry)
+  for (const auto& entry : state_vars(u, grid))
     field(u, grid, entry.var)[i] = (entry.parity < 0 ? sign : 1.0) * s[entry.var];
 }
 
@@ -65,8 +65,9 @@ SliceValues onelog_trumpet(const TrumpetSample& t, double C) {
 
 } // namespace
 
-State initial_data(const Grid& grid, const InitialDataParams& params) {
-  State u = make_state(grid);
+State initial_data(const Grid& grid, const InitialDataParams& params, Formulation formulation) {
+  // Z4c: Theta = 0 (its value at infinity, flat()), so that K-hat = K (Sec. 17)
+  State u = make_state(grid, formulation);
   const auto& r = grid.r();
   const std::size_t n = grid.n_total();
 

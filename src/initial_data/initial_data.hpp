@@ -11,7 +11,8 @@ namespace gbssn1d {
 ///  wormhole:        isotropic puncture psi = 1 + M/(2r), chi = psi^-4, a = b = 1,
 ///                   K = A_a = Delta^r = beta = B = 0, alpha = 1 or psi^-2;
 ///  maximal-trumpet: Baumgarte-Naculich analytic trumpet with its lapse and shift (Sec. 9.5);
-///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13).
-State initial_data(const Grid& grid, const InitialDataParams& params);
+///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13);
+/// with the variables of `formulation` (Z4c: Theta = 0, K-hat = K).
+State initial_data(const Grid& grid, const InitialDataParams& params, Formulation formulation);
 
 } // namespace gbssn1d

@@ -20,15 +20,20 @@
 
 namespace gbssn1d {
 
-std::vector<std::string> series_columns() {
-  return {"t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
-          "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
-          "M_ah",     "H_L2_R",       "M_L2_R",   "H_L2_int",        "M_ah_err"};
+std::vector<std::string> series_columns(Formulation formulation) {
+  std::vector<std::string> cols{
+      "t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
+      "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
+      "M_ah",     "H_L2_R",       "M_L2_R",   "H_L2_int",        "M_ah_err"};
+  if (formulation == Formulation::z4c)
+    for (const char* name : {"G_L2_R", "Theta_L2_ext", "Theta_L2_R"})
+      cols.emplace_back(name);
+  return cols;
 }
 
-std::vector<std::string> profile_columns() {
+std::vector<std::string> profile_columns(Formulation formulation) {
   std::vector<std::string> cols{"r"};
-  for (const auto& entry : registry)
+  for (const auto& entry : evolved(formulation))
     cols.emplace_back(entry.name);
   for (const char* name :
        {"H", "M_r", "G_r", "R_areal", "Theta_plus", "beta_GD", "beta_H", "level"})
@@ -188,6 +193,14 @@ const char* const series_legend =
     "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
     "R = norm-Rint M, weighted by cell width; r_ah, M_ah: apparent horizon (NaN if none), "
     "M_ah_err = M_ah - M\n";
+const char* const z4c_legend =
+    "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
+    "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "
+    "coordinate one\n";
+
+std::string legend(Formulation formulation) {
+  return std::string(series_legend) + (formulation == Formulation::z4c ? z4c_legend : "");
+}
 const char* const horizon_legend =
     "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
     "with Theta_+ < 0 inside; NaN if none); n_roots counts every zero of Theta_+; r_root2/3, "
@@ -196,18 +209,21 @@ const char* const horizon_legend =
 
 } // namespace
 
-Output::Output(const std::filesystem::path& dir, const std::string& parameter_header)
-    : dir_(dir),
-      series_(dir / "timeseries.dat", parameter_header + series_legend, series_columns()),
-      profiles_(dir / "profiles.dat", parameter_header, profile_columns()),
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header,
+               Formulation formulation)
+    : dir_(dir), formulation_(formulation),
+      series_(dir / "timeseries.dat", parameter_header + legend(formulation),
+              series_columns(formulation)),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns(formulation)),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header,
-               const OutputMarks& m)
-    : dir_(dir), series_(dir / "timeseries.dat", parameter_header + series_legend, series_columns(),
-                         m.series_header, m.series),
-      profiles_(dir / "profiles.dat", parameter_header, profile_columns(), m.profiles_header,
-                m.profiles),
+               Formulation formulation, const OutputMarks& m)
+    : dir_(dir), formulation_(formulation),
+      series_(dir / "timeseries.dat", parameter_header + legend(formulation),
+              series_columns(formulation), m.series_header, m.series),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns(formulation),
+                m.profiles_header, m.profiles),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns(),
                 m.horizons_header, m.horizons),
       first_block_(m.profiles <= m.profiles_header) {}
@@ -242,10 +258,13 @@ OutputMarks Output::marks() {
 
 void Output::write_series(const SeriesRow& row) {
   series_.print("{} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
-                "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}\n",
+                "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}",
                 time_text(row.t), row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext,
                 row.G_L2, row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R,
                 row.M_L2_R, row.H_L2_int, row.M_ah_err);
+  if (formulation_ == Formulation::z4c)
+    series_.print(" {:.16e} {:.16e} {:.16e}", row.G_L2_R, row.Theta_L2_ext, row.Theta_L2_R);
+  series_.print("\n");
   series_.flush();
 }
 
@@ -287,8 +306,12 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     line.clear();
     fmt::format_to(std::back_inserter(line), "{:.16e}", grid.r()[i]);
     const double beta_GD = field(u, grid, Var::beta)[i];
-    for (const auto& entry : registry) {
-      const double v = entry.var == Var::beta ? beta_GD + beta_H[i] : field(u, grid, entry.var)[i];
+    for (const auto& entry : evolved(formulation_)) {
+      double v = field(u, grid, entry.var)[i];
+      if (entry.var == Var::beta)
+        v = beta_GD + beta_H[i];
+      else if (entry.var == Var::K && formulation_ == Formulation::z4c)
+        v += 2.0 * field(u, grid, Var::Theta)[i]; // the ADM K (Z1)
       fmt::format_to(std::back_inserter(line), " {:.16e}", v);
     }
     for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]})

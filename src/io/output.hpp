@@ -29,11 +29,14 @@ struct SeriesRow {
   double H_L2_R, M_L2_R;  ///< over the areal-radius window [norm-Rmin, norm-Rmax] M
   double H_L2_int;        ///< near the puncture, R <= norm-Rint M
   double M_ah_err;        ///< M_ah - M
+  /// Z4c only (Sec. 17): G^r in the areal window, Theta in the exterior and areal windows
+  double G_L2_R, Theta_L2_ext, Theta_L2_R;
 };
 
-/// Column names, in order.
-std::vector<std::string> series_columns();
-std::vector<std::string> profile_columns();
+/// Column names, in order: a Z4c run's series has G_L2_R, Theta_L2_ext and Theta_L2_R besides,
+/// its profiles Theta (and K is the ADM K = K-hat + 2 Theta in both).
+std::vector<std::string> series_columns(Formulation formulation);
+std::vector<std::string> profile_columns(Formulation formulation);
 std::vector<std::string> horizon_columns();
 
 /// A write that failed (full disk, file-size limit, I/O error): names the file and the reason.
@@ -92,11 +95,12 @@ struct OutputMarks {
 class Output {
 public:
   /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
-  /// one "key = value" per line.
-  Output(const std::filesystem::path& dir, const std::string& parameter_header);
+  /// one "key = value" per line; `formulation` the run's (its columns).
+  Output(const std::filesystem::path& dir, const std::string& parameter_header,
+         Formulation formulation);
   /// A resumed run: the files of `dir` cut back to `marks`, with the new header.
   Output(const std::filesystem::path& dir, const std::string& parameter_header,
-         const OutputMarks& marks);
+         Formulation formulation, const OutputMarks& marks);
 
   /// Throws OutputError unless every file of `dir` is there and at least as long as its mark
   /// (what the resuming constructor needs); touches nothing. Call before changing any file.
@@ -120,6 +124,7 @@ public:
 
 private:
   std::filesystem::path dir_;
+  Formulation formulation_;
   DataFile series_;
   DataFile profiles_;
   DataFile horizons_;

@@ -66,8 +66,9 @@ Composite::gather_interior(const std::vector<std::span<const double>>& per_level
 }
 
 void Composite::gather_state(const std::vector<State>& u, State& out) const {
-  out.resize(n_vars * grid_.n_total());
-  for (const auto& entry : registry) {
+  const auto vars = state_vars(u.front(), layout_->grid(0));
+  out.resize(vars.size() * grid_.n_total());
+  for (const auto& entry : vars) {
     std::vector<std::span<const double>> arrays;
     for (std::size_t l = 0; l < layout_->levels(); ++l)
       arrays.push_back(field(u[l], layout_->grid(l), entry.var));

@@ -51,15 +51,33 @@ MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
   if (!(options_.dt_max > 0.0))
     throw std::invalid_argument("the mesh stepper's largest step must be positive");
   steps_ = level_steps(layout, options_);
+  // sized for BSSN here, in this order, and resized by fit_scratch for another formulation:
+  // BSSN's results stay bit for bit those of the stepper before Z4c (the stage fills'
+  // rounding follows the arrays' layout)
   for (std::size_t l = 0; l < layout.levels(); ++l) {
     Level& L = levels_[l];
     const Grid& g = layout.grid(l);
-    L.tmp = make_state(g);
+    L.tmp = make_state(g, Formulation::bssn);
     for (auto& k : L.k)
-      k = make_state(g);
+      k = make_state(g, Formulation::bssn);
     if (l + 1 < layout.levels()) {
-      L.u0 = make_state(g);
-      L.scratch = make_state(g);
+      L.u0 = make_state(g, Formulation::bssn);
+      L.scratch = make_state(g, Formulation::bssn);
+    }
+  }
+}
+
+void MeshStepper::fit_scratch(const std::vector<State>& u) {
+  // sized by the states themselves, which hold their formulation's variables (gbssn/state.hpp)
+  for (std::size_t l = 0; l < layout_->levels(); ++l) {
+    Level& L = levels_[l];
+    const std::size_t n = u[l].size();
+    L.tmp.resize(n);
+    for (auto& k : L.k)
+      k.resize(n);
+    if (l + 1 < layout_->levels()) {
+      L.u0.resize(n);
+      L.scratch.resize(n);
     }
   }
 }
@@ -100,7 +118,7 @@ void MeshStepper::taper_from_parent(std::vector<State>& u, std::size_t l) {
   parent.resize(u[l].size());
   fill_from_parent(l, parent, {&u[l - 1]}, {1.0}, j0);
   const Grid& g = layout_->grid(l);
-  for (const auto& entry : registry) {
+  for (const auto& entry : state_vars(u[l], g)) {
     const auto p = field(parent, g, entry.var);
     const auto f = field(u[l], g, entry.var);
     for (long j = j0; j < n; ++j) {
@@ -115,6 +133,7 @@ void MeshStepper::taper_from_parent(std::vector<State>& u, std::size_t l) {
 void MeshStepper::initialise(std::vector<State>& u, double t) {
   if (u.size() != layout_->levels())
     throw std::invalid_argument("the mesh stepper needs one state per level");
+  fit_scratch(u);
   for (std::size_t l = 0; l < layout_->levels(); ++l)
     fill_origin_ghosts(u[l], layout_->grid(l));
   for (std::size_t l = layout_->levels() - 1; l >= 1; --l)
@@ -141,6 +160,25 @@ void MeshStepper::initialise(std::vector<State>& u, double t) {
     }
 }
 
+namespace {
+
+/// Z4c's Theta row of fill_from_parent's combination, out of line (see there).
+[[gnu::noinline]] void combine_theta(State& s, const std::vector<const State*>& arrays,
+                                     const std::vector<double>& w, std::size_t nt, long lo,
+                                     long hi) {
+  s.resize(arrays.front()->size());
+  const std::size_t v = index(Var::Theta), g = Grid::n_ghost;
+  for (long i = lo; i < hi; ++i) {
+    const std::size_t idx = v * nt + g + static_cast<std::size_t>(i);
+    double sum = 0.0;
+    for (std::size_t m = 0; m < arrays.size(); ++m)
+      sum += w[m] * (*arrays[m])[idx];
+    s[idx] = sum;
+  }
+}
+
+} // namespace
+
 void MeshStepper::fill_from_parent(std::size_t l, State& fine,
                                    const std::vector<const State*>& arrays,
                                    const std::vector<double>& w, long j_begin) const {
@@ -156,7 +194,12 @@ void MeshStepper::fill_from_parent(std::size_t l, State& fine,
   }
   const std::size_t nt = gc.n_total(), g = Grid::n_ghost;
   State& s = levels_[l - 1].scratch;
-  for (std::size_t v = 0; v < n_vars; ++v)
+  // s = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable: BSSN's in this loop, of
+  // constant count, as compiled before Z4c, Z4c's Theta out of line. GCC contracts these sums
+  // into FMAs in some lanes and not in others, and how depends on the code around the loop (a
+  // run-time count, or a check before it, changed the last bits of BSSN's box runs); so the
+  // loop is left as it was, and BSSN's runs stay bit for bit those from before.
+  for (std::size_t v = 0; v < n_evolved(Formulation::bssn); ++v)
     for (long i = lo; i < hi; ++i) {
       const std::size_t idx = v * nt + g + static_cast<std::size_t>(i);
       double sum = 0.0;
@@ -164,6 +207,8 @@ void MeshStepper::fill_from_parent(std::size_t l, State& fine,
         sum += w[m] * (*arrays[m])[idx];
       s[idx] = sum;
     }
+  if (arrays.front()->size() != s.size())
+    combine_theta(s, arrays, w, nt, lo, hi);
   prolong(s, gc, fine, gf, j_begin, j_end);
 }
 
@@ -222,6 +267,7 @@ void MeshStepper::step(std::vector<State>& u, double t, double dt, const State& 
 void MeshStepper::step(std::vector<State>& u, double t, double dt, const State* k1) {
   if (u.size() != layout_->levels())
     throw std::invalid_argument("the mesh stepper needs one state per level");
+  fit_scratch(u);
   advance(u, 0, t, dt, k1);
   // Every level is at t + dt now: its outer ghosts (and buffer) by prolongation, so that each
   // state is complete for output. This changes nothing in the evolution: the next step's first

@@ -156,6 +156,8 @@ private:
     double t0 = 0.0, dt = 0.0;      ///< the current (or last) step
     std::vector<TimeLevel> history; ///< quadratic: the states before the last steps
   };
+  /// Every level's scratch states sized as its state `u[l]` (its formulation's variables).
+  void fit_scratch(const std::vector<State>& u);
   void advance(std::vector<State>& u, std::size_t l, double t, double dt,
                const State* k1 = nullptr);
   /// RK4 step of level l; `fill(stage, input)` before each RHS evaluation; `given_k1`: the

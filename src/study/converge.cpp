@@ -137,9 +137,10 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
     if (from) {
       const std::lock_guard lock(log_mutex);
       say("gbssn1d converge: member N = {} resumes at t = {}\n", p.N, from->t);
-      out_storage.emplace(p.out, config + sim.run_facts(), from->marks);
+      out_storage.emplace(p.out, config + sim.run_facts(), sim.config().rhs.formulation,
+                          from->marks);
     } else {
-      out_storage.emplace(p.out, config + sim.run_facts());
+      out_storage.emplace(p.out, config + sim.run_facts(), sim.config().rhs.formulation);
     }
     Output& out = *out_storage;
     try {
@@ -209,9 +210,15 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
     if (!(options.N[k] > options.N[k - 1]))
       throw ParamError("--N", fmt::format("{}", fmt::join(options.N, ",")),
                        "resolutions must increase");
-  for (const auto& name : options.fields)
-    if (!var_from_name(name))
+  for (const auto& name : options.fields) {
+    const auto v = var_from_name(name);
+    if (!v)
       throw ParamError("--fields", name, "is not an evolved variable");
+    if (base.formulation == Formulation::bssn && index(*v) >= n_evolved(Formulation::bssn))
+      throw ParamError("--fields", name,
+                       fmt::format("is not evolved with --formulation {} (z4c evolves it)",
+                                   base.formulation.name()));
+  }
   std::vector<Params> members;
   for (int n : options.N) {
     Params p = base;

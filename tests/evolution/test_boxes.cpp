@@ -154,7 +154,7 @@ TEST_CASE("a box run resumed from a checkpoint is bit-identical on every level")
         if (std::abs(ck.t - 4.0) < 1e-9)
           at4 = ck;
       };
-      Output out(dir, first.run_facts());
+      Output out(dir, first.run_facts(), Formulation::bssn);
       first.run(&out);
     }
     fs::remove_all(dir);
@@ -186,9 +186,9 @@ namespace {
 
 /// `u` laid out with the 3 ghosts per side of the versions before --fd-order (5 now).
 State with_legacy_ghosts(const State& u, const Grid& g) {
-  const std::size_t n = g.n_interior(), old_total = n + 6;
-  State old(n_vars * old_total);
-  for (std::size_t v = 0; v < n_vars; ++v)
+  const std::size_t n = g.n_interior(), old_total = n + 6, n_fields = n_evolved(Formulation::bssn);
+  State old(n_fields * old_total);
+  for (std::size_t v = 0; v < n_fields; ++v)
     for (std::size_t k = 0; k < old_total; ++k)
       old[v * old_total + k] = u[v * g.n_total() + g.first_interior() - 3 + k];
   return old;
@@ -231,7 +231,7 @@ TEST_CASE("a checkpoint with the 3 ghosts of earlier versions resumes as if neve
         if (std::abs(ck.t - 2.0) < 1e-9)
           at2 = ck;
       };
-      Output out(dir, first.run_facts());
+      Output out(dir, first.run_facts(), Formulation::bssn);
       first.run(&out);
     }
     fs::remove_all(dir);
@@ -248,12 +248,12 @@ TEST_CASE("a checkpoint with the 3 ghosts of earlier versions resumes as if neve
     for (std::size_t l = 0; l < legacy.history.size(); ++l)
       for (auto& h : legacy.history[l])
         h.u = with_legacy_ghosts(h.u, *grids[l]);
-    CHECK(legacy.u.size() == n_vars * (grids[0]->n_interior() + 6));
+    CHECK(legacy.u.size() == n_evolved(Formulation::bssn) * (grids[0]->n_interior() + 6));
     resumed.restore(legacy);
     resumed.run(nullptr);
     for (std::size_t l = 0; l < grids.size(); ++l) {
       const Grid& g = *grids[l];
-      for (std::size_t v = 0; v < n_vars; ++v)
+      for (std::size_t v = 0; v < n_evolved(Formulation::bssn); ++v)
         for (std::size_t i = g.first_interior() - 3; i < g.end_interior() + 3; ++i)
           REQUIRE(resumed.level_states()[l][v * g.n_total() + i]
                   == whole.level_states()[l][v * g.n_total() + i]);

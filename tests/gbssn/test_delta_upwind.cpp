@@ -18,10 +18,10 @@ namespace {
 /// Smooth data of the right parities: even fields near 1, a shift that changes sign, and a
 /// Delta^r with every derivative non-zero (not a solution: only the advection term is compared).
 State smooth_data(const Grid& g) {
-  State u = make_state(g);
+  State u = make_state(g, Formulation::bssn);
   for (std::size_t i = 0; i < g.n_total(); ++i) {
     const double r = g.r()[i];
-    for (const auto& e : registry) {
+    for (const auto& e : evolved(Formulation::bssn)) {
       const double c = 0.05 * static_cast<double>(index(e.var) + 1);
       field(u, g, e.var)[i] =
           e.parity > 0 ? 1.0 + c * std::exp(-r * r / 4.0) : c * r * std::exp(-r * r / 8.0);

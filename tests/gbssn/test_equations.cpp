@@ -1,6 +1,7 @@
 // The point-wise right-hand side against values computed independently from the verified
 // symbolic equations (tests/reference/make_pointwise_reference.py), and flat space.
 #include "gbssn/equations.hpp"
+#include "gbssn/z4c.hpp"
 
 #include "../test_support.hpp"
 
@@ -22,18 +23,19 @@ bool has_column(const gbssn1d::testing::Table& t, const std::string& c) {
 
 /// The point data of one row, by registry name: f, d_f, dd_f (NaN where the reference has no
 /// second derivative, so that an equation reading one it should not need fails), beta f'.
-PointData point_from_row(const gbssn1d::testing::Table& t, std::size_t row) {
+PointData point_from_row(const gbssn1d::testing::Table& t, std::size_t row,
+                         Formulation formulation) {
   PointData p{};
   p.r = t.at(row, "r");
   p.inv_r = 1.0 / p.r;
-  for (const auto& e : registry) {
+  for (const auto& e : evolved(formulation)) {
     const std::string name(e.name);
     p.f[e.var] = t.at(row, name);
     p.d[e.var] = t.at(row, "d_" + name);
     p.dd[e.var] = has_column(t, "dd_" + name) ? t.at(row, "dd_" + name)
                                               : std::numeric_limits<double>::quiet_NaN();
   }
-  for (const auto& e : registry)
+  for (const auto& e : evolved(formulation))
     p.adv[e.var] = p.f[Var::beta] * p.d[e.var]; // exact advection terms
   return p;
 }
@@ -49,7 +51,7 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
   const auto t = read_table(std::string(GBSSN1D_TEST_DATA_DIR) + "/pointwise_reference.dat");
   REQUIRE(t.rows.size() >= 8);
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
-    const PointData p = point_from_row(t, row);
+    const PointData p = point_from_row(t, row, Formulation::bssn);
     const double r = p.r;
     auto ref = [&](const std::string& c) { return t.at(row, c); };
 
@@ -60,7 +62,7 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
       gauge.shift.advective = advective_shift;
       const Rhs rhs = gbssn_rhs(p, gauge);
       const std::string sfx = advective_shift ? "_advective" : "";
-      for (const auto& e : registry) {
+      for (const auto& e : evolved(Formulation::bssn)) {
         const std::string name(e.name);
         const bool gauge_var = e.var == Var::beta || e.var == Var::B;
         const std::string column = e.var == Var::alpha ? "rhs_alpha_advective"
@@ -84,6 +86,40 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
   }
 }
 
+// Sec. 17: Z4c's right-hand sides (Z1)-(Z4) with generic kappa1, kappa2, Theta != 0 and
+// Delta^r != Delta_gamma^r, against rhs_z4c_1d of the script (V8 checks it against the 3D
+// covariant Z4c); the constraints read the ADM trace K = K-hat + 2 Theta (adm_trace).
+TEST_CASE("Z4c: point-wise RHS agrees with the symbolic reference (Sec. 17, V8)") {
+  const auto t = read_table(std::string(GBSSN1D_TEST_DATA_DIR) + "/pointwise_reference_z4c.dat");
+  REQUIRE(t.rows.size() >= 8);
+  for (std::size_t row = 0; row < t.rows.size(); ++row) {
+    const PointData p = point_from_row(t, row, Formulation::z4c);
+    const double r = p.r;
+    auto ref = [&](const std::string& c) { return t.at(row, c); };
+    const Z4c z4c{Damping{ref("kappa1"), ref("kappa2")}};
+    for (bool advective_shift : {false, true}) {
+      Gauge gauge;
+      gauge.shift.eta = ref("eta");
+      gauge.shift.advective = advective_shift;
+      const Rhs rhs = z4c.rhs(p, gauge, full_shift(p));
+      for (const auto& e : evolved(Formulation::z4c)) {
+        const std::string name(e.name);
+        const bool gauge_var = e.var == Var::beta || e.var == Var::B;
+        const std::string column = e.var == Var::alpha            ? "rhs_alpha_advective"
+                                   : gauge_var && advective_shift ? "rhs_" + name + "_advective"
+                                                                  : "rhs_" + name;
+        check(rhs[e.var], ref(column), column, r);
+      }
+    }
+    const PointData adm = adm_trace(p);
+    const Constraints c = constraints(adm);
+    check(c.H, ref("H"), "H", r);
+    check(c.M_r, ref("M_r"), "M_r", r);
+    check(c.G_r, ref("G_r"), "G_r", r);
+    check(expansion_plus(adm), ref("Theta_plus"), "Theta_plus", r);
+  }
+}
+
 TEST_CASE("flat space: every right-hand side and constraint is exactly zero") {
   for (double r : {0.01, 0.5, 3.0, 70.0}) {
     PointData p{};
@@ -95,8 +131,11 @@ TEST_CASE("flat space: every right-hand side and constraint is exactly zero") {
       Gauge gauge;
       gauge.shift.advective = adv;
       const Rhs rhs = gbssn_rhs(p, gauge);
-      for (const auto& e : registry)
+      for (const auto& e : evolved(Formulation::bssn))
         CHECK(rhs[e.var] == 0.0);
+      const Rhs z4c = Z4c{Damping{0.1, 0.5}}.rhs(p, gauge, full_shift(p));
+      for (const auto& e : evolved(Formulation::z4c))
+        CHECK(z4c[e.var] == 0.0);
     }
     const Constraints c = constraints(p);
     CHECK(c.H == 0.0);

@@ -72,7 +72,7 @@ TEST_CASE("the finder reports every marginal surface, the outermost outer one as
   CHECK(found.surfaces[0].outer);
   // Flat space has no horizon.
   const Grid g(RadialMap::uniform(10.0), 100);
-  State flat = make_state(g);
+  State flat = make_state(g, Formulation::bssn);
   for (Var v : {Var::alpha, Var::chi, Var::a, Var::b})
     for (double& f : field(flat, g, v))
       f = 1.0;
@@ -106,7 +106,7 @@ TEST_CASE("with several marginal surfaces the horizon is the outermost outer one
   REQUIRE(dR(3.0) < 0);
   REQUIRE(dR(4.5) > 0);
   const Grid g(RadialMap::uniform(10.0), 800);
-  State u = make_state(g);
+  State u = make_state(g, Formulation::bssn);
   for (std::size_t i = g.first_interior(); i < g.n_total(); ++i) {
     const double r = g.r()[i], psi2 = R(r) / r;
     field(u, g, Var::chi)[i] = 1.0 / (psi2 * psi2); // chi = psi^-4

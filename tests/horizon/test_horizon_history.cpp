@@ -61,7 +61,7 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
     id.kind = InitialDataKind::onelog_trumpet;
     id.M = M_of(t);
     for (std::size_t l = 0; l < levels.size(); ++l)
-      levels[l] = initial_data(sim.layout().grid(l), id);
+      levels[l] = initial_data(sim.layout().grid(l), id, Formulation::bssn);
   };
   const double dt = 0.25;
   set_mass(0.0);

@@ -31,7 +31,7 @@ namespace {
 
 /// Flat space with a lapse pulse, alpha = 1 + A (e^-((r-r0)/s)^2 + e^-((r+r0)/s)^2) (even).
 State gauge_pulse(const Grid& g, double r0 = 1.5, double s = 0.4, double A = 0.01) {
-  State u = make_state(g);
+  State u = make_state(g, Formulation::bssn);
   for (std::size_t i = 0; i < g.n_total(); ++i) {
     const double r = g.r()[i];
     field(u, g, Var::alpha)[i] =
@@ -72,13 +72,13 @@ struct Run {
 /// valid cells of `b` (below its buffer), all variables; adds the count to `n`.
 double sq_diff_restricted(const State& a, const Grid& ga, const State& b, const Grid& gb,
                           std::size_t buffer, std::size_t& n) {
-  State rb = make_state(ga);
+  State rb = make_state(ga, Formulation::bssn);
   const long na = static_cast<long>(ga.n_interior()), nb = static_cast<long>(gb.n_interior());
   const long end =
       std::min(na - static_cast<long>(buffer), (nb - static_cast<long>(buffer) - 3) / 2);
   restrict_to(b, gb, rb, ga, 0, end);
   double s = 0.0;
-  for (const auto& entry : registry)
+  for (const auto& entry : evolved(Formulation::bssn))
     for (long i = 0; i < end; ++i) {
       const std::size_t k = static_cast<std::size_t>(i) + Grid::n_ghost;
       const double d = field(a, ga, entry.var)[k] - field(rb, ga, entry.var)[k];
@@ -145,7 +145,7 @@ double single_grid_difference(std::size_t n, std::size_t levels, StepperOptions 
     }
     const Grid& g = run.layout.grid(f);
     const Grid& gs = single.layout.grid(0);
-    for (const auto& entry : registry)
+    for (const auto& entry : evolved(Formulation::bssn))
       for (long i = 0; i < end; ++i) {
         const std::size_t k = static_cast<std::size_t>(i) + Grid::n_ghost;
         const double d = field(run.u[f], g, entry.var)[k] - field(single.u[0], gs, entry.var)[k];
@@ -369,7 +369,7 @@ TEST_CASE("fine boundary data are refilled before use: poisoned ghosts and buffe
             CHECK(p == a.u[l]);
           }
           for (std::size_t l = 1; l < 3; ++l)
-            for (const auto& entry : registry) {
+            for (const auto& entry : evolved(Formulation::bssn)) {
               auto f = field(b.u[l], b.layout.grid(l), entry.var);
               for (long j = begin; j < end; ++j)
                 f[static_cast<std::size_t>(j) + Grid::n_ghost] =
@@ -401,7 +401,7 @@ TEST_CASE("the 1+log trumpet on four boxes stays stationary at 4th order through
       for (std::size_t l = 0; l < m.levels(); ++l) {
         rhs.push_back(std::make_unique<GbssnRhs>(m.grid(l), RhsParams{}));
         level_rhs.push_back(std::ref(*rhs.back()));
-        u.push_back(initial_data(m.grid(l), id));
+        u.push_back(initial_data(m.grid(l), id, Formulation::bssn));
       }
       MeshStepper stepper(m, level_rhs, StepperOptions{time, true, 0.25});
       stepper.initialise(u, 0.0);
@@ -475,12 +475,12 @@ TEST_CASE("the tapered buffer relaxes a box's outer cells towards its parent, we
   const Grid &gc = run.layout.grid(0), &gf = run.layout.grid(1);
   auto poly = [](double r) { return 1.0 + 0.1 * r * r - 0.003 * r * r * r * r; }; // even
   for (std::size_t i = 0; i < gc.n_total(); ++i)
-    for (const auto& e : registry)
+    for (const auto& e : evolved(Formulation::bssn))
       field(run.u[0], gc, e.var)[i] = e.parity > 0 ? poly(gc.r()[i]) : gc.r()[i] * poly(gc.r()[i]);
   // the box: the same polynomial plus an offset of 1e-3 on alpha from cell j0 - 2 outwards
   const long j0 = static_cast<long>(n - k);
   for (std::size_t i = 0; i < gf.n_total(); ++i)
-    for (const auto& e : registry) {
+    for (const auto& e : evolved(Formulation::bssn)) {
       const double r = gf.r()[i];
       field(run.u[1], gf, e.var)[i] = e.parity > 0 ? poly(r) : r * poly(r);
     }

@@ -1,0 +1,76 @@
+// Point-wise right-hand side of the spherically symmetric Z4c equations with constraint damping
+// (equations document, Sec. 17; Bernuzzi & Hilditch 2010, arXiv:0912.2920, and Hilditch et al.
+// 2013, arXiv:1212.2901, in the covariant form of Sec. 2 with the same Lagrangian choice and the
+// same placement of the evolved and the metric Delta^r as BSSN's (E6)). Its variables are
+// BSSN's with K-hat = K - 2 Theta in K's row, plus Theta (core/registry.hpp); its symbolic
+// reference is docs/verify_gbssn1d_equations.py, part V7.
+#pragma once
+
+#include "gbssn/equations.hpp"
+#include "gbssn/gauge.hpp"
+#include "gbssn/point_data.hpp"
+#include "gbssn/rhs_params.hpp"
+
+namespace gbssn1d {
+
+/// The point data with the ADM trace K = K-hat + 2 Theta in K's place, its value and
+/// derivatives (Z1): what the constraints (Sec. 5), the expansion (T1) and every diagnostic
+/// read as K.
+inline PointData adm_trace(PointData p) {
+  using enum Var;
+  p.f[K] += 2.0 * p.f[Theta];
+  p.d[K] += 2.0 * p.d[Theta];
+  p.dd[K] += 2.0 * p.dd[Theta];
+  p.adv[K] += 2.0 * p.adv[Theta];
+  return p;
+}
+
+/// Z4c as a policy of the point loop, beside Bssn (gbssn/equations.hpp), with its damping.
+struct Z4c {
+  static constexpr Formulation formulation = Formulation::z4c;
+  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
+  Damping damping;
+
+  /// (Z4) d_t Delta^r for the shift `s`: (E6), whose -(4/3) alpha/a d_r K acts on K-hat, plus
+  /// -(2/3) alpha/a d_r Theta (together -(2/3) alpha/a d_r(2 K-hat + Theta)) and the damping
+  /// -2 alpha kappa1 G^r of the Gamma constraint G^r = Delta^r - Delta_gamma^r.
+  [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const MetricPieces& m,
+                                            const Shift& s) const {
+    using enum Var;
+    const double G_r = p.f[Delta_r] - delta_gamma(p, m);
+    return gbssn1d::rhs_Delta_r(p, m, s) - (2.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[Theta]
+           - 2.0 * p.f[alpha] * damping.kappa1 * G_r;
+  }
+  [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const Shift& s) const {
+    return rhs_Delta_r(p, metric_pieces(p), s);
+  }
+
+  [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
+                                 const Shift& gauge_shift) const {
+    using enum Var;
+    const MetricPieces m = metric_pieces(p);
+    const Shift shift = full_shift(p);
+    // (Z1): chi, K-hat and A_a see K = K-hat + 2 Theta wherever (C1), (E4), (E5) have K
+    // undifferentiated; d_t K-hat advects K-hat itself.
+    const double theta = p.f[Theta], K_adm = p.f[K] + 2.0 * theta;
+    Rhs rhs;
+    metric_and_curvature_rhs(p, m, divbeta(p, m, shift), K_adm, rhs);
+    // (Z2)
+    rhs[K] += p.f[alpha] * damping.kappa1 * (1.0 - damping.kappa2) * theta;
+    // (Z3): R with the evolved Delta^r (R^r_r + 2 R^theta_theta, (C3)), A_ij A^ij = (3/2) A_a^2
+    const double ricci = ricci_rr(p, m) + 2.0 * ricci_thth(p, m);
+    rhs[Theta] =
+        p.adv[Theta]
+        + 0.5 * p.f[alpha] * (ricci - 1.5 * p.f[A_a] * p.f[A_a] + (2.0 / 3.0) * K_adm * K_adm)
+        - p.f[alpha] * damping.kappa1 * (2.0 + damping.kappa2) * theta;
+    // (Z4)
+    rhs[Delta_r] = rhs_Delta_r(p, m, shift);
+    // (G1)-(G3): the lapse is driven by K-hat (p.f[K]); B by Z4c's d_t Delta^r of the gauge shift
+    rhs[alpha] = rhs_alpha(gauge.slicing, p);
+    rhs[beta] = rhs_beta(gauge.shift, p);
+    rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r(p, m, gauge_shift), gauge_shift);
+    return rhs;
+  }
+};
+
+} // namespace gbssn1d
