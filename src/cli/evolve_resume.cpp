@@ -14,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -311,8 +312,11 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
     throw ParamError("DIR", dir_name, e.what());
   }
   const std::string config = config_text(p);
-  if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty())
-    throw ParamError("DIR", dir_name, "its checkpoint belongs to another configuration");
+  if (const auto differ = config_differences(c.config, config, {"tmax", "out", "force"});
+      !differ.empty())
+    throw ParamError("DIR", dir_name,
+                     fmt::format("its checkpoint belongs to another configuration ({})",
+                                 fmt::join(differ, "; ")));
   if (p.tmax < c.t)
     throw ParamError("--tmax", fmt::format("{}", p.tmax),
                      fmt::format("is before the checkpoint at t = {}", time_text(c.t)));

@@ -189,7 +189,10 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
                      "the exterior region holds no grid point of the coarsest member");
   for (const auto& name : options.fields)
     s.fields.push_back(*var_from_name(name));
-  s.samples_key = fmt::format("fields = {}\nradii =", fmt::join(options.fields, ","));
+  // the layout of the saved series rows is part of what the samples file must match
+  s.samples_key =
+      fmt::format("row = {} doubles\nfields = {}\nradii =", sizeof(SeriesRow) / sizeof(double),
+                  fmt::join(options.fields, ","));
   for (double r : s.radii)
     s.samples_key += fmt::format(" {:.17g}", r);
   s.records.resize(s.members.size());

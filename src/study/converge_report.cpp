@@ -38,13 +38,24 @@ struct Norm {
   bool judged;
   int length_power;
 };
-const Norm norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
-                      {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2},
-                      {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1},
-                      {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2},
-                      {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2},
-                      {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2}};
-constexpr int n_norms = static_cast<int>(std::size(norms));
+const Norm bssn_norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
+                           {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2},
+                           {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1},
+                           {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2},
+                           {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2},
+                           {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2}};
+/// Z4c's own (Sec. 17), judged like the rest: G^r and Theta (a curvature, 1/M^2) in the areal
+/// window.
+const Norm z4c_norms[] = {{"G_L2_R", "G_R", &SeriesRow::G_L2_R, true, -1},
+                          {"Theta_L2_R", "Theta_R", &SeriesRow::Theta_L2_R, true, -2}};
+
+/// The norms of a study of `formulation`.
+std::vector<Norm> study_norms(Formulation formulation) {
+  std::vector<Norm> n(std::begin(bssn_norms), std::end(bssn_norms));
+  if (formulation == Formulation::z4c)
+    n.insert(n.end(), std::begin(z4c_norms), std::end(z4c_norms));
+  return n;
+}
 
 } // namespace
 
@@ -55,7 +66,7 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   std::vector<OrderSeries> series;
-  for (const auto& c : norms) {
+  for (const auto& c : study_norms(base.formulation.value())) {
     if (!c.judged)
       continue;
     for (std::size_t k = 0; k + 1 < m; ++k) {
@@ -129,6 +140,8 @@ void write_convergence_dat(const ConvergeStudy& s, const std::string& base_confi
   const std::string& status_line = e.status_line;
   const std::string& end_line = e.end_line;
   const std::string& order_lines = v.order_lines;
+  const std::vector<Norm> norms = study_norms(base.formulation.value());
+  const int n_norms = static_cast<int>(norms.size());
   std::vector<std::string> cols{"t"};
   for (const auto& c : norms)
     for (std::size_t k = 0; k < m; ++k)

@@ -119,6 +119,44 @@ TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an un
   fs::remove_all(parts);
 }
 
+// A Z4c run (Theta in its state, its own series columns) resumes bit for bit, on a single grid
+// and on boxes; its checkpoint refuses a resume as BSSN, naming the formulation, and changes
+// nothing.
+TEST_CASE(
+    "resume: a Z4c run continues bit for bit, and its checkpoint refuses --formulation bssn") {
+  const fs::path whole = scratch("z4c_whole"), parts = scratch("z4c_parts");
+  for (const std::string grid : {"--grid uniform --N 200 --rmax 50",
+                                 "--grid boxes --N 32 --rmax 64 --time-interp quadratic"}) {
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+    const std::string flags = "evolve --formulation z4c --kappa1 0.1 --id 1log-trumpet " + grid
+                              + " --rahA 0.5 --rah0 0.7 --dt-series 0.5 --dt-profiles 3 "
+                                "--checkpoint-every 2";
+    REQUIRE(run(flags + " --tmax 8 --out " + whole.string()).status == 0);
+    REQUIRE(run(flags + " --tmax 4 --out " + parts.string()).status == 0);
+    const Result r = run("resume " + parts.string() + " --tmax 8");
+    INFO(grid << ": " << r.err);
+    REQUIRE(r.status == 0);
+    for (const char* f : {"timeseries.dat", "profiles.dat", "horizon.dat"})
+      CHECK(without_out(whole / f) == without_out(parts / f));
+    CHECK(slurp(parts / "timeseries.dat").find("Theta_L2_R") != std::string::npos);
+  }
+  // the checkpoint is Z4c's: config.toml edited to bssn is refused, naming the formulation
+  std::string config = slurp(parts / "config.toml");
+  const auto at = config.find("formulation = \"z4c\"");
+  REQUIRE(at != std::string::npos);
+  config.replace(at, std::string("formulation = \"z4c\"").size(), "formulation = \"bssn\"");
+  std::ofstream(parts / "config.toml", std::ios::trunc) << config;
+  const std::string series = slurp(parts / "timeseries.dat");
+  const Result refused = run("resume " + parts.string() + " --tmax 12");
+  INFO(refused.err);
+  CHECK(refused.status == 2);
+  CHECK(refused.err.find("formulation: \"z4c\" -> \"bssn\"") != std::string::npos);
+  CHECK(slurp(parts / "timeseries.dat") == series);
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+}
+
 // RK4 is stable for d_t B = -eta B only while eta dt stays inside its real stability interval
 // (-2.785..., 0]: at eta dt = 2.8 the amplification 1 - z + z^2/2 - z^3/6 + z^4/24 exceeds 1.
 

@@ -90,6 +90,42 @@ TEST_CASE("converge: the 1+log trumpet recovers 4th order for H and for field di
   fs::remove_all(out);
 }
 
+// Z4c (Sec. 17): the 1+log trumpet with the horizon shift on the default sinh grid, to 30 M;
+// its own norms G_L2_R and Theta_L2_R are judged with the rest, and K's field differences are
+// of the ADM K = K-hat + 2 Theta.
+TEST_CASE("converge --formulation z4c: 4th order for H, M_r, G^r and Theta, judged like BSSN's") {
+  const fs::path out = scratch("converge_z4c");
+  std::string err;
+  REQUIRE(run_study("converge --formulation z4c --kappa1 0.1 --N 200,300,400 --out " + out.string()
+                        + " --id 1log-trumpet --rahA 0.5 --rah0 1.0 --tmax 30 --dt-series 1 "
+                          "--fields K,Theta",
+                    &err)
+          == 0);
+  INFO(err);
+  CHECK(err.find("completed at t = 30; converges: every judged order") != std::string::npos);
+  const std::string text = slurp(out / "convergence.dat");
+  for (const char* judged : {"H_L2_R", "M_L2_R", "G_L2_R", "Theta_L2_R"})
+    CHECK(text.find(std::string("\n# order ") + judged
+                    + " N = 300 and 400: order of its RMS over "
+                      "time ")
+          != std::string::npos);
+  const auto t = gbssn1d::testing::read_table((out / "convergence.dat").string());
+  const std::size_t last = t.rows.size() - 1;
+  for (const char* c : {"p_H_R_300_400", "p_G_R_300_400", "p_Theta_R_300_400"}) {
+    INFO(c << " = " << t.at(last, c));
+    CHECK(t.at(last, c) > 3.5);
+    CHECK(t.at(last, c) < 4.6);
+  }
+  // a BSSN study has no Theta to difference
+  CHECK(run_study("converge --N 200,300,400 --out " + (out / "bssn").string()
+                      + " --id 1log-trumpet --tmax 1 --fields Theta",
+                  &err)
+        == 2);
+  CHECK(err.find("--fields = Theta is invalid: is not evolved with --formulation bssn")
+        != std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST_CASE("converge: a study whose errors fall short of the expected order is pre-asymptotic "
           "(exit 5) and says where") {
   // the 4th-order trumpet study above, judged against 8th order: it completes, its errors fall
