@@ -100,10 +100,15 @@ std::vector<ParamSpec> evolution_specs() {
        "kappa2; docs/gbssn1d-equations.md Sec. 17)"},
       {"kappa1", &Params::kappa1, "Formulation",
        "Z4c: constraint damping kappa1 (1/length, as --eta), >= 0: Theta and G^r decay at "
-       "~ alpha kappa1",
+       "~ alpha kappa1; grid-scale noise grows where kappa1 x cell width > 0.3 "
+       "(docs/z4c-study.md)",
        Acts::with_z4c},
       {"kappa2", &Params::kappa2, "Formulation",
        "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard)",
+       Acts::with_z4c},
+      {"z4c-lapse-adm", &Params::z4c_lapse_adm, "Formulation",
+       "Z4c, for the study: the 1+log lapse driven by the ADM K = K-hat + 2 Theta (BSSN's "
+       "slicing) instead of K-hat",
        Acts::with_z4c},
       {"eta", &Params::eta, "Gauge",
        "Gamma-driver damping eta (1/M); default 2/M, 1/M for a shrink of wormhole data "
@@ -247,11 +252,12 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
 const std::map<std::string, std::string>& default_rules() {
   static const std::map<std::string, std::string> rules{
       {"eta", "2/M (1/M: wormhole shrinks)"},
+      {"kappa1", "0.02/M"},
       {"norm-rmax", "min(10 M, rmax/2)"},
       {"ah-tmax", "none"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"box-taper", "0.5 on boxes"}};
+      {"box-taper", "0.5 on boxes (0 with Z4c's damping)"}};
   return rules;
 }
 

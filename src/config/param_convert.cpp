@@ -54,7 +54,7 @@ EvolutionConfig mesh_config(const Params& p) {
     c.stepping.subcycling = !p.no_subcycling;
     c.stepping.taper_cells = static_cast<std::size_t>(std::lround(p.box_taper.value() * p.N));
     c.stepping.taper_min_extent = p.box_taper_from * p.M;
-    c.stepping.dt_max = dt_max_of_damping(p.eta.value_or(2.0 / p.M));
+    c.stepping.dt_max = dt_max_of_damping(damping_rate(p));
   }
   c.stepping.cfl = p.cfl;
   return c;
@@ -106,8 +106,9 @@ InitialDataParams initial_data_params(const Params& p) {
 RhsParams rhs_params(const Params& p) {
   RhsParams r;
   r.formulation = p.formulation.value();
-  r.damping.kappa1 = p.kappa1;
-  r.damping.kappa2 = p.kappa2;
+  r.z4c.kappa1 = p.kappa1.value_or(kappa1_rule(p));
+  r.z4c.kappa2 = p.kappa2;
+  r.z4c.lapse_adm_K = p.z4c_lapse_adm;
   r.gauge.shift.eta = p.eta.value();
   r.gauge.shift.advective = p.advective_shift;
   r.gauge.slicing.advective = !p.non_advective_lapse;

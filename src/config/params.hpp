@@ -48,10 +48,12 @@ struct Params {
   InitialDataChoice id = InitialDataKind::wormhole; ///< wormhole | maximal-trumpet | 1log-trumpet
   double M = evolution_defaults().initial_data.M;
   LapseChoice lapse0 = InitialLapse::precollapsed; ///< one | precollapsed (wormhole)
-  // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/M) and kappa2
+  // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/length) and kappa2
   FormulationChoice formulation = Formulation::bssn; ///< bssn | z4c
-  double kappa1 = evolution_defaults().rhs.damping.kappa1;
-  double kappa2 = evolution_defaults().rhs.damping.kappa2;
+  /// unset: 0.02/M with Z4c (resolve_defaults, kappa1_rule); left unset with BSSN
+  std::optional<double> kappa1;
+  double kappa2 = evolution_defaults().rhs.z4c.kappa2;
+  bool z4c_lapse_adm = false; ///< Z4c: the lapse driven by the ADM K instead of K-hat (study)
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
   std::optional<double> eta;
@@ -143,6 +145,18 @@ inline bool z4c_on(const Params& p) {
   return p.formulation == Formulation::z4c;
 }
 
+/// Z4c's damping kappa1 when not given: 0.02/M, the field's value (docs/z4c-study.md: larger
+/// values, up to 5/M, gave lower H and M_AH errors on trumpet data, but grid-scale noise grows
+/// where kappa1 dr > 0.3, and no value made wormhole data's M_AH as good as BSSN's).
+inline double kappa1_rule(const Params& p) {
+  return 0.02 / p.M;
+}
+
+/// Z4c with its constraint damping on (kappa1 > 0).
+inline bool damped_z4c(const Params& p) {
+  return z4c_on(p) && p.kappa1.value_or(kappa1_rule(p)) > 0.0;
+}
+
 /// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.
 inline bool shift_on(const Params& p) {
   return p.rahA != 0.0;
@@ -187,10 +201,16 @@ RhsParams rhs_params(const Params& p);
 /// it has no horizon at some time, or it ends before `t_end`.
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end);
 
-/// The largest step a level takes: the stability limit of the Gamma-driver's damping term,
-/// eta dt <= 1 (RK4's limit for -eta B is 2.78; Schnetter 2010, CQG 27:167001), which coarse
-/// boxes would otherwise exceed (their CFL step grows with their spacing, eta's limit does not).
-double dt_max_of_damping(double eta);
+/// The largest step a level takes: the stability limit of the damping terms, rate dt <= 1
+/// (RK4's limit for d_t u = -rate u is 2.78; Schnetter 2010, CQG 27:167001), which coarse
+/// boxes would otherwise exceed (their CFL step grows with their spacing, a damping's limit does
+/// not). `rate` is damping_rate().
+double dt_max_of_damping(double rate);
+
+/// The fastest damping of the run's equations, 1/length: the Gamma-driver's eta, and with Z4c
+/// the constraint damping's alpha kappa1 (2 + kappa2) of Theta and 2 alpha kappa1 of Delta^r
+/// (alpha <= 1; equations document Sec. 17). Before resolve_defaults: eta's rule.
+double damping_rate(const Params& p);
 
 /// How often h_AH is searched for: at every RK substage (0), or every n >= 1 full steps.
 long ah_every_steps(const Params& p);

@@ -192,9 +192,10 @@ void validate_horizon_shift(const Params& p) {
   require_choice("--delta-advection", p.delta_advection);
   require_choice("--upwind", p.upwind);
   require_choice("--formulation", p.formulation);
-  require_finite("--kappa1", p.kappa1);
-  if (p.kappa1 < 0.0)
-    throw ParamError("--kappa1", num(p.kappa1),
+  const double kappa1 = p.kappa1.value_or(kappa1_rule(p));
+  require_finite("--kappa1", kappa1);
+  if (kappa1 < 0.0)
+    throw ParamError("--kappa1", num(kappa1),
                      "must be >= 0 (a negative kappa1 makes the constraints grow)");
   require_finite("--kappa2", p.kappa2);
   if (!(p.kappa2 > -1.0))
@@ -309,6 +310,13 @@ void validate_grid_and_steps(const Params& p) {
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));
+  // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise
+  if (const double rate = damping_rate(p); rate > eta && rate * dt_finest > eta_dt_max)
+    throw ParamError("--kappa1", num(p.kappa1.value_or(kappa1_rule(p))),
+                     fmt::format("unstable with --cfl = {}: the damping rate kappa1 max(2, 2 + "
+                                 "kappa2) = {} times dt = {} exceeds {} (RK4 limit of the "
+                                 "constraint damping)",
+                                 num(p.cfl), rate, dt_finest, eta_dt_max));
   if (p.grid == RadialGrid::boxes && p.rah_variant == ShiftVariant::midstep_update)
     throw ParamError("--rah-variant", p.rah_variant.name(),
                      "is a single-grid study variant (its searches count one grid's RHS calls)");

@@ -176,7 +176,10 @@ NonFiniteError::NonFiniteError(double t_, double r_, const std::string& var_, do
 
 void check_physical_range(const mesh::MeshLayout& layout, const std::vector<State>& levels,
                           double t, double alpha_min, double alpha_max) {
-  for (std::size_t l = 0; l < layout.levels(); ++l) {
+  // the finest box first: a coarse cell under a finer box holds that box's restriction, so the
+  // finest box with a bad value names where it arose (a blow-up at a box's outer boundary was
+  // reported at the first cell of box 0, which holds its restriction)
+  for (std::size_t l = layout.levels(); l-- > 0;) {
     const Grid& g = layout.grid(l);
     const State& u = levels[l];
     const std::string where = layout.levels() > 1 ? fmt::format(" (box {})", l) : "";

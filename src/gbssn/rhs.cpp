@@ -2,6 +2,7 @@
 
 #include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs_loop.hpp"
+#include "gbssn/z4c.hpp"
 
 #include <algorithm>
 #include <vector>

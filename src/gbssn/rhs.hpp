@@ -76,6 +76,10 @@ private:
   template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const Equations& equations, const State& u, State& dudt) const;
+  /// The Z4c point loop at order p with the upwind pair `upwind`, with or without the horizon
+  /// shift (its consistent form): its instances are compiled in rhs_z4c.cpp, beside BSSN's.
+  template <int p, fd::Upwind upwind>
+  void interior_z4c(const State& u, State& dudt) const;
   /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.
   template <fd::Upwind upwind>
   void evaluate_with(const State& u, State& dudt, double t);

@@ -7,7 +7,6 @@
 #include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
-#include "gbssn/z4c.hpp"
 
 #include <algorithm>
 #include <array>
@@ -122,11 +121,7 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
     // the study variants are BSSN's; validate() rejects them with --formulation z4c
     if (hs.active() && hs.variant != V::consistent)
       throw std::logic_error("--formulation z4c with a study --rah-variant (rejected by validate)");
-    const Z4c z4c{params_.damping};
-    if (!hs.active())
-      interior<Z4c, p, upwind, false>(z4c, u, dudt);
-    else
-      interior<Z4c, p, upwind, true, V::consistent>(z4c, u, dudt);
+    interior_z4c<p, upwind>(u, dudt); // compiled in rhs_z4c.cpp
   } else if (!hs.active()) {
     interior<Bssn, p, upwind, false>(Bssn{}, u, dudt);
   } else if (hs.variant == V::consistent) {

@@ -72,15 +72,18 @@ struct AdvectionParams {
 
 /// Z4c's constraint damping (Sec. 17, (Z2)-(Z4)): kappa1 (1/length) damps Theta and
 /// G^r = Delta^r - Delta_gamma^r at the rate ~ alpha kappa1; kappa2 weights the damping of
-/// Theta's part in K-hat (kappa2 = 0: the standard choice, Bernuzzi & Hilditch 2010).
-struct Damping {
-  double kappa1 = 0.02;
+/// Theta's part in K-hat (kappa2 = 0: the standard choice, Bernuzzi & Hilditch 2010). And what
+/// drives the 1+log lapse: K-hat (Z4c's standard, (G1)), or for the study the ADM trace
+/// K = K-hat + 2 Theta, BSSN's slicing.
+struct Z4cParams {
+  double kappa1 = 0.02; ///< 0.02/M at M = 1 (config: kappa1_rule)
   double kappa2 = 0.0;
+  bool lapse_adm_K = false;
 };
 
 struct RhsParams {
   Formulation formulation = Formulation::bssn;
-  Damping damping; ///< Z4c only
+  Z4cParams z4c; ///< Z4c only
   Gauge gauge;
   double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
   AdvectionParams advection;

@@ -157,6 +157,34 @@ TEST_CASE(
   fs::remove_all(parts);
 }
 
+// A checkpoint or study member written before Z4c records no formulation, kappa1, kappa2 or
+// z4c-lapse-adm: it is today's BSSN run (whose kappa1 is left unset, being idle), and a Z4c
+// configuration is told apart from it.
+TEST_CASE("a BSSN configuration written before Z4c reads as today's BSSN run, for any M") {
+  for (const double M : {1.0, 2.0}) {
+    gbssn1d::Params p;
+    p.M = M;
+    gbssn1d::resolve_defaults(p);
+    const std::string text = gbssn1d::config_text(p);
+    CHECK(text.find("kappa1") == std::string::npos);
+    std::istringstream lines(text);
+    std::string old, line;
+    while (std::getline(lines, line))
+      if (line.rfind("formulation =", 0) != 0 && line.rfind("kappa", 0) != 0
+          && line.rfind("z4c-lapse-adm =", 0) != 0)
+        old += line + "\n";
+    CHECK(old.size() < text.size());
+    CHECK(gbssn1d::config_differences(old, text, {}).empty());
+    gbssn1d::Params z = p;
+    z.formulation = gbssn1d::Formulation::z4c;
+    gbssn1d::resolve_defaults(z);
+    const auto diff = gbssn1d::config_differences(old, gbssn1d::config_text(z), {});
+    REQUIRE(diff.size() == 2);
+    CHECK(diff[0] == "formulation: \"bssn\" -> \"z4c\"");
+    CHECK(diff[1] == fmt::format("kappa1: (unset) -> {}", 0.02 / M));
+  }
+}
+
 // RK4 is stable for d_t B = -eta B only while eta dt stays inside its real stability interval
 // (-2.785..., 0]: at eta dt = 2.8 the amplification 1 - z + z^2/2 - z^3/6 + z^4/24 exceeds 1.
 

@@ -96,7 +96,7 @@ TEST_CASE("Z4c: point-wise RHS agrees with the symbolic reference (Sec. 17, V8)"
     const PointData p = point_from_row(t, row, Formulation::z4c);
     const double r = p.r;
     auto ref = [&](const std::string& c) { return t.at(row, c); };
-    const Z4c z4c{Damping{ref("kappa1"), ref("kappa2")}};
+    const Z4c z4c{Z4cParams{ref("kappa1"), ref("kappa2")}};
     for (bool advective_shift : {false, true}) {
       Gauge gauge;
       gauge.shift.eta = ref("eta");
@@ -133,7 +133,7 @@ TEST_CASE("flat space: every right-hand side and constraint is exactly zero") {
       const Rhs rhs = gbssn_rhs(p, gauge);
       for (const auto& e : evolved(Formulation::bssn))
         CHECK(rhs[e.var] == 0.0);
-      const Rhs z4c = Z4c{Damping{0.1, 0.5}}.rhs(p, gauge, full_shift(p));
+      const Rhs z4c = Z4c{Z4cParams{0.1, 0.5}}.rhs(p, gauge, full_shift(p));
       for (const auto& e : evolved(Formulation::z4c))
         CHECK(z4c[e.var] == 0.0);
     }

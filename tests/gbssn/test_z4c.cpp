@@ -2,7 +2,8 @@
 // Hamiltonian constraint leaves at the speed of light in Z4c and stays where it was in BSSN
 // (whose subsystem has a zero-speed mode), the damping makes Theta decay at the rate
 // alpha kappa1 (2 + kappa2), and random noise around flat data stays bounded for 1000 M in
-// both formulations (a robust-stability test).
+// both formulations (a robust-stability test), except where the grid does not resolve the
+// damping (kappa1 dr above about 0.3).
 #include "diagnostics/constraints.hpp"
 #include "gbssn/rhs.hpp"
 #include "gbssn/state.hpp"
@@ -16,6 +17,7 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <utility>
 
 using namespace gbssn1d;
 
@@ -64,7 +66,7 @@ TEST_CASE("Z4c: a Hamiltonian-constraint violation leaves at the speed of light,
   for (const Formulation f : {Formulation::bssn, Formulation::z4c}) {
     RhsParams params;
     params.formulation = f;
-    params.damping.kappa1 = 0.0; // propagation alone
+    params.z4c.kappa1 = 0.0; // propagation alone
     GbssnRhs rhs(g, params);
     State u = flat_with_chi_pulse(g, f, 1e-6, r0, w);
     const double H0 = H_norm(u, g, r0 - 3 * w, r0 + 3 * w);
@@ -87,7 +89,7 @@ TEST_CASE("Z4c: kappa1 damps the constraints") {
   for (const double kappa1 : {0.0, 0.5}) {
     RhsParams params;
     params.formulation = Formulation::z4c;
-    params.damping.kappa1 = kappa1;
+    params.z4c.kappa1 = kappa1;
     GbssnRhs rhs(g, params);
     State u = flat_with_chi_pulse(g, Formulation::z4c, 1e-6, r0, w);
     evolve(rhs, u, T, 0.25);
@@ -105,36 +107,63 @@ TEST_CASE("Z4c: kappa1 damps the constraints") {
   CHECK(Theta_end[1] < bound * Theta_end[0]);
 }
 
-TEST_CASE("robust stability: random noise around flat data stays bounded for 1000 M") {
-  const Grid g(RadialMap::uniform(20.0), 100); // dr = 0.2
-  for (const Formulation f : {Formulation::bssn, Formulation::z4c}) {
-    std::mt19937_64 random(7);
-    std::uniform_real_distribution<double> noise(-1e-10, 1e-10);
-    State u = make_state(g, f);
-    for (const auto& e : evolved(f)) {
-      auto field_values = field(u, g, e.var);
-      for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
-        field_values[i] = e.asymptotic + noise(random);
-    }
-    fill_origin_ghosts(u, g);
-    RhsParams params;
-    params.formulation = f;
-    GbssnRhs rhs(g, params);
-    double early = 0.0, late = 0.0;
-    evolve(rhs, u, 1000.0, 0.25, [&](double t, const State& v) {
-      if (t > 10.0 && t < 900.0)
-        return;
-      double deviation = 0.0;
-      for (const auto& e : evolved(f)) {
-        const auto x = field(v, g, e.var);
-        for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
-          deviation = std::max(deviation, std::abs(x[i] - e.asymptotic));
-      }
-      (t <= 10.0 ? early : late) = std::max(t <= 10.0 ? early : late, deviation);
-    });
-    MESSAGE(std::string(f == Formulation::z4c ? "z4c" : "bssn")
-            << ": max deviation over t <= 10: " << early << ", over 900 <= t <= 1000: " << late);
-    CHECK(std::isfinite(late));
-    CHECK(late < 10.0 * early);
+namespace {
+
+/// Largest deviation from flat data over t <= 10 and over 900 <= t <= 1000 of a run started
+/// from random noise of 1e-10 around flat data (uniform grid of 100 cells to r = 20).
+std::pair<double, double> noise_run(Formulation f, double kappa1, double kappa2,
+                                    double t_end = 1000.0, std::size_t n = 100, double ko = 0.1,
+                                    double rmax = 20.0) {
+  const Grid g(RadialMap::uniform(rmax), n); // dr = 0.2 at n = 100, rmax = 20
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> noise(-1e-10, 1e-10);
+  State u = make_state(g, f);
+  for (const auto& e : evolved(f)) {
+    auto field_values = field(u, g, e.var);
+    for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
+      field_values[i] = e.asymptotic + noise(random);
   }
+  fill_origin_ghosts(u, g);
+  RhsParams params;
+  params.formulation = f;
+  params.z4c.kappa1 = kappa1;
+  params.z4c.kappa2 = kappa2;
+  params.ko_sigma = ko;
+  GbssnRhs rhs(g, params);
+  double early = 0.0, late = 0.0;
+  evolve(rhs, u, t_end, 0.25, [&](double t, const State& v) {
+    if (t > 10.0 && t < t_end - 100.0)
+      return;
+    double deviation = 0.0;
+    for (const auto& e : evolved(f)) {
+      const auto x = field(v, g, e.var);
+      for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
+        deviation = std::isnan(x[i]) ? NAN : std::max(deviation, std::abs(x[i] - e.asymptotic));
+    }
+    double& m = t <= 10.0 ? early : late;
+    m = std::isfinite(deviation) && std::isfinite(m) ? std::max(m, deviation) : NAN;
+  });
+  return {early, late};
+}
+
+} // namespace
+
+// Both ways: BSSN and Z4c at kappa1 = 0.02 (the default) and 1/M stay bounded on a grid of
+// dr = 0.2; at kappa1 = 2/M the grid-scale noise grows (measured: 5e-8 to 1.3 by 1000 M; the
+// threshold is near kappa1 dr = 0.3 with the default dissipation, docs/z4c-study.md), so that a
+// damping the grid does not resolve is seen here.
+TEST_CASE("robust stability: random noise around flat data stays bounded for 1000 M, and grows "
+          "where the grid does not resolve the damping") {
+  for (const auto& [f, kappa1] :
+       {std::pair{Formulation::bssn, 0.0}, {Formulation::z4c, 0.02}, {Formulation::z4c, 1.0}}) {
+    const auto [early, late] = noise_run(f, kappa1, 0.0);
+    MESSAGE(std::string(f == Formulation::z4c ? "z4c" : "bssn")
+            << " kappa1 = " << kappa1 << ": max deviation over t <= 10: " << early
+            << ", over 900 <= t <= 1000: " << late);
+    CHECK(std::isfinite(late));
+    CHECK(late < early);
+  }
+  const auto [early, late] = noise_run(Formulation::z4c, 2.0, 0.0);
+  MESSAGE("z4c kappa1 = 2: " << early << ", " << late);
+  CHECK(late > 1e3 * early);
 }

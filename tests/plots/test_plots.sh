@@ -53,7 +53,14 @@ done
 "$py" "$plots/compare_trumpet.py" "$dir/boxes32/profiles.dat" "$dir/ref/profiles.dat" -o "$dir/boxes_cmp.png" >/dev/null
 "$py" "$plots/plot_horizons.py" "$dir"/boxes{16,24,32}/horizon.dat --label-by N -o "$dir/boxes_horizons.png"
 "$py" "$plots/error_profiles.py" "$dir"/boxes{16,24,32} -y a --times 1,2 -o "$dir/boxes_error.png" >/dev/null
-for f in series stdin profiles cmp orders orders_mixed horizons boxes_profiles boxes_cmp boxes_horizons boxes_error; do
+# Z4c against BSSN (plots/z4c_study.py): a row per run with its ratios to the base, and a figure
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 100 --rmax 20 --tmax 2 --formulation z4c \
+  --out "$dir/z4c" 2>/dev/null
+"$py" "$plots/z4c_study.py" table "$dir/run" "$dir/z4c" --t0 0 --t1 2 >"$dir/z4c_table.txt"
+grep -q '^run bssn 2 .* 1 .* 1 -$' "$dir/z4c_table.txt" && grep -q '^z4c z4c,kappa1=0.02 2 ' "$dir/z4c_table.txt" \
+  || { echo "z4c_study.py table: rows not as expected"; cat "$dir/z4c_table.txt"; exit 1; }
+"$py" "$plots/z4c_study.py" figure "$dir/run" "$dir/z4c" --t0 0 --t1 2 -o "$dir/z4c.png"
+for f in series stdin profiles cmp orders orders_mixed horizons boxes_profiles boxes_cmp boxes_horizons boxes_error z4c; do
   [ -s "$dir/$f.png" ] || { echo "plot $f.png missing or empty"; exit 1; }
   head -c 8 "$dir/$f.png" | grep -q PNG || { echo "$f.png is not a PNG"; exit 1; }
 done
@@ -155,7 +162,7 @@ refused() {  # refused FILE COMMAND...: exit 2, one line naming FILE, no traceba
   shift
   "$@" >/dev/null 2>"$dir/err" </dev/null || status=$?
   if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || grep -q Traceback "$dir/err" \
-     || ! grep -qF ": $file: " "$dir/err" || ! grep -q '^[a-z_]*\.py: ' "$dir/err"; then
+     || ! grep -qF ": $file: " "$dir/err" || ! grep -q '^[a-z0-9_]*\.py: ' "$dir/err"; then
     echo "not refused in one line naming $file (exit $status): ${*:2}"; cat "$dir/err"; exit 1
   fi
 }
@@ -193,6 +200,11 @@ for script in plot_horizons plot_sweep constraint_orders compare_trumpet error_p
         refused "$g" "$py" "$plots/$script.py" onset "$h/$kind" ;;
     esac
   done
+done
+for kind in missing folder binary; do # z4c_study.py reads a folder's timeseries.dat
+  mkdir -p "$h/z4c-$kind"
+  case $kind in folder) mkdir -p "$h/z4c-$kind/timeseries.dat" ;; binary) cp /bin/true "$h/z4c-$kind/timeseries.dat" ;; esac
+  refused "$h/z4c-$kind/timeseries.dat" "$py" "$plots/z4c_study.py" table "$dir/run" "$h/z4c-$kind"
 done
 refused "standard input" bash -c '"$1" "$2/plot_series.py" - -y alpha -o "$3/x.png" </bin/true' \
   _ "$py" "$plots" "$dir"
