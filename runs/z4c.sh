@@ -5,7 +5,7 @@
 #
 #   bash runs/z4c.sh damping       # kappa1 = 0 ... 5 on four set-ups to 1000 M, the boxes with
 #                                  # and without their tapered buffer (~2 min)
-#   bash runs/z4c.sh kappa2        # kappa2 = -0.5, 0, 1 at kappa1 = 0.5 and 2 (~1 min)
+#   bash runs/z4c.sh kappa2        # kappa2 = -0.5, 0, 1 at kappa1 = 0.5 and 2; eta = 1 (~1 min)
 #   bash runs/z4c.sh resolution    # the damping's effect at M/16, M/24, M/32 (~3 min)
 #   bash runs/z4c.sh convergence   # converge families, uniform M/8 ... M/24, to 100 M (~5 min)
 #   bash runs/z4c.sh fine          # sinh N = 800, 1600, 3200, h = 1.5, to 30 M (~3 min)
@@ -101,8 +101,15 @@ kappa2)
       run "sinh_trumpet-k$k-kk$k2" "${sinh_trumpet[@]}" "${long[@]}" --formulation z4c --kappa1 $k --kappa2 $k2
     done
   done
+  # the band of kappa1 where Z4c is worse than BSSN, with the Gamma-driver's eta halved
+  run "sinh_trumpet-eta1-bssn" "${sinh_trumpet[@]}" "${long[@]}" --eta 1
+  for k in 0.1 0.3 0.5 0.7 1; do
+    run "sinh_trumpet-eta1-k$k" "${sinh_trumpet[@]}" "${long[@]}" --eta 1 --formulation z4c --kappa1 $k
+  done
   wait
-  table "$out/sinh_trumpet-bssn" "$out"/sinh_trumpet-k{0.5,2}-kk{-0.5,0,1} | tee "$out/kappa2.txt"
+  { table "$out/sinh_trumpet-bssn" "$out"/sinh_trumpet-k{0.5,2}-kk{-0.5,0,1}
+    echo "== eta = 1/M"
+    table "$out/sinh_trumpet-eta1-bssn" "$out"/sinh_trumpet-eta1-k{0.1,0.3,0.5,0.7,1}; } | tee "$out/kappa2.txt"
   ;;
 resolution)
   for N in 160 240 320; do
