@@ -62,7 +62,10 @@ status=0
 # (measured at 17-79 s under the sanitizers) the sweep's periodic progress lines (waiting for
 # members long enough to print them; the [k/n] lines run in every sweep case), the converge study
 # at the round-off floor (its verdict classes run as unit cases), the dense-output gauge pulse,
-# the horizon moving both ways and the trumpet on five boxes (kernels the faster cases run).
+# the horizon moving both ways and the trumpet on five boxes (kernels the faster cases run); and
+# Z4c's converge study, noise for 1000 M (four runs), the flat-space pulse and the damping's rate
+# (102, 298, 70, 75 s under the sanitizers at 66e18bc: Z4c's point loop runs under them in its
+# resume case, on a grid and on boxes, its equations in its point-wise case).
 slow=(
   "a resumed run's progress line counts its speed from the resume"
   "a stretched horizon (0.89 M) converges at coarse spacing"
@@ -87,6 +90,10 @@ slow=(
   "gauge pulse, RK4 dense output at the stage times"
   "the horizon moves outward in r when h > h_AH and inward when h < h_AH"
   "the 1+log trumpet on five boxes converges at 4th order through refinement boundaries"
+  "converge --formulation z4c: 4th order for H, M_r, G^r and Theta"
+  "robust stability: random noise around flat data stays bounded for 1000 M"
+  "Z4c: a Hamiltonian-constraint violation leaves at the speed of light"
+  "Z4c: kappa1 damps the constraints"
 )
 for name in "${slow[@]}"; do # a renamed case would otherwise run unnoticed: say so
   pattern=$(sed 's/[][\\.^$*+?(){}|]/\\&/g' <<<"$name")

@@ -10,7 +10,6 @@
 #include "grid/grid.hpp"
 #include "initial_data/initial_data.hpp"
 
-#include <boost/numeric/odeint.hpp>
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -40,17 +39,30 @@ State flat_with_chi_pulse(const Grid& g, Formulation formulation, double eps, do
   return u;
 }
 
-/// `u` advanced by RK4 from t = 0 to t_end at dt = cfl dr, calling `each(t, u)` after each step.
+/// `u` advanced by classical RK4 from t = 0 to t_end at dt = cfl dr, calling `each(t, u)` after
+/// each step (written out here: the stages' sums need no library).
 void evolve(GbssnRhs& rhs, State& u, double t_end, double cfl,
             const std::function<void(double, const State&)>& each = {}) {
-  boost::numeric::odeint::runge_kutta4<State> rk4;
   const double dt = cfl * rhs.grid().min_spacing();
   const long steps = std::lround(t_end / dt);
+  State k1, k2, k3, k4, x(u.size());
   for (long k = 0; k < steps; ++k) {
-    rk4.do_step(std::ref(rhs), u, static_cast<double>(k) * dt, dt);
+    const double t = static_cast<double>(k) * dt;
+    rhs(u, k1, t);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      x[i] = u[i] + 0.5 * dt * k1[i];
+    rhs(x, k2, t + 0.5 * dt);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      x[i] = u[i] + 0.5 * dt * k2[i];
+    rhs(x, k3, t + 0.5 * dt);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      x[i] = u[i] + dt * k3[i];
+    rhs(x, k4, t + dt);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
     fill_origin_ghosts(u, rhs.grid());
     if (each)
-      each(static_cast<double>(k + 1) * dt, u);
+      each(t + dt, u);
   }
 }
 
