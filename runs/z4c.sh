@@ -140,6 +140,10 @@ convergence)
       family "$f-$id-shrink-published" 1600,2400,3200 "${common[@]}" --id $id --formulation $f --rahA 0.5 --rah0 0.6 "${published[@]}"
     done
   done
+  # boxes: 6 boxes to 128 M, finest M/12, M/16, M/24, to 50 M (Z4c's damping without the taper)
+  family z4c-boxes-1log-trumpet 48,64,96 --id 1log-trumpet --formulation z4c --grid boxes \
+    --levels 6 --rmax 128 --tmax 50 --dt-series 0.25 --dt-profiles 50
+  grep -E '^# (verdict|order (H|Theta)_L2_R)' "$out/z4c-boxes-1log-trumpet/convergence.dat"
   for f in bssn z4c; do
     for id in 1log-trumpet maximal-trumpet wormhole; do
       echo "== $f, $id: RMS H_L2_R over [10, 100] M at M/8, M/12, M/16 (M/24); ratio to $f's standard gauge"
