@@ -1,18 +1,21 @@
 // Right-hand-side throughput: grid points x RHS evaluations per second, one core.
 //
-//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096]      (--help for the options)
+//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096] [--sections rhs,boxes,...]
+//                                                               (--help for the options)
 //
 // Evaluates the full grid RHS (derivatives, upwinding, equations, dissipation, boundary) on
 // 1+log-trumpet data on a sinh grid, for N = 256, 1024, 4096, and also one RK4 step's cost;
 // for the plain Gamma-driver and with the horizon-adjusting shift (rahA = 0.5, rah0 = 0.89:
 // the horizon search on every evaluation and the split shift included); each --fd-order, each
-// --upwind pair, each --formulation, and whole runs on nested boxes.
+// --upwind pair, each --formulation, and whole runs on nested boxes (--sections picks some;
+// docs/roofline.md reads them against the core's ceilings, build/gbssn1d_peak).
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -69,6 +72,13 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "timing per size and shift (s)")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 600.0));
+  std::vector<std::string> sections{"rhs", "fd-order", "upwind", "formulation", "boxes"};
+  app.add_option("--sections", sections,
+                 "sections to run: rhs (plain and horizon shift, each N), fd-order, upwind, "
+                 "formulation (on the largest N), boxes (whole runs)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rhs", "fd-order", "upwind", "formulation", "boxes"}));
   app.add_option("--N", sizes, "grid sizes")
       ->delimiter(',')
       ->capture_default_str()
@@ -78,107 +88,120 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2; // usage errors: exit status 2, as gbssn1d
   }
+  const auto wanted = [&](const char* name) {
+    return std::find(sections.begin(), sections.end(), name) != sections.end();
+  };
   fmt::print("# gbssn1d {} RHS benchmark (1+log trumpet, sinh grid rmax = 100 M)\n",
              GBSSN1D_VERSION);
-  fmt::print("# shift N evaluations seconds points_x_rhs_per_s ns_per_point rk4_steps_per_s\n");
-  for (const bool horizon_shift : {false, true})
-    for (int n : sizes) {
-      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
-      p.dr_inner = 0.01; // one sinh map for every N (innermost 0.01 M at N = 400)
-      p.tmax = 0.0;
-      resolve_defaults(p);
-      validate(p);
-      Simulation sim(evolution_config(p));
-      const auto [evals, elapsed] = time_rhs(sim, seconds);
-      const double rate = static_cast<double>(evals) * n / elapsed;
-      using clock = std::chrono::steady_clock;
+  if (wanted("rhs")) {
+    fmt::print("# shift N evaluations seconds points_x_rhs_per_s ns_per_point rk4_steps_per_s\n");
+    for (const bool horizon_shift : {false, true})
+      for (int n : sizes) {
+        Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+        p.dr_inner = 0.01; // one sinh map for every N (innermost 0.01 M at N = 400)
+        p.tmax = 0.0;
+        resolve_defaults(p);
+        validate(p);
+        Simulation sim(evolution_config(p));
+        const auto [evals, elapsed] = time_rhs(sim, seconds);
+        const double rate = static_cast<double>(evals) * n / elapsed;
+        using clock = std::chrono::steady_clock;
 
-      long steps = 0;
-      const auto start_steps = clock::now();
-      double elapsed_steps = 0;
-      do {
-        for (int k = 0; k < 10; ++k)
-          sim.step(1e-6);
-        steps += 10;
-        elapsed_steps = std::chrono::duration<double>(clock::now() - start_steps).count();
-      } while (elapsed_steps < 0.5 * seconds);
-      fmt::print("{} {} {} {:.3f} {:.4e} {:.2f} {:.1f}\n", horizon_shift ? "horizon" : "plain", n,
-                 evals, elapsed, rate, 1e9 / rate, steps / elapsed_steps);
-    }
+        long steps = 0;
+        const auto start_steps = clock::now();
+        double elapsed_steps = 0;
+        do {
+          for (int k = 0; k < 10; ++k)
+            sim.step(1e-6);
+          steps += 10;
+          elapsed_steps = std::chrono::duration<double>(clock::now() - start_steps).count();
+        } while (elapsed_steps < 0.5 * seconds);
+        fmt::print("{} {} {} {:.3f} {:.4e} {:.2f} {:.1f}\n", horizon_shift ? "horizon" : "plain", n,
+                   evals, elapsed, rate, 1e9 / rate, steps / elapsed_steps);
+      }
+  }
   // Every finite-difference order (--fd-order), plain Gamma-driver, on the largest size: the
   // wider stencils' cost per point.
-  fmt::print("# --fd-order: plain shift, N = {}\n", sizes.back());
-  fmt::print("# fd_order N evaluations seconds points_x_rhs_per_s ns_per_point\n");
-  for (const int order : {2, 4, 6, 8}) {
-    const int n = sizes.back();
-    Params p = trumpet(n, 100.0, "sinh", false);
-    p.dr_inner = 0.01;
-    p.tmax = 0.0;
-    p.fd_order = order;
-    resolve_defaults(p);
-    validate(p);
-    Simulation sim(evolution_config(p));
-    const auto [evals, elapsed] = time_rhs(sim, seconds);
-    const double rate = static_cast<double>(evals) * n / elapsed;
-    fmt::print("{} {} {} {:.3f} {:.4e} {:.2f}\n", order, n, evals, elapsed, rate, 1e9 / rate);
+  if (wanted("fd-order")) {
+    fmt::print("# --fd-order: plain shift, N = {}\n", sizes.back());
+    fmt::print("# fd_order N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+    for (const int order : {2, 4, 6, 8}) {
+      const int n = sizes.back();
+      Params p = trumpet(n, 100.0, "sinh", false);
+      p.dr_inner = 0.01;
+      p.tmax = 0.0;
+      p.fd_order = order;
+      resolve_defaults(p);
+      validate(p);
+      Simulation sim(evolution_config(p));
+      const auto [evals, elapsed] = time_rhs(sim, seconds);
+      const double rate = static_cast<double>(evals) * n / elapsed;
+      fmt::print("{} {} {} {:.3f} {:.4e} {:.2f}\n", order, n, evals, elapsed, rate, 1e9 / rate);
+    }
   }
   // The upwind pairs (--upwind), plain and with the horizon shift, on the largest size.
-  fmt::print("# --upwind: N = {}\n", sizes.back());
-  fmt::print("# upwind shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
-  for (const bool horizon_shift : {false, true})
-    for (const char* upwind : {"lopsided", "biased"}) {
-      const int n = sizes.back();
-      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
-      p.dr_inner = 0.01;
-      p.tmax = 0.0;
-      p.upwind = UpwindChoice::parse(upwind);
-      resolve_defaults(p);
-      validate(p);
-      Simulation sim(evolution_config(p));
-      const auto [evals, elapsed] = time_rhs(sim, seconds);
-      const double rate = static_cast<double>(evals) * n / elapsed;
-      fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", upwind, horizon_shift ? "horizon" : "plain",
-                 n, evals, elapsed, rate, 1e9 / rate);
-    }
-  // The formulations (--formulation): Z4c evolves Theta besides, plain and with the horizon
-  // shift, on the largest size.
-  fmt::print("# --formulation: N = {}\n", sizes.back());
-  fmt::print("# formulation shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
-  for (const bool horizon_shift : {false, true})
-    for (const char* formulation : {"bssn", "z4c"}) {
-      const int n = sizes.back();
-      Params p = trumpet(n, 100.0, "sinh", horizon_shift);
-      p.dr_inner = 0.01;
-      p.tmax = 0.0;
-      p.formulation = FormulationChoice::parse(formulation);
-      resolve_defaults(p);
-      validate(p);
-      Simulation sim(evolution_config(p));
-      const auto [evals, elapsed] = time_rhs(sim, seconds);
-      const double rate = static_cast<double>(evals) * n / elapsed;
-      fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", formulation,
-                 horizon_shift ? "horizon" : "plain", n, evals, elapsed, rate, 1e9 / rate);
-    }
-  // Nested boxes: whole runs of the hierarchy to 100 M (every level, subcycled, with
-  // prolongation, restriction, stage-value time interpolation, the horizon searches and the
-  // output-free diagnostics), counted as cells x RHS evaluations of all levels.
-  fmt::print("# boxes: 9 levels to rmax 1024 M, N cells each, a run to t = 100 M\n");
-  fmt::print("# shift N hierarchy_steps seconds points_x_rhs_per_s hierarchy_steps_per_s\n");
-  for (const bool horizon_shift : {false, true})
-    for (int n : {32, 64, 128}) {
-      Params p = trumpet(n, 1024.0, "boxes", horizon_shift);
-      p.levels = 9;
-      p.tmax = 100.0;
-      resolve_defaults(p);
-      validate(p);
-      Simulation sim(evolution_config(p));
-      using clock = std::chrono::steady_clock;
-      const auto start = clock::now();
-      sim.run(nullptr);
-      const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
-      const double points = static_cast<double>(sim.point_evaluations());
-      const long steps = sim.schedule().n_steps;
-      fmt::print("{} {} {} {:.3f} {:.4e} {:.1f}\n", horizon_shift ? "horizon" : "plain", n, steps,
-                 elapsed, points / elapsed, static_cast<double>(steps) / elapsed);
-    }
+  if (wanted("upwind")) {
+    fmt::print("# --upwind: N = {}\n", sizes.back());
+    fmt::print("# upwind shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+    for (const bool horizon_shift : {false, true})
+      for (const char* upwind : {"lopsided", "biased"}) {
+        const int n = sizes.back();
+        Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+        p.dr_inner = 0.01;
+        p.tmax = 0.0;
+        p.upwind = UpwindChoice::parse(upwind);
+        resolve_defaults(p);
+        validate(p);
+        Simulation sim(evolution_config(p));
+        const auto [evals, elapsed] = time_rhs(sim, seconds);
+        const double rate = static_cast<double>(evals) * n / elapsed;
+        fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", upwind,
+                   horizon_shift ? "horizon" : "plain", n, evals, elapsed, rate, 1e9 / rate);
+      }
+  }
+  if (wanted("formulation")) {
+    // The formulations (--formulation): Z4c evolves Theta besides, plain and with the horizon
+    // shift, on the largest size.
+    fmt::print("# --formulation: N = {}\n", sizes.back());
+    fmt::print("# formulation shift N evaluations seconds points_x_rhs_per_s ns_per_point\n");
+    for (const bool horizon_shift : {false, true})
+      for (const char* formulation : {"bssn", "z4c"}) {
+        const int n = sizes.back();
+        Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+        p.dr_inner = 0.01;
+        p.tmax = 0.0;
+        p.formulation = FormulationChoice::parse(formulation);
+        resolve_defaults(p);
+        validate(p);
+        Simulation sim(evolution_config(p));
+        const auto [evals, elapsed] = time_rhs(sim, seconds);
+        const double rate = static_cast<double>(evals) * n / elapsed;
+        fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f}\n", formulation,
+                   horizon_shift ? "horizon" : "plain", n, evals, elapsed, rate, 1e9 / rate);
+      }
+  }
+  if (wanted("boxes")) {
+    // Nested boxes: whole runs of the hierarchy to 100 M (every level, subcycled, with
+    // prolongation, restriction, stage-value time interpolation, the horizon searches and the
+    // output-free diagnostics), counted as cells x RHS evaluations of all levels.
+    fmt::print("# boxes: 9 levels to rmax 1024 M, N cells each, a run to t = 100 M\n");
+    fmt::print("# shift N hierarchy_steps seconds points_x_rhs_per_s hierarchy_steps_per_s\n");
+    for (const bool horizon_shift : {false, true})
+      for (int n : {32, 64, 128}) {
+        Params p = trumpet(n, 1024.0, "boxes", horizon_shift);
+        p.levels = 9;
+        p.tmax = 100.0;
+        resolve_defaults(p);
+        validate(p);
+        Simulation sim(evolution_config(p));
+        using clock = std::chrono::steady_clock;
+        const auto start = clock::now();
+        sim.run(nullptr);
+        const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+        const double points = static_cast<double>(sim.point_evaluations());
+        const long steps = sim.schedule().n_steps;
+        fmt::print("{} {} {} {:.3f} {:.4e} {:.1f}\n", horizon_shift ? "horizon" : "plain", n, steps,
+                   elapsed, points / elapsed, static_cast<double>(steps) / elapsed);
+      }
+  }
 }
