@@ -216,6 +216,14 @@ void validate_horizon_shift(const Params& p) {
                                  "box-substage; --rah-variant {} is a study variant, built with "
                                  "the lopsided stencil only",
                                  p.rah_variant.name()));
+  if (p.fd_order != 4 && shift_on(p) && p.rah_variant != ShiftVariant::consistent
+      && p.rah_variant != ShiftVariant::midstep_update
+      && p.rah_variant != ShiftVariant::box_substage)
+    throw ParamError("--fd-order", std::to_string(p.fd_order),
+                     fmt::format("is offered with --rah-variant consistent, midstep-update and "
+                                 "box-substage; --rah-variant {} is a study variant of the "
+                                 "published study's equations, built at --fd-order 4 only",
+                                 p.rah_variant.name()));
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
