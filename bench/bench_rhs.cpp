@@ -1,6 +1,6 @@
 // Right-hand-side throughput: grid points x RHS evaluations per second, one core.
 //
-//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096] [--sections rhs,boxes,...]
+//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096] [--sections rhs,boxes,peak,...]
 //                                                               (--help for the options)
 //
 // Evaluates the full grid RHS (derivatives, upwinding, equations, dissipation, boundary) on
@@ -8,9 +8,11 @@
 // for the plain Gamma-driver and with the horizon-adjusting shift (rahA = 0.5, rah0 = 0.89:
 // the horizon search on every evaluation and the split shift included); each --fd-order, each
 // --upwind pair, each --formulation, and whole runs on nested boxes (--sections picks some;
-// docs/roofline.md reads them against the core's ceilings, build/gbssn1d_peak).
+// --sections peak measures the core's ceilings, machine_ceilings.cpp; docs/roofline.md reads
+// them together).
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
+#include "machine_ceilings.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -75,10 +77,17 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections{"rhs", "fd-order", "upwind", "formulation", "boxes"};
   app.add_option("--sections", sections,
                  "sections to run: rhs (plain and horizon shift, each N), fd-order, upwind, "
-                 "formulation (on the largest N), boxes (whole runs)")
+                 "formulation (on the largest N), boxes (whole runs), peak (the core's "
+                 "ceilings: clock, FMA, multiply and division throughput, bandwidth; about 20 s, "
+                 "not run by default)")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(CLI::IsMember({"rhs", "fd-order", "upwind", "formulation", "boxes"}));
+      ->check(CLI::IsMember({"rhs", "fd-order", "upwind", "formulation", "boxes", "peak"}));
+  double fma_latency = 4.0;
+  app.add_option("--fma-latency", fma_latency,
+                 "peak: cycles of one FMA's latency, which turns a chain of them into a clock")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 16.0));
   app.add_option("--N", sizes, "grid sizes")
       ->delimiter(',')
       ->capture_default_str()
@@ -91,6 +100,10 @@ int main(int argc, char** argv) {
   const auto wanted = [&](const char* name) {
     return std::find(sections.begin(), sections.end(), name) != sections.end();
   };
+  if (wanted("peak"))
+    print_machine_ceilings(0.2, fma_latency);
+  if (sections == std::vector<std::string>{"peak"})
+    return 0;
   fmt::print("# gbssn1d {} RHS benchmark (1+log trumpet, sinh grid rmax = 100 M)\n",
              GBSSN1D_VERSION);
   if (wanted("rhs")) {

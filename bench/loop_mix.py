@@ -11,7 +11,9 @@ backward jump whose body is mostly full-width vector instructions) and prints, p
 per grid point (an iteration handles `lanes` points: 8 for 512-bit registers, 4 for 256-bit):
 floating-point arithmetic instructions by kind, divisions and square roots, loads by where they
 read (the staged block: data; the stack: spilled registers; constants) and stores; and the flops
-of one point (an FMA counts two; each vector instruction does one lane's work for each point). docs/roofline.md reads these counts against the machine's ceilings (gbssn1d_peak).
+of one point (an FMA counts two; each vector instruction does one lane's work for each point).
+docs/roofline.md reads these counts against the machine's ceilings (gbssn1d_bench --sections
+peak).
 The loop body is branch-free, so the static count of one iteration is its dynamic count.
 
 --check-vectorised: for every instance of GbssnRhs::interior in the OBJECTs (those without one

@@ -1,8 +1,8 @@
 // The machine's ceilings for the roofline of the right-hand side (docs/roofline.md): one core's
-// clock, its double-precision arithmetic throughput at each vector width, its division and
-// square-root throughput, and its memory bandwidth from each level of the cache hierarchy.
+// clock, its double-precision arithmetic throughput at each vector width, its division
+// throughput, and its memory bandwidth from each level of the cache hierarchy.
 //
-//   build/gbssn1d_peak [--seconds S]
+//   build/gbssn1d_bench --sections peak [--fma-latency 4]
 //
 // Each figure is the best of several repetitions (the ceiling, not the average: a shared machine
 // only ever slows a repetition down). The kernels are GCC vector extensions of 1, 4 and 8 doubles
@@ -11,10 +11,11 @@
 //  - clock: a chain of dependent FMAs, each waiting for the last; cycles = chain length x the
 //    FMA latency (`--fma-latency`, 4 cycles on the Intel and AMD cores of the last decade);
 //  - FMA and multiply throughput: 12 independent chains, enough to fill two pipelined units;
-//  - division and square root throughput: 8 independent chains;
+//  - division throughput: 8 independent chains;
 //  - bandwidth: the sum of an array (read) and a = b + s c (triad: two reads, one write, counted
 //    as 24 bytes per element), for arrays that fit L1, L2, the shared L3, and none of them.
-#include <CLI/CLI.hpp>
+#include "machine_ceilings.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -185,24 +186,7 @@ double per_iteration(void (*f)(long), int rounds) {
 
 } // namespace
 
-int main(int argc, char** argv) {
-  CLI::App app{"gbssn1d machine ceilings: clock, arithmetic and division throughput per vector "
-               "width, memory bandwidth per cache level (one core; docs/roofline.md)",
-               "gbssn1d_peak"};
-  double seconds = 0.2;
-  double fma_latency = 4.0;
-  app.add_option("--seconds", seconds, "timing per bandwidth figure (s)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.01, 60.0));
-  app.add_option("--fma-latency", fma_latency,
-                 "cycles of one FMA's latency, which turns the dependent chain into a clock")
-      ->capture_default_str()
-      ->check(CLI::Range(1.0, 16.0));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+void print_machine_ceilings(double seconds, double fma_latency) {
   const int rounds = 15;
   const double chain = per_iteration(fma_chain<1>, rounds);
   const double hz = fma_latency / chain;
@@ -235,5 +219,4 @@ int main(int argc, char** argv) {
     const Bandwidth b = bandwidth(bytes, seconds);
     fmt::print("{} {:.1f} {:.1f}\n", bytes, b.read * 1e-9, b.triad * 1e-9);
   }
-  return 0;
 }
