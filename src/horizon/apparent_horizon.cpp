@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -28,26 +30,39 @@ std::optional<MarginalSurface> HorizonSearch::horizon() const {
 namespace {
 
 /// Scans the intervals [k-1, k] for k_lo < k <= k_hi (interior indices), from the outside in.
+/// Theta_+ and the areal radius are evaluated at a point when the scan first reaches it (the
+/// scan from the outside in, or a root's interpolation stencil), not on the whole window
+/// beforehand: a search that stops at the first outer horizon (find_horizon_near, on every RK
+/// substage with the horizon shift) evaluates about half of its window.
 HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& params,
                    std::size_t k_lo, std::size_t k_hi, bool stop_at_first_outer) {
   const std::size_t n = grid.n_interior();
-  std::vector<double> x(n), theta(n), R(n);
-  // values on the scanned points and the interpolation stencils around them
+  // the scanned points and the interpolation stencils around them: [fill_lo, fill_hi)
   const std::size_t fill_lo = k_lo >= stencil ? k_lo - stencil : 0;
   const std::size_t fill_hi = std::min(n, k_hi + stencil + 1);
-  for (std::size_t k = fill_lo; k < fill_hi; ++k) {
-    const std::size_t i = grid.first_interior() + k;
-    const PointData p = adm_point_data(u, grid, i);
-    x[k] = grid.x()[i];
-    theta[k] = expansion_plus(p);
-    R[k] = areal_radius(p);
-  }
+  std::vector<double> theta_rows(fill_hi - fill_lo), R_rows(fill_hi - fill_lo);
+  std::vector<char> known(fill_hi - fill_lo, 0);
+  const auto evaluate = [&](std::size_t k) {
+    if (!known[k - fill_lo]) {
+      const PointData p = adm_point_data(u, grid, grid.first_interior() + k);
+      theta_rows[k - fill_lo] = expansion_plus(p);
+      R_rows[k - fill_lo] = areal_radius(p);
+      known[k - fill_lo] = 1;
+    }
+  };
+  const auto theta = [&](std::size_t k) {
+    evaluate(k);
+    return theta_rows[k - fill_lo];
+  };
+  // x from fill_lo on, the rows of Theta_+ and R, for the Lagrange interpolant
+  const std::span<const double> x =
+      std::span<const double>(grid.x()).subspan(grid.first_interior() + fill_lo);
   HorizonSearch result;
   for (std::size_t k = k_hi; k > k_lo; --k) {
     const std::size_t lo = k - 1;
     if (grid.r()[grid.first_interior() + k] < params.r_min)
       break;
-    const double f_lo = theta[lo], f_hi = theta[k];
+    const double f_lo = theta(lo), f_hi = theta(k);
     if (!std::isfinite(f_lo) || !std::isfinite(f_hi))
       throw HorizonFinderError(
           fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
@@ -57,22 +72,24 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
       continue;
     const std::size_t k0 = std::max(lagrange6_start(lo, n), fill_lo);
     for (std::size_t j = k0; j < k0 + stencil; ++j)
-      if (!std::isfinite(theta[j]))
+      if (!std::isfinite(theta(j)))
         throw HorizonFinderError(
             fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
-                        theta[j], grid.r()[grid.first_interior() + j]));
-    auto theta_of_x = [&](double xi) { return lagrange6(x, theta, k0, xi); };
+                        theta(j), grid.r()[grid.first_interior() + j]));
+    const std::size_t j0 = k0 - fill_lo; // the stencil in the rows from fill_lo
+    auto theta_of_x = [&](double xi) { return lagrange6(x, theta_rows, j0, xi); };
+    const double x_lo = x[lo - fill_lo], x_hi = x[k - fill_lo];
     double x_root;
     if (f_lo == 0.0) {
-      x_root = x[lo];
+      x_root = x_lo;
     } else {
       // tolerance in x equivalent to params.tolerance in r
-      const double tol_x = params.tolerance / grid.map().dr_dx(x[lo]);
+      const double tol_x = params.tolerance / grid.map().dr_dx(x_lo);
       auto done = [tol_x](double a, double b) { return std::abs(b - a) <= tol_x; };
       std::uintmax_t iterations = 100;
       try {
         const auto [a, b] = boost::math::tools::toms748_solve(
-            theta_of_x, x[lo], x[k], theta_of_x(x[lo]), theta_of_x(x[k]), done, iterations);
+            theta_of_x, x_lo, x_hi, theta_of_x(x_lo), theta_of_x(x_hi), done, iterations);
         x_root = 0.5 * (a + b);
       } catch (const std::exception& e) {
         throw HorizonFinderError(fmt::format(
@@ -86,7 +103,7 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
     }
     MarginalSurface s;
     s.r = grid.map().r(x_root);
-    s.R_areal = lagrange6(x, R, k0, x_root);
+    s.R_areal = lagrange6(x, R_rows, j0, x_root);
     s.mass = 0.5 * s.R_areal;
     s.outer = f_lo < 0.0 && f_hi >= 0.0;
     result.surfaces.push_back(s);
