@@ -160,28 +160,9 @@ void MeshStepper::initialise(std::vector<State>& u, double t) {
     }
 }
 
-namespace {
-
-/// Z4c's Theta row of fill_from_parent's combination, out of line (see there).
-[[gnu::noinline]] void combine_theta(State& s, const std::vector<const State*>& arrays,
-                                     const std::vector<double>& w, std::size_t nt, long lo,
-                                     long hi) {
-  s.resize(arrays.front()->size());
-  const std::size_t v = index(Var::Theta), g = Grid::n_ghost;
-  for (long i = lo; i < hi; ++i) {
-    const std::size_t idx = v * nt + g + static_cast<std::size_t>(i);
-    double sum = 0.0;
-    for (std::size_t m = 0; m < arrays.size(); ++m)
-      sum += w[m] * (*arrays[m])[idx];
-    s[idx] = sum;
-  }
-}
-
-} // namespace
-
 void MeshStepper::fill_from_parent(std::size_t l, State& fine,
-                                   const std::vector<const State*>& arrays,
-                                   const std::vector<double>& w, long j_begin) const {
+                                   std::initializer_list<const State*> arrays,
+                                   std::initializer_list<double> weights, long j_begin) const {
   const Grid& gc = layout_->grid(l - 1);
   const Grid& gf = layout_->grid(l);
   const long j_end = static_cast<long>(gf.n_interior() + Grid::n_ghost);
@@ -193,22 +174,29 @@ void MeshStepper::fill_from_parent(std::size_t l, State& fine,
     lo = 0;
   }
   const std::size_t nt = gc.n_total(), g = Grid::n_ghost;
+  const std::size_t size = (*arrays.begin())->size();
   State& s = levels_[l - 1].scratch;
-  // s = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable: BSSN's in this loop, of
-  // constant count, as compiled before Z4c, Z4c's Theta out of line. GCC contracts these sums
-  // into FMAs in some lanes and not in others, and how depends on the code around the loop (a
-  // run-time count, or a check before it, changed the last bits of BSSN's box runs); so the
-  // loop is left as it was, and BSSN's runs stay bit for bit those from before.
-  for (std::size_t v = 0; v < n_evolved(Formulation::bssn); ++v)
-    for (long i = lo; i < hi; ++i) {
-      const std::size_t idx = v * nt + g + static_cast<std::size_t>(i);
-      double sum = 0.0;
-      for (std::size_t m = 0; m < arrays.size(); ++m)
-        sum += w[m] * (*arrays[m])[idx];
-      s[idx] = sum;
+  s.resize(size);
+  // s = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable, summed in the order
+  // m = 0, 1, ... (as Odeint's stage sums): one array at a time over each row's cells, so
+  // that the loop over the cells vectorises, and no allocation per call (one call per stage
+  // of every box). The parent's arrays need not be of one formulation's count: the rows are
+  // those of the state (size / nt).
+  const std::size_t rows = size / nt;
+  const State* const* const a = std::data(arrays);
+  const double* const w = std::data(weights);
+  for (std::size_t v = 0; v < rows; ++v) {
+    const std::size_t row = v * nt + g;
+    double* const out = s.data() + row;
+    const double* f = a[0]->data() + row;
+    for (long i = lo; i < hi; ++i)
+      out[i] = 0.0 + w[0] * f[i];
+    for (std::size_t m = 1; m < arrays.size(); ++m) {
+      f = a[m]->data() + row;
+      for (long i = lo; i < hi; ++i)
+        out[i] += w[m] * f[i];
     }
-  if (arrays.front()->size() != s.size())
-    combine_theta(s, arrays, w, nt, lo, hi);
+  }
   prolong(s, gc, fine, gf, j_begin, j_end);
 }
 

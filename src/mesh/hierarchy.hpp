@@ -61,6 +61,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -167,9 +168,9 @@ private:
            const std::function<void(int, State&)>& fill, const State* given_k1 = nullptr,
            State* start = nullptr);
   /// Fine level l's points [j_begin, N + n_ghost) from the parent's arrays `arrays` combined with
-  /// weights w.
-  void fill_from_parent(std::size_t l, State& fine, const std::vector<const State*>& arrays,
-                        const std::vector<double>& w, long j_begin) const;
+  /// `weights` (one per array; as many as arrays).
+  void fill_from_parent(std::size_t l, State& fine, std::initializer_list<const State*> arrays,
+                        std::initializer_list<double> weights, long j_begin) const;
   void fill_quadratic(std::vector<State>& u, std::size_t l, double t) const;
   void restrict_level(std::vector<State>& u, std::size_t fine_level) const;
 
