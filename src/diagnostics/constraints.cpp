@@ -1,6 +1,5 @@
 #include "diagnostics/constraints.hpp"
 
-#include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
 
 #include <algorithm>
@@ -20,15 +19,9 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
     const auto theta = field(u, grid, Var::Theta).subspan(grid.first_interior(), n);
     out.Theta.assign(theta.begin(), theta.end());
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    const PointData p = adm_point_data(u, grid, grid.first_interior() + k);
-    const Constraints c = constraints(p);
-    out.H[k] = c.H;
-    out.M_r[k] = c.M_r;
-    out.G_r[k] = c.G_r;
-    out.R_areal[k] = areal_radius(p);
-    out.Theta_plus[k] = expansion_plus(p);
-  }
+  diagnostic_rows(
+      u, grid,
+      {out.H.data(), out.M_r.data(), out.G_r.data(), out.R_areal.data(), out.Theta_plus.data()});
   return out;
 }
 
