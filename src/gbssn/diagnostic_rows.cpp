@@ -9,19 +9,22 @@
 #include "gbssn/rhs_loop.hpp"
 #include "gbssn/z4c.hpp"
 
+#include <stdexcept>
+
 namespace gbssn1d {
 
 namespace {
 
 template <int p, Formulation formulation>
-void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& out) {
+void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& out,
+                        std::size_t k_begin, std::size_t k_end) {
   constexpr std::size_t n_fields = n_evolved(formulation);
   const point_loop::Rows rows(u, grid);
   const double inv_dx = 1.0 / grid.dx();
   const double *const r = grid.r().data(), *const inv_r = grid.inv_r().data(),
                       *const inv_rx = grid.inv_dr_dx().data(),
                       *const d2_fx = grid.d2_fx_coeff().data();
-  const std::size_t first = grid.first_interior(), n = grid.n_interior();
+  const std::size_t first = grid.first_interior() + k_begin, n = k_end - k_begin;
   // the rows written are the caller's, apart from the state and the grid
 #pragma GCC ivdep
   for (std::size_t k = 0; k < n; ++k) {
@@ -45,26 +48,34 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
 }
 
 template <int p>
-void diagnostic_rows_of(const State& u, const Grid& grid, const DiagnosticRows& out) {
+void diagnostic_rows_of(const State& u, const Grid& grid, const DiagnosticRows& out,
+                        std::size_t k_begin, std::size_t k_end) {
   if (formulation_of(u, grid) == Formulation::z4c)
-    diagnostic_rows_at<p, Formulation::z4c>(u, grid, out);
+    diagnostic_rows_at<p, Formulation::z4c>(u, grid, out, k_begin, k_end);
   else
-    diagnostic_rows_at<p, Formulation::bssn>(u, grid, out);
+    diagnostic_rows_at<p, Formulation::bssn>(u, grid, out, k_begin, k_end);
 }
 
 } // namespace
 
-void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out) {
+void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out,
+                     std::size_t k_begin, std::size_t k_end) {
+  if (k_begin > k_end || k_end > grid.n_interior())
+    throw std::out_of_range("diagnostic_rows: points outside the interior");
   switch (grid.fd_order()) {
   case 2:
-    return diagnostic_rows_of<2>(u, grid, out);
+    return diagnostic_rows_of<2>(u, grid, out, k_begin, k_end);
   case 6:
-    return diagnostic_rows_of<6>(u, grid, out);
+    return diagnostic_rows_of<6>(u, grid, out, k_begin, k_end);
   case 8:
-    return diagnostic_rows_of<8>(u, grid, out);
+    return diagnostic_rows_of<8>(u, grid, out, k_begin, k_end);
   default:
-    return diagnostic_rows_of<4>(u, grid, out);
+    return diagnostic_rows_of<4>(u, grid, out, k_begin, k_end);
   }
+}
+
+void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out) {
+  diagnostic_rows(u, grid, out, 0, grid.n_interior());
 }
 
 } // namespace gbssn1d

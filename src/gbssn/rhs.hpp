@@ -37,15 +37,19 @@ PointData point_data(const State& u, const Grid& grid, std::size_t i,
 /// read.
 PointData adm_point_data(const State& u, const Grid& grid, std::size_t i);
 
-/// Rows of n_interior() values, one per interior point k (grid point first_interior() + k).
+/// Rows of values of interior points: out[k - k_begin] for point k (grid point
+/// first_interior() + k).
 struct DiagnosticRows {
   double *H, *M_r, *G_r; ///< the constraints (Sec. 5)
   double* R_areal;       ///< (T2) the areal radius
   double* Theta_plus;    ///< (T1) the outgoing expansion
 };
-/// The constraints, areal radius and expansion at every interior point, from adm_point_data's
-/// values at the grid's order: one vectorised loop (diagnostic_rows.cpp) instead of a call per
-/// point, the same expressions and the same values.
+/// The constraints, areal radius and expansion at the interior points [k_begin, k_end), from
+/// adm_point_data's values at the grid's order: one vectorised loop (diagnostic_rows.cpp)
+/// instead of a call per point, the same expressions.
+void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out,
+                     std::size_t k_begin, std::size_t k_end);
+/// The same at every interior point.
 void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out);
 
 class GbssnRhs {

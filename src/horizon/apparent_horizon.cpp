@@ -1,6 +1,5 @@
 #include "horizon/apparent_horizon.hpp"
 
-#include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
 #include "grid/interpolation.hpp"
 
@@ -30,30 +29,22 @@ std::optional<MarginalSurface> HorizonSearch::horizon() const {
 namespace {
 
 /// Scans the intervals [k-1, k] for k_lo < k <= k_hi (interior indices), from the outside in.
-/// Theta_+ and the areal radius are evaluated at a point when the scan first reaches it (the
-/// scan from the outside in, or a root's interpolation stencil), not on the whole window
-/// beforehand: a search that stops at the first outer horizon (find_horizon_near, on every RK
-/// substage with the horizon shift) evaluates about half of its window.
+/// Theta_+ and the areal radius on the window and its interpolation stencils come from one
+/// vectorised loop (diagnostic_rows), not a call per point: the search at every output time
+/// scans the whole grid, the one near its seed on every RK substage 29 points.
 HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& params,
                    std::size_t k_lo, std::size_t k_hi, bool stop_at_first_outer) {
   const std::size_t n = grid.n_interior();
   // the scanned points and the interpolation stencils around them: [fill_lo, fill_hi)
   const std::size_t fill_lo = k_lo >= stencil ? k_lo - stencil : 0;
   const std::size_t fill_hi = std::min(n, k_hi + stencil + 1);
-  std::vector<double> theta_rows(fill_hi - fill_lo), R_rows(fill_hi - fill_lo);
-  std::vector<char> known(fill_hi - fill_lo, 0);
-  const auto evaluate = [&](std::size_t k) {
-    if (!known[k - fill_lo]) {
-      const PointData p = adm_point_data(u, grid, grid.first_interior() + k);
-      theta_rows[k - fill_lo] = expansion_plus(p);
-      R_rows[k - fill_lo] = areal_radius(p);
-      known[k - fill_lo] = 1;
-    }
-  };
-  const auto theta = [&](std::size_t k) {
-    evaluate(k);
-    return theta_rows[k - fill_lo];
-  };
+  const std::size_t m = fill_hi - fill_lo;
+  std::vector<double> theta_rows(m), R_rows(m), constraint_rows(3 * m); // H, M_r, G_r unused
+  diagnostic_rows(u, grid,
+                  {constraint_rows.data(), constraint_rows.data() + m,
+                   constraint_rows.data() + 2 * m, R_rows.data(), theta_rows.data()},
+                  fill_lo, fill_hi);
+  const auto theta = [&](std::size_t k) { return theta_rows[k - fill_lo]; };
   // x from fill_lo on, the rows of Theta_+ and R, for the Lagrange interpolant
   const std::span<const double> x =
       std::span<const double>(grid.x()).subspan(grid.first_interior() + fill_lo);
