@@ -4,6 +4,7 @@
 #include "mesh/transfer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -160,6 +161,32 @@ void MeshStepper::initialise(std::vector<State>& u, double t) {
     }
 }
 
+namespace {
+
+/// s = sum_m w[m] a[m] (m = 0 ... M - 1, in that order) on the cells [lo, hi) of each of `rows`
+/// rows of nt points (interior cell i at g + i): the loop over the cells vectorises, each sum
+/// in a register (summing one array at a time through memory waited on store forwarding).
+template <std::size_t M>
+void combine_rows(const State* const* a, const double* w, State& s, std::size_t rows,
+                  std::size_t nt, std::size_t g, long lo, long hi) {
+  for (std::size_t v = 0; v < rows; ++v) {
+    const std::size_t row = v * nt + g;
+    std::array<const double*, M> f{};
+    for (std::size_t m = 0; m < M; ++m)
+      f[m] = a[m]->data() + row;
+    double* const out = s.data() + row;
+    for (long i = lo; i < hi; ++i) {
+      double sum = 0.0;
+#pragma GCC unroll 8
+      for (std::size_t m = 0; m < M; ++m)
+        sum += w[m] * f[m][i];
+      out[i] = sum;
+    }
+  }
+}
+
+} // namespace
+
 void MeshStepper::fill_from_parent(std::size_t l, State& fine,
                                    std::initializer_list<const State*> arrays,
                                    std::initializer_list<double> weights, long j_begin) const {
@@ -178,24 +205,27 @@ void MeshStepper::fill_from_parent(std::size_t l, State& fine,
   State& s = levels_[l - 1].scratch;
   s.resize(size);
   // s = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable, summed in the order
-  // m = 0, 1, ... (as Odeint's stage sums): one array at a time over each row's cells, so
-  // that the loop over the cells vectorises, and no allocation per call (one call per stage
-  // of every box). The parent's arrays need not be of one formulation's count: the rows are
-  // those of the state (size / nt).
+  // m = 0, 1, ... (as Odeint's stage sums), with no allocation per call (one call per stage of
+  // every box). The parent's arrays need not be of one formulation's count: the rows are those
+  // of the state (size / nt).
   const std::size_t rows = size / nt;
   const State* const* const a = std::data(arrays);
   const double* const w = std::data(weights);
-  for (std::size_t v = 0; v < rows; ++v) {
-    const std::size_t row = v * nt + g;
-    double* const out = s.data() + row;
-    const double* f = a[0]->data() + row;
-    for (long i = lo; i < hi; ++i)
-      out[i] = 0.0 + w[0] * f[i];
-    for (std::size_t m = 1; m < arrays.size(); ++m) {
-      f = a[m]->data() + row;
-      for (long i = lo; i < hi; ++i)
-        out[i] += w[m] * f[i];
-    }
+  switch (arrays.size()) { // the counts the callers pass: each sum's terms in registers
+  case 1:
+    combine_rows<1>(a, w, s, rows, nt, g, lo, hi);
+    break;
+  case 2:
+    combine_rows<2>(a, w, s, rows, nt, g, lo, hi);
+    break;
+  case 3:
+    combine_rows<3>(a, w, s, rows, nt, g, lo, hi);
+    break;
+  case 5:
+    combine_rows<5>(a, w, s, rows, nt, g, lo, hi);
+    break;
+  default:
+    throw std::logic_error("fill_from_parent combines 1, 2, 3 or 5 arrays");
   }
   prolong(s, gc, fine, gf, j_begin, j_end);
 }
@@ -219,11 +249,15 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
     const Level& P = levels_[l - 1];
     const double theta = (t - P.t0) / P.dt, ratio = dt / P.dt;
     const long j_begin = static_cast<long>(layout_->n_cells());
-    const bool stages = options_.time == TimeInterpolation::rk_stages;
-    fill = [this, &P, l, theta, ratio, j_begin, stages](int s, State& x) {
-      const StageWeights w = stages
-                                 ? rk_stage_weights(theta, ratio, s, P.dt)
-                                 : dense_output_weights(theta + rk4_stage_times[s] * ratio, P.dt);
+    // each stage's weights, once per step
+    std::array<StageWeights, 4> weights{};
+    if (options_.time == TimeInterpolation::rk_stages)
+      weights = rk_stage_weights_all(theta, ratio, P.dt);
+    else
+      for (std::size_t s = 0; s < 4; ++s)
+        weights[s] = dense_output_weights(theta + rk4_stage_times[s] * ratio, P.dt);
+    fill = [this, &P, l, weights, j_begin](int s, State& x) {
+      const StageWeights& w = weights[static_cast<std::size_t>(s)];
       fill_from_parent(l, x, {&P.u0, &P.k[0], &P.k[1], &P.k[2], &P.k[3]},
                        {w[0], w[1], w[2], w[3], w[4]}, j_begin);
     };

@@ -55,10 +55,11 @@ constexpr StageWeights dense_output_weights(double theta, double dt) {
 ///   Y1 = U,  Y2 = U + h/2 U',  Y3 = U + h/2 U' + h^2/4 U'' + h^3/16 (U''' - f_u U''),
 ///   Y4 = U + h U' + h^2/2 U'' + h^3/8 (U''' + f_u U''),
 /// with h = ratio dt and U, U', ... the cubic's values at theta.
-constexpr StageWeights rk_stage_weights(double theta, double ratio, int stage, double dt) {
-  using namespace detail;
-  const StageWeights U = taylor(theta, 0), A1 = taylor(theta, 1), A2 = taylor(theta, 2),
-                     A3 = taylor(theta, 3);
+namespace detail {
+/// Stage s's weights from the cubic's Taylor terms U, A1, A2, A3 at theta (rk_stage_weights).
+constexpr StageWeights stage_weights(const std::array<StageWeights, 4>& taylor_terms, double ratio,
+                                     int stage, double dt) {
+  const auto& [U, A1, A2, A3] = taylor_terms;
   const double r = ratio, r2 = r * r, r3 = r2 * r;
   StageWeights w = U;
   switch (stage) {
@@ -75,6 +76,21 @@ constexpr StageWeights rk_stage_weights(double theta, double ratio, int stage, d
     break;
   }
   return times_dt(w, dt);
+}
+constexpr std::array<StageWeights, 4> taylor_terms(double theta) {
+  return {taylor(theta, 0), taylor(theta, 1), taylor(theta, 2), taylor(theta, 3)};
+}
+} // namespace detail
+
+constexpr StageWeights rk_stage_weights(double theta, double ratio, int stage, double dt) {
+  return detail::stage_weights(detail::taylor_terms(theta), ratio, stage, dt);
+}
+
+/// rk_stage_weights of the four stages of one fine step at once (the Taylor terms once).
+constexpr std::array<StageWeights, 4> rk_stage_weights_all(double theta, double ratio, double dt) {
+  const auto terms = detail::taylor_terms(theta);
+  return {detail::stage_weights(terms, ratio, 0, dt), detail::stage_weights(terms, ratio, 1, dt),
+          detail::stage_weights(terms, ratio, 2, dt), detail::stage_weights(terms, ratio, 3, dt)};
 }
 
 /// The times of a classical RK4 stage s = 0 ... 3, in units of the step.

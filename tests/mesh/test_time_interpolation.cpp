@@ -88,6 +88,18 @@ TEST_CASE("dense output and RK4 stage values are exact when the solution is a cu
     }
 }
 
+TEST_CASE("the four stages' weights at once are each stage's, bit for bit") {
+  for (double theta : {0.0, 0.25, 0.5})
+    for (double ratio : {0.5, 1.0}) {
+      const auto all = rk_stage_weights_all(theta, ratio, 0.3);
+      for (int s = 0; s < 4; ++s) {
+        const auto one = rk_stage_weights(theta, ratio, s, 0.3);
+        for (std::size_t m = 0; m < 5; ++m)
+          CHECK(all[static_cast<std::size_t>(s)][m] == one[m]);
+      }
+    }
+}
+
 TEST_CASE("RK4 stage values of a nonlinear equation: local error O(dt^4)") {
   // u' = u^2 + t, from an exact solution: the stage inputs of the fine steps from the coarse
   // stages differ from the true fine RK4 stages (started from the dense output) by O(dt^4) --
