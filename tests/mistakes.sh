@@ -139,7 +139,8 @@ mistakes=(
   "resume: a quadratic time level at or after the checkpoint's time accepted|src/evolution/checkpoint.cpp| !(h.t < c.t))| false)|resume refuses a checkpoint whose quadratic time level is not before its time"
   "--dr-inner called idle on the sinh grid (two runs of other spacings called the same run)|src/config/flag_table.cpp|       Acts::on_sinh},|       Acts::on_boxes},|the same run: a flag the table calls idle changes no number the run writes, and where it acts it changes them and the run key"
   "--lapse0 said to act on every data set (no idle-flag warning, trumpets with other lapse0 told apart)|src/config/flag_table.cpp| precollapsed\", Acts::with_wormhole},| precollapsed\"},|the same run: a flag the table calls idle changes no number the run writes, and where it acts it changes them and the run key"
-  "Z4c's diagnostics read K-hat instead of the ADM K|src/gbssn/rhs.cpp|  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;|  return p;|Z4c: the constraints and the expansion read K-hat + 2 Theta, the ADM trace"
+  "Z4c's diagnostics read K-hat instead of the ADM K|src/gbssn/diagnostic_rows.cpp|      pd = adm_trace(pd);|      static_cast<void>(pd);|Z4c: the constraints and the expansion read K-hat + 2 Theta, the ADM trace"
+  "adm_point_data reads K-hat instead of the ADM K|src/gbssn/rhs.cpp|  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;|  return p;|diagnostic rows agree with the constraints and expansion computed point by point"
   "Z4c's Theta undamped|src/gbssn/z4c.hpp|        - p.f[alpha] * params.kappa1 * (2.0 + params.kappa2) * theta;|        - 0.0 * theta;|Z4c: kappa1 damps the constraints"
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
 )
