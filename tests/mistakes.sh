@@ -142,6 +142,7 @@ mistakes=(
   "Z4c's diagnostics read K-hat instead of the ADM K|src/gbssn/diagnostic_rows.cpp|      pd = adm_trace(pd);|      static_cast<void>(pd);|Z4c: the constraints and the expansion read K-hat + 2 Theta, the ADM trace"
   "adm_point_data reads K-hat instead of the ADM K|src/gbssn/rhs.cpp|  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;|  return p;|diagnostic rows agree with the constraints and expansion computed point by point"
   "Z4c's Theta undamped|src/gbssn/z4c.hpp|        - p.f[alpha] * params.kappa1 * (2.0 + params.kappa2) * theta;|        - 0.0 * theta;|Z4c: kappa1 damps the constraints"
+  "the check after each step passes every level (its vectorised count ignored)|src/evolution/observe.cpp|  return outside == 0;|  return outside >= 0;|check_physical_range: each bad value named with its box, radius and time"
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
 )
 
