@@ -143,6 +143,9 @@ mistakes=(
   "adm_point_data reads K-hat instead of the ADM K|src/gbssn/rhs.cpp|  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;|  return p;|diagnostic rows agree with the constraints and expansion computed point by point"
   "Z4c's Theta undamped|src/gbssn/z4c.hpp|        - p.f[alpha] * params.kappa1 * (2.0 + params.kappa2) * theta;|        - 0.0 * theta;|Z4c: kappa1 damps the constraints"
   "the check after each step passes every level (its vectorised count ignored)|src/evolution/observe.cpp|  return outside == 0;|  return outside >= 0;|check_physical_range: each bad value named with its box, radius and time"
+  "boxes' fused stage fill: the pair's plus and minus prolongation weights exchanged|src/mesh/hierarchy.cpp|        minus += prolong_weights_minus[m] * cm[m];\n        plus += prolong_weights_plus[m] * cm[m + 1];|        minus += prolong_weights_plus[m] * cm[m];\n        plus += prolong_weights_minus[m] * cm[m + 1];|prolong_combination is the combination prolonged, bit for bit, near r = 0 and away"
+  "boxes: a parent's skipped cells reach R (not 3R, the four stages compounded) below the lowest cell read|src/mesh/hierarchy.cpp|  return static_cast<std::size_t>(std::max(0L, lowest - 3 * R));|  return static_cast<std::size_t>(std::max(0L, lowest - R));|a parent box skipping the cells under its child changes no bit of any level"
+  "the point loop's first cell not rounded down to whole vectors (points change code path, and last bits)|src/gbssn/rhs.cpp|  first_cell_ = cell / vector_points * vector_points;|  first_cell_ = cell;|a parent box skipping the cells under its child changes no bit of any level"
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
 )
 

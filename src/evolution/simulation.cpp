@@ -142,12 +142,26 @@ std::string Simulation::run_facts() const {
   return facts;
 }
 
+void Simulation::set_skip_covered(bool skip) {
+  skip_covered_ = skip;
+  set_first_cells();
+}
+
+void Simulation::set_first_cells() {
+  const bool shift = config_.rhs.horizon_shift.active();
+  for (std::size_t l = 0; l < layout_.levels(); ++l)
+    rhs_[l].set_first_cell(
+        skip_covered_ && !(shift && l == tracker_.level()) ? stepper_.first_needed_cell(l) : 0);
+}
+
 void Simulation::step(double dt) {
+  set_first_cells();
   stepper_.step(levels_u_, t_, dt); // RK4, then the chi floor (stepper_.after_step)
   t_ += dt;
 }
 
 void Simulation::step(double dt, const State& dudt) {
+  set_first_cells();
   stepper_.step(levels_u_, t_, dt, dudt);
   t_ += dt;
 }
@@ -229,6 +243,7 @@ void Simulation::run(Output* out) {
   ProgressLine progress(show_progress && ::isatty(STDERR_FILENO), t_, t_end);
   tracker_.mark_before_rhs();
   dudt_now_.resize(levels_u_[0].size());
+  set_first_cells();
   rhs_[0](levels_u_[0], dudt_now_, t_); // RK4's first stage of the first step
   for (long n = step_ + 1; n <= s.n_steps; ++n) {
     const bool last = n == s.n_steps;
@@ -246,8 +261,10 @@ void Simulation::run(Output* out) {
     const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
     tracker_.mark_before_rhs();
     evaluations_before_rhs_ = rhs_[0].evaluations();
-    if (!last)
+    if (!last) {
+      set_first_cells();
       rhs_[0](levels_u_[0], dudt_now_, t_); // the next step's first stage
+    }
     write_due(out, dense);
     if (!last && t_ >= next_checkpoint - 1e-9 * s.dt) {
       save_checkpoint(out, h_AH_before_rhs);

@@ -46,6 +46,7 @@ public:
   /// Level 0's grid, state and right-hand side (the single grid's).
   const Grid& grid() const { return layout_.grid(0); }
   const GbssnRhs& rhs() const { return rhs_[0]; }
+  const GbssnRhs& rhs(std::size_t level) const { return rhs_.at(level); } ///< level's
   State& state() { return levels_u_[0]; }
   const State& state() const { return levels_u_[0]; }
   /// Every level (one for a single grid) and their composite.
@@ -105,6 +106,11 @@ public:
   /// number of steps to tmax and the smallest cell width dr-min.
   std::string run_facts() const;
 
+  /// Whether each parent box's point loop skips the cells under its child that no result reads
+  /// (mesh::MeshStepper::first_needed_cell; every output bit for bit the same either way). On
+  /// by default; off evolves every cell of every box, as a check.
+  void set_skip_covered(bool skip);
+
   /// One step of size dt of every level (RK4, then the chi floor, apply_chi_floor).
   void step(double dt);
   /// The same with level 0's d_t u at the current state already evaluated (RK4's first stage).
@@ -130,6 +136,11 @@ public:
   static constexpr double alpha_max = 10.0; ///< alpha <= 1 in these spacetimes
 
 private:
+  /// Each level's first evolved cell (GbssnRhs::set_first_cell): first_needed_cell, 0 with
+  /// skip_covered_ off, and 0 on the level the horizon shift's search reads every RK substage
+  /// (HorizonTracker::level; a margin: that level is the finest holding the horizon, which so
+  /// lies outside its child, but the search may fall back to a scan of the whole level).
+  void set_first_cells();
   /// Whether run() initialises the stepper again once h_AH is known (quadratic time
   /// interpolation with the horizon shift: its earlier time levels need beta_H).
   bool reinitialises() const;
@@ -160,6 +171,7 @@ private:
   OutputClock clock_;         ///< output times and their counters
   DenseOutput dense_;         ///< every level's state at output times between steps
   long step_ = 0;             ///< steps taken
+  bool skip_covered_ = true;  ///< set_skip_covered
   bool resumed_ = false;      ///< restore() was called: run() continues, no initial output
   std::uint64_t evaluations_before_rhs_ = 0;       ///< RHS count before the current step's k1
   std::vector<std::uint64_t> initial_evaluations_; ///< per level, before the first step

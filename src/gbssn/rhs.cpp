@@ -5,6 +5,7 @@
 #include "gbssn/z4c.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 namespace gbssn1d {
@@ -65,6 +66,12 @@ GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(p
           (*rows[v])[grid.first_interior() + k];
   if (params_.horizon_shift.active())
     profile_ = profile_on(grid, params_.horizon_shift);
+}
+
+void GbssnRhs::set_first_cell(std::size_t cell) {
+  if (cell > grid_->n_interior())
+    throw std::invalid_argument("the point loop's first cell lies beyond the grid");
+  first_cell_ = cell / vector_points * vector_points;
 }
 
 void GbssnRhs::split_shift(const State& u, double t) {

@@ -84,6 +84,16 @@ public:
   /// skipped and d_t = 0 is written on those ghosts.
   void set_outer_ghosts_from_parent(bool from_parent) { outer_from_parent_ = from_parent; }
 
+  /// The point loop starts at interior cell `cell` rounded down to a multiple of 8 (0: every
+  /// cell) and writes d_t u = 0 below it. For a parent box whose cells below it lie under its
+  /// child: restriction overwrites them after every step, and no result reads them before
+  /// (mesh::MeshStepper::first_needed_cell). The rounding keeps every point in the part of the
+  /// loop that computes it without a first cell (the vectors of 8 points from the first
+  /// interior cell, then a remainder): the two parts contract their sums into FMAs differently,
+  /// so the same point from the other part may differ in its last bit (measured).
+  void set_first_cell(std::size_t cell);
+  std::size_t first_cell() const { return first_cell_; }
+
 private:
   /// The point loop; the formulation (a policy type such as Bssn), the differencing order, the
   /// upwind pair, the horizon shift and its variant are template parameters, so that each
@@ -112,10 +122,13 @@ private:
   std::optional<double> h_AH_;
   HorizonSource source_;
   bool outer_from_parent_ = false;
-  std::vector<double> profile_;                  ///< f(r_i / w) on every point (fixed by the grid)
-  static constexpr std::size_t block_size = 256; ///< points per block of the point loop
-  std::vector<double> grid_blocks_;              ///< grid factors laid out per block (rhs_loop.hpp)
-  std::vector<double> beta_H_, beta_full_;       ///< scratch of the horizon shift
+  std::size_t first_cell_ = 0;  ///< the point loop's first interior cell (set_first_cell)
+  std::vector<double> profile_; ///< f(r_i / w) on every point (fixed by the grid)
+  static constexpr std::size_t block_size = 256;  ///< points per block of the point loop
+  static constexpr std::size_t vector_points = 8; ///< of a vector (AVX-512)
+  static_assert(block_size % vector_points == 0);
+  std::vector<double> grid_blocks_;        ///< grid factors laid out per block (rhs_loop.hpp)
+  std::vector<double> beta_H_, beta_full_; ///< scratch of the horizon shift
 };
 
 } // namespace gbssn1d

@@ -236,11 +236,17 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   constexpr std::size_t n_fields = Equations::n, rows_in = n_fields + 1, rows_grid = 4;
   thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
-  for (std::size_t i0 = g.first_interior(); i0 < g.end_interior(); i0 += B) {
-    const std::size_t n = std::min(B, g.end_interior() - i0);
+  // Cells below the first cell (under a child box, set_first_cell): d_t u = 0. The first block
+  // starts at the first cell, inside its block of grid factors, so that the loop itself starts
+  // at 0 (a loop from a run-time start held 3.6 times the spilled registers: 8% slower on a
+  // single grid, which never skips).
+  for (std::size_t v = 0; v < n_fields; ++v)
+    std::fill_n(dudt.data() + v * nt + g.first_interior(), first_cell_, 0.0);
+  for (std::size_t i0 = g.first_interior() + first_cell_, n = 0; i0 < g.end_interior(); i0 += n) {
+    const std::size_t k = i0 - g.first_interior(), offset = k % B; // 0 but in the first block
+    n = std::min(B - offset, g.end_interior() - i0);
     const Block blk = stage_block<R, B, n_fields>(
-        in_full, beta_GD_full, buf, i0, n,
-        grid_blocks_.data() + (i0 - g.first_interior()) / B * rows_grid * B);
+        in_full, beta_GD_full, buf, i0, n, grid_blocks_.data() + k / B * rows_grid * B + offset);
     const Rows in = blk.in;
     const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,
                         *const inv_rx = blk.inv_rx, *const d2_fx = blk.d2_fx;

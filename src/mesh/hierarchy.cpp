@@ -1,6 +1,7 @@
 #include "mesh/hierarchy.hpp"
 #include "mesh/time_interpolation.hpp"
 
+#include "fd/stencils.hpp"
 #include "mesh/transfer.hpp"
 
 #include <algorithm>
@@ -97,6 +98,21 @@ long MeshStepper::restricted_cells() const {
   return (n - b - 4) / 2 + 1;
 }
 
+std::size_t MeshStepper::first_needed_cell(std::size_t l) const {
+  if (l + 1 >= layout_->levels())
+    return 0;
+  const long n = static_cast<long>(layout_->n_cells()), b = static_cast<long>(buffer());
+  const long R = static_cast<long>(fd::stencil_radius(layout_->fd_order()));
+  // The lowest cell read: the child's fills (every stage, or once per step over its buffer)
+  // prolong from coarse cell (N - buffer) / 2 - 3 on; the diagnostics of the parent's own cells
+  // from N / 2 on (on dense output between steps, before restriction) reach 3 cells further
+  // down with the horizon finder's and the radius interpolation's 6-point stencils, and R below
+  // those with the derivatives. The taper and the ghosts' last fill read the parent after
+  // restriction, which leaves every cell below restricted_cells() exact.
+  const long lowest = std::min({(n - b) / 2 - 3, n / 2 - 3 - R, restricted_cells()});
+  return static_cast<std::size_t>(std::max(0L, lowest - 3 * R));
+}
+
 void MeshStepper::restrict_level(std::vector<State>& u, std::size_t fine_level) const {
   restrict_to(u[fine_level], layout_->grid(fine_level), u[fine_level - 1],
               layout_->grid(fine_level - 1), 0, restricted_cells());
@@ -185,49 +201,131 @@ void combine_rows(const State* const* a, const double* w, State& s, std::size_t 
   }
 }
 
+/// The coarse cells a fused fill (fill_rows) holds per row, at most.
+constexpr long fused_cells = 64;
+
+/// fine[j] for the interior cells j in [j_begin, j_end) of each of `rows` rows (at most
+/// n_vars): the parent's arrays combined as combine_rows does on the coarse cells [lo, hi)
+/// (0 <= lo, hi - lo <= fused_cells) into a local array, every row first, then prolonged from
+/// it as prolong_field does. The same sums in the same order, so the same bits; gone are the
+/// round trip through the parent's scratch rows and the mirror's branch (the fill of each stage
+/// of every box, a tenth of a box run). All rows are combined before any is prolonged: a
+/// prolongation reading a row just stored waits on store forwarding.
+template <std::size_t M>
+void fill_rows(const State* const* a, const double* w, std::size_t rows, std::size_t nt_c,
+               State& fine, std::size_t nt_f, long lo, long hi, long j_begin, long j_end) {
+  const std::size_t g = Grid::n_ghost, cells = static_cast<std::size_t>(hi - lo);
+  std::array<double, n_vars * fused_cells> combined; // row v, coarse cell i: v * cells + i - lo
+  for (std::size_t v = 0; v < rows; ++v) {
+    std::array<const double*, M> f{};
+    for (std::size_t m = 0; m < M; ++m)
+      f[m] = a[m]->data() + v * nt_c + g + lo;
+    double* const c = combined.data() + v * cells;
+    for (std::size_t i = 0; i < cells; ++i) {
+      double sum = 0.0;
+#pragma GCC unroll 8
+      for (std::size_t m = 0; m < M; ++m)
+        sum += w[m] * f[m][i];
+      c[i] = sum;
+    }
+  }
+  for (std::size_t v = 0; v < rows; ++v) {
+    const double* const c = combined.data() + v * cells; // c[i - lo]: coarse cell i
+    double* const out = fine.data() + v * nt_f + g;
+    // fine cell 2i at -1/4 from coarse centre i reads cells i-3 ... i+2, fine cell 2i+1 at
+    // +1/4 reads i-2 ... i+3 (prolong_field): a pair's m-th terms are neighbours in c
+    auto one = [&](long j, const std::array<double, 6>& wj, long first) {
+      double sum = 0.0;
+      for (std::size_t m = 0; m < 6; ++m)
+        sum += wj[m] * c[first - lo + static_cast<long>(m)];
+      out[j] = sum;
+    };
+    long j = j_begin;
+    if ((j & 1) == 1) {
+      one(j, prolong_weights_plus, j / 2 - 2);
+      ++j;
+    }
+    for (; j + 1 < j_end; j += 2) {
+      const double* const cm = c + (j / 2 - 3 - lo);
+      double minus = 0.0, plus = 0.0;
+      for (std::size_t m = 0; m < 6; ++m) {
+        minus += prolong_weights_minus[m] * cm[m];
+        plus += prolong_weights_plus[m] * cm[m + 1];
+      }
+      out[j] = minus;
+      out[j + 1] = plus;
+    }
+    if (j < j_end)
+      one(j, prolong_weights_minus, j / 2 - 3);
+  }
+}
+
 } // namespace
 
-void MeshStepper::fill_from_parent(std::size_t l, State& fine,
-                                   std::initializer_list<const State*> arrays,
-                                   std::initializer_list<double> weights, long j_begin) const {
-  const Grid& gc = layout_->grid(l - 1);
-  const Grid& gf = layout_->grid(l);
+void prolong_combination(std::span<const State* const> arrays, std::span<const double> weights,
+                         const Grid& gc, State& fine, const Grid& gf, long j_begin,
+                         State& scratch) {
+  if (arrays.empty() || arrays.size() != weights.size())
+    throw std::logic_error("prolong_combination needs one weight per array");
   const long j_end = static_cast<long>(gf.n_interior() + Grid::n_ghost);
   // the coarse cells the prolongation reads: floor(j/2) - 3 ... floor(j/2) + 3, mirrored below 0
   long lo = j_begin / 2 - 3;
   long hi = (j_end - 1) / 2 + 4;
+  // The parent's arrays need not be of one formulation's count: the rows are those of the
+  // state (size / nt).
+  const std::size_t nt = gc.n_total(), g = Grid::n_ghost;
+  const std::size_t size = arrays.front()->size();
+  const std::size_t rows = size / nt;
+  const State* const* const a = arrays.data();
+  const double* const w = weights.data();
+  if (lo >= 0 && hi - lo <= fused_cells && rows <= n_vars) { // away from the origin's mirror
+    const std::size_t nt_f = gf.n_total();
+    switch (arrays.size()) { // the counts the callers pass: each sum's terms in registers
+    case 1:
+      return fill_rows<1>(a, w, rows, nt, fine, nt_f, lo, hi, j_begin, j_end);
+    case 2:
+      return fill_rows<2>(a, w, rows, nt, fine, nt_f, lo, hi, j_begin, j_end);
+    case 3:
+      return fill_rows<3>(a, w, rows, nt, fine, nt_f, lo, hi, j_begin, j_end);
+    case 5:
+      return fill_rows<5>(a, w, rows, nt, fine, nt_f, lo, hi, j_begin, j_end);
+    default:
+      throw std::logic_error("prolong_combination combines 1, 2, 3 or 5 arrays");
+    }
+  }
   if (lo < 0) {
     hi = std::max(hi, -lo);
     lo = 0;
   }
-  const std::size_t nt = gc.n_total(), g = Grid::n_ghost;
-  const std::size_t size = (*arrays.begin())->size();
-  State& s = levels_[l - 1].scratch;
-  s.resize(size);
-  // s = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable, summed in the order
-  // m = 0, 1, ... (as Odeint's stage sums), with no allocation per call (one call per stage of
-  // every box). The parent's arrays need not be of one formulation's count: the rows are those
-  // of the state (size / nt).
-  const std::size_t rows = size / nt;
-  const State* const* const a = std::data(arrays);
-  const double* const w = std::data(weights);
-  switch (arrays.size()) { // the counts the callers pass: each sum's terms in registers
+  // near the origin: scratch = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable,
+  // then prolong_field with the mirror
+  scratch.resize(size);
+  switch (arrays.size()) {
   case 1:
-    combine_rows<1>(a, w, s, rows, nt, g, lo, hi);
+    combine_rows<1>(a, w, scratch, rows, nt, g, lo, hi);
     break;
   case 2:
-    combine_rows<2>(a, w, s, rows, nt, g, lo, hi);
+    combine_rows<2>(a, w, scratch, rows, nt, g, lo, hi);
     break;
   case 3:
-    combine_rows<3>(a, w, s, rows, nt, g, lo, hi);
+    combine_rows<3>(a, w, scratch, rows, nt, g, lo, hi);
     break;
   case 5:
-    combine_rows<5>(a, w, s, rows, nt, g, lo, hi);
+    combine_rows<5>(a, w, scratch, rows, nt, g, lo, hi);
     break;
   default:
-    throw std::logic_error("fill_from_parent combines 1, 2, 3 or 5 arrays");
+    throw std::logic_error("prolong_combination combines 1, 2, 3 or 5 arrays");
   }
-  prolong(s, gc, fine, gf, j_begin, j_end);
+  prolong(scratch, gc, fine, gf, j_begin, j_end);
+}
+
+void MeshStepper::fill_from_parent(std::size_t l, State& fine,
+                                   std::initializer_list<const State*> arrays,
+                                   std::initializer_list<double> weights, long j_begin) const {
+  // one call per stage of every box: the scratch is the parent's, allocated once
+  prolong_combination({std::data(arrays), arrays.size()}, {std::data(weights), weights.size()},
+                      layout_->grid(l - 1), fine, layout_->grid(l), j_begin,
+                      levels_[l - 1].scratch);
 }
 
 void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double dt,

@@ -63,6 +63,7 @@
 #include <functional>
 #include <initializer_list>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace gbssn1d::mesh {
@@ -75,6 +76,15 @@ using LevelRhs = std::function<void(const State&, State&, double)>;
 std::vector<long> level_steps(const MeshLayout& layout, const StepperOptions& options);
 /// The hierarchy's step (level 0's) under `options`.
 double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options);
+
+/// The fine level's interior cells [j_begin, N + n_ghost) (its outer ghosts included), every
+/// row: the prolongation (transfer.hpp's prolong) of the parent's sum_m weights[m] arrays[m]
+/// (1, 2, 3 or 5 arrays, summed in the order m = 0, 1, ..., as Odeint's stage sums). Away from
+/// the origin the sums stay in a local array; near it (a coarse cell read below 0) they go
+/// through `scratch` and prolong_field's mirror. The same bits either way.
+void prolong_combination(std::span<const State* const> arrays, std::span<const double> weights,
+                         const Grid& coarse_grid, State& fine, const Grid& fine_grid, long j_begin,
+                         State& scratch);
 
 class MeshStepper {
 public:
@@ -135,6 +145,17 @@ public:
   }
   /// The coarse cells [0, restricted_cells()) of a parent overwritten by restriction.
   long restricted_cells() const;
+  /// The first interior cell of level l whose right-hand side any result depends on (0 for the
+  /// finest level): the level's own evolution may skip the cells below it (GbssnRhs::
+  /// set_first_cell). A parent's cells below its child's extent are overwritten by restriction
+  /// after each of its steps; before that, the child's boundary fills read the parent's stages
+  /// from about N/2 - 3 on, and the diagnostics of the parent's uncovered cells (on dense
+  /// output, between steps) a little further down. A stage value is exact from R cells (the
+  /// stencil radius) further in than the one before, the first stage from the first evolved
+  /// cell on, so the last stage and the new state are exact from 3R cells above it: the first
+  /// cell is the lowest cell read minus 3R. (The taper and the last fill of the ghosts read
+  /// the parent after restriction.)
+  std::size_t first_needed_cell(std::size_t l) const;
 
   /// A stored time level of a parent level (for the quadratic choice).
   struct TimeLevel {
