@@ -149,9 +149,11 @@ void Simulation::set_skip_covered(bool skip) {
 
 void Simulation::set_first_cells() {
   const bool shift = config_.rhs.horizon_shift.active();
-  for (std::size_t l = 0; l < layout_.levels(); ++l)
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
     rhs_[l].set_first_cell(
         skip_covered_ && !(shift && l == tracker_.level()) ? stepper_.first_needed_cell(l) : 0);
+    stepper_.set_first_cell(l, rhs_[l].first_cell()); // the stage sums skip the same cells
+  }
 }
 
 void Simulation::step(double dt) {

@@ -176,7 +176,7 @@ struct Block {
   Rows in;
   const double *beta_GD, *r, *inv_r, *inv_rx, *d2_fx;
 };
-template <std::size_t R, std::size_t B, std::size_t n_fields>
+template <std::size_t R, std::size_t B, std::size_t n_fields, bool with_beta_GD>
 [[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const double* beta_GD_full,
                                                 double* buf, std::size_t i0, std::size_t n,
                                                 const double* grid) {
@@ -187,7 +187,8 @@ template <std::size_t R, std::size_t B, std::size_t n_fields>
 #pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
   for (std::size_t v = 0; v < n_fields; ++v)
     b.in.row[v] = buf + v * W + R;
-  std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_fields * W);
+  if constexpr (with_beta_GD) // the horizon shift's evolved part; otherwise beta itself
+    std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_fields * W);
   return b;
 }
 
@@ -245,7 +246,7 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   for (std::size_t i0 = g.first_interior() + first_cell_, n = 0; i0 < g.end_interior(); i0 += n) {
     const std::size_t k = i0 - g.first_interior(), offset = k % B; // 0 but in the first block
     n = std::min(B - offset, g.end_interior() - i0);
-    const Block blk = stage_block<R, B, n_fields>(
+    const Block blk = stage_block<R, B, n_fields, with_horizon_shift>(
         in_full, beta_GD_full, buf, i0, n, grid_blocks_.data() + k / B * rows_grid * B + offset);
     const Rows in = blk.in;
     const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,

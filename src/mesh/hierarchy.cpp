@@ -42,7 +42,7 @@ double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options) {
 MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
                          StepperOptions options)
     : layout_(&layout), rhs_(std::move(rhs)), options_(options), levels_(layout.levels()),
-      evaluations_(layout.levels(), 0) {
+      evaluations_(layout.levels(), 0), first_cell_(layout.levels(), 0) {
   if (rhs_.size() != layout.levels())
     throw std::invalid_argument("the mesh stepper needs one right-hand side per level ("
                                 + std::to_string(layout.levels()) + "), got "
@@ -111,6 +111,12 @@ std::size_t MeshStepper::first_needed_cell(std::size_t l) const {
   // restriction, which leaves every cell below restricted_cells() exact.
   const long lowest = std::min({(n - b) / 2 - 3, n / 2 - 3 - R, restricted_cells()});
   return static_cast<std::size_t>(std::max(0L, lowest - 3 * R));
+}
+
+void MeshStepper::set_first_cell(std::size_t l, std::size_t cell) {
+  if (cell > first_needed_cell(l))
+    throw std::logic_error("a level's stage sums may skip the cells below first_needed_cell only");
+  first_cell_.at(l) = cell;
 }
 
 void MeshStepper::restrict_level(std::vector<State>& u, std::size_t fine_level) const {

@@ -4,7 +4,8 @@
 // (GbssnRhs) and a level's Grid do not: each level is an ordinary Grid with its own GbssnRhs,
 // and the stepper sees a level only through a State and a right-hand-side functor
 // void(const State&, State&, double t). One level is the single grid (any map), stepped by the
-// same RK4 as Boost.Odeint's runge_kutta4, bit for bit (tests/mesh/test_hierarchy.cpp).
+// same RK4 as Boost.Odeint's runge_kutta4, bit for bit (tests/mesh/test_hierarchy.cpp; the
+// tableau's zero terms left out, which changes no finite sum).
 //
 //  - Layout (layout.hpp): level l covers 0 <= r <= rmax/2^l with N cells, cell-centred, so that
 //    each coarse cell holds two fine cells; origin ghosts by parity, as on the single grid.
@@ -156,6 +157,12 @@ public:
   /// cell is the lowest cell read minus 3R. (The taper and the last fill of the ghosts read
   /// the parent after restriction.)
   std::size_t first_needed_cell(std::size_t l) const;
+  /// Level l's RK4 stage sums start at interior cell `cell` (0: every cell, as by default); the
+  /// cells below keep stale stage values and the state its value from before the step. For a
+  /// level whose right-hand side skips the same cells (GbssnRhs::set_first_cell), at most
+  /// first_needed_cell(l): the values there are read by no exact cell's stencil, and
+  /// restriction overwrites them.
+  void set_first_cell(std::size_t l, std::size_t cell);
 
   /// A stored time level of a parent level (for the quadratic choice).
   struct TimeLevel {
@@ -200,7 +207,8 @@ private:
   StepperOptions options_;
   mutable std::vector<Level> levels_;
   std::vector<std::uint64_t> evaluations_;
-  std::vector<long> steps_; ///< steps of level l per hierarchy step
+  std::vector<long> steps_;             ///< steps of level l per hierarchy step
+  std::vector<std::size_t> first_cell_; ///< of each level's stage sums (set_first_cell)
 };
 
 } // namespace gbssn1d::mesh
