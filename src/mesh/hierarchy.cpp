@@ -353,13 +353,22 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
     const Level& P = levels_[l - 1];
     const double theta = (t - P.t0) / P.dt, ratio = dt / P.dt;
     const long j_begin = static_cast<long>(layout_->n_cells());
-    // each stage's weights, once per step
-    std::array<StageWeights, 4> weights{};
-    if (options_.time == TimeInterpolation::rk_stages)
-      weights = rk_stage_weights_all(theta, ratio, P.dt);
-    else
-      for (std::size_t s = 0; s < 4; ++s)
-        weights[s] = dense_output_weights(theta + rk4_stage_times[s] * ratio, P.dt);
+    // each stage's weights, once per step, or as made for the same theta, ratio and dt
+    auto* memo = &L.weights_memo[0];
+    if (!(memo->theta == theta && memo->ratio == ratio && memo->dt == P.dt)) {
+      memo = &L.weights_memo[1];
+      if (!(memo->theta == theta && memo->ratio == ratio && memo->dt == P.dt)) {
+        memo = &L.weights_memo[L.weights_memo_next];
+        L.weights_memo_next = 1 - L.weights_memo_next;
+        *memo = {theta, ratio, P.dt, {}};
+        if (options_.time == TimeInterpolation::rk_stages)
+          memo->weights = rk_stage_weights_all(theta, ratio, P.dt);
+        else
+          for (std::size_t s = 0; s < 4; ++s)
+            memo->weights[s] = dense_output_weights(theta + rk4_stage_times[s] * ratio, P.dt);
+      }
+    }
+    const std::array<StageWeights, 4> weights = memo->weights;
     fill = [this, &P, l, weights, j_begin](int s, State& x) {
       const StageWeights& w = weights[static_cast<std::size_t>(s)];
       fill_from_parent(l, x, {&P.u0, &P.k[0], &P.k[1], &P.k[2], &P.k[3]},

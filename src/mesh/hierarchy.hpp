@@ -184,6 +184,16 @@ private:
     std::array<State, 4> k;         ///< stage derivatives of the current step
     double t0 = 0.0, dt = 0.0;      ///< the current (or last) step
     std::vector<TimeLevel> history; ///< quadratic: the states before the last steps
+    /// The stage fills' time weights (StageWeights) of the last two steps, with the step's
+    /// place theta in its parent's step, their ratio and the parent's step they were made from:
+    /// a subcycled box alternates between theta = 0 and 1/2, so they are made again only when
+    /// one of those changes (a shorter last step).
+    struct StageWeightsMemo {
+      double theta = std::numeric_limits<double>::quiet_NaN(), ratio = theta, dt = theta;
+      std::array<std::array<double, 5>, 4> weights{};
+    };
+    std::array<StageWeightsMemo, 2> weights_memo;
+    std::size_t weights_memo_next = 0; ///< the entry to replace next
   };
   /// Every level's scratch states sized as its state `u[l]` (its formulation's variables).
   void fit_scratch(const std::vector<State>& u);
