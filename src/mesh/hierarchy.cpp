@@ -371,6 +371,15 @@ void MeshStepper::advance(std::vector<State>& u, std::size_t l, double t, double
     const std::array<StageWeights, 4> weights = memo->weights;
     fill = [this, &P, l, weights, j_begin](int s, State& x) {
       const StageWeights& w = weights[static_cast<std::size_t>(s)];
+      // Trailing zero weights add +-0 to a sum that is never -0 (it starts at +0): the same
+      // bits without them. At theta = 0 the first stage reads u0 alone, the second u0 and k1.
+      if (w[2] == 0.0 && w[3] == 0.0 && w[4] == 0.0) {
+        if (w[1] == 0.0)
+          fill_from_parent(l, x, {&P.u0}, {w[0]}, j_begin);
+        else
+          fill_from_parent(l, x, {&P.u0, &P.k[0]}, {w[0], w[1]}, j_begin);
+        return;
+      }
       fill_from_parent(l, x, {&P.u0, &P.k[0], &P.k[1], &P.k[2], &P.k[3]},
                        {w[0], w[1], w[2], w[3], w[4]}, j_begin);
     };
