@@ -3,6 +3,7 @@
 
   boxes_cost.py --out DIR [--tmax 1000] [--rmax 1024] [--t0 10] [--bin build/gbssn1d]
                 [--kinds boxes,sinh,uniform] [--gauges standard,stretched] [--id 1log-trumpet]
+                [--pairs K]
 
 Runs the 1+log trumpet (or --id's data), standard gauge and stretched to h = 0.89 M (A = 0.5), on
   - boxes: 9 levels to rmax, finest spacing 4/N M (N = 32, 48, 64, 96: M/8 ... M/24);
@@ -16,6 +17,12 @@ kind and gauge the CPU time needed to reach the reference's error (sinh, N = 400
 interpolated between its runs in log-log (or marked '>' beyond them), and its ratio to the
 reference's time. Writes DIR/cost.png: CPU time against error, log-log, one curve per kind and
 gauge. Every run is made afresh; DIR/<kind>-<gauge>-N<n>/ holds its output.
+
+A shared machine's speed drifts by tens of percent within minutes, and runs one after the other
+carry that drift into the ratio. --pairs K measures it again in K alternating pairs: each of
+the two runs of a kind whose errors bracket the reference's, against the reference, run after
+run; the median of each pair's CPU ratio, interpolated in log-log as above (the drift cancels
+within a pair).
 """
 import argparse
 import math
@@ -84,6 +91,24 @@ def needed(rows, target):
     return '?', float('nan')
 
 
+def paired_ratio(args, rows, kind, gauge, target, k):
+    """The CPU ratio of `kind` to the reference at the reference's error, from k alternating
+    pairs of each bracketing run and the reference (medians of the pairs' ratios)."""
+    pts = sorted((r['H'], r['N']) for r in rows if r['kind'] == kind and r['gauge'] == gauge
+                 and r['status'] == 'ok')
+    bracket = [(a, b) for a, b in zip(pts, pts[1:]) if (a[0] - target) * (b[0] - target) <= 0]
+    if not bracket or bracket[0][0][0] == bracket[0][1][0]:
+        return None
+    (e0, n0), (e1, n1) = bracket[0]
+    medians = []
+    for n in (n0, n1):
+        ratios = [run(args, kind, gauge, n)['cpu'] / run(args, 'sinh', gauge, 400)['cpu']
+                  for _ in range(k)]
+        medians.append(float(np.median(ratios)))
+    s = math.log(target / e0) / math.log(e1 / e0)
+    return math.exp(math.log(medians[0]) + s * math.log(medians[1] / medians[0])), (n0, n1), medians
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -96,7 +121,11 @@ def main():
     ap.add_argument('--gauges', default='standard,stretched')
     ap.add_argument('--id', default='1log-trumpet',
                     help='initial data: 1log-trumpet (default), wormhole or maximal-trumpet')
+    ap.add_argument('--pairs', type=int, default=0,
+                    help='also measure each ratio in this many alternating pairs (0: not)')
     args = ap.parse_args()
+    if args.pairs < 0:
+        raise DataError('must be 0 or more (--pairs)', str(args.pairs))
     if shutil.which(args.bin) is None or os.path.isdir(args.bin):
         raise DataError('no such program (--bin: the gbssn1d executable)', args.bin)
     if os.path.exists(args.out) and not os.path.isdir(args.out):
@@ -128,6 +157,14 @@ def main():
                                target)
             print(f'{gauge} {kind}: H = {target:.3e} at cpu {mark}{cpu:.3g} s '
                   f'({cpu / ref_cpu:.2f} x sinh N = 400)')
+        for kind in kinds:
+            paired = paired_ratio(args, rows, kind, gauge, target, args.pairs) \
+                if args.pairs > 0 and kind != 'sinh' else None
+            if paired:
+                ratio, ns, medians = paired
+                print(f'{gauge} {kind}, {args.pairs} alternating pairs of N = {ns[0]}, {ns[1]} '
+                      f'with sinh N = 400 (medians {medians[0]:.2f}, {medians[1]:.2f}): '
+                      f'{ratio:.2f} x sinh N = 400', flush=True)
 
     import matplotlib
     matplotlib.use('Agg')
