@@ -33,7 +33,9 @@
 //    subcycling, every level steps with the finest dt. The coarsest level's outer ghosts keep
 //    GbssnRhs's Sommerfeld condition; every finer level's outer ghosts come from its parent
 //    (the RHS the functor writes there is ignored). Kreiss-Oliger dissipation and upwinding are
-//    those of GbssnRhs on each level, scaled with that level's spacing.
+//    those of GbssnRhs on each level, scaled with that level's spacing. A parent need not evolve
+//    the cells under its child that restriction overwrites and nothing reads before
+//    (first_needed_cell; the evolution skips them, every result bit for bit the same).
 //  - Start: initialise() restricts from the finest level down and fills every fine boundary;
 //    for `quadratic` it also makes each parent's level at t - dt_l by one RK4 step backwards
 //    (like Carpet's init_3_timelevels), since a linear first step leaves an O(dt^2) error that
