@@ -16,13 +16,15 @@ docs/roofline.md reads these counts against the machine's ceilings (gbssn1d_benc
 peak).
 The loop body is branch-free, so the static count of one iteration is its dynamic count.
 
---check-vectorised: for every instance of GbssnRhs::interior in the OBJECTs (those without one
-are skipped; at least one must hold one), requires that its
-point loop be vectorised: among the innermost loops holding at least half of the most
+--check-vectorised: for every instance of GbssnRhs::interior and of the loop that writes beta_H
+(fill_horizon_shift, one per normal) in the OBJECTs (those without one are skipped; at least one
+must hold one), requires that its point loop be vectorised: among the innermost loops holding at least half of the most
 floating-point arithmetic (the point loop and its scalar remainder hold the same), one with at
 least 90% of it packed (..pd) rather than scalar (..sd); prints one line per instance and exits
 1 naming each one that is not. A call left in the loop (an equation GCC did not inline) stops
-vectorisation and costs a factor of about 8 (docs/roofline.md, Sec. 6).
+vectorisation and costs a factor of about 8 (docs/roofline.md, Sec. 6). beta_H's loops must also
+hold no division or square root: s^r without the divider (sqrt_quotient) runs 3.5 times faster
+(docs/roofline.md, Sec. 4).
 """
 import argparse
 import collections
@@ -53,6 +55,9 @@ def disassemble(obj, symbol_regex):
     return symbols[0], out
 
 
+# the mangled names of the loops --check-vectorised checks
+CHECKED_LOOPS = ("GbssnRhs8interiorI", "fill_horizon_shift")
+DIVIDER = re.compile(r"v?(div|sqrt)(p|s)d$")
 FP_ARITHMETIC = re.compile(r"v?(f(n?)m(add|sub)\d+|mul|add|sub|div)(p|s)d$")
 
 
@@ -85,7 +90,8 @@ def check_vectorised(objects):
     for obj in objects:
         names = subprocess.run(["nm", obj], capture_output=True, text=True, check=True).stdout
         symbols = sorted({line.split()[-1] for line in names.splitlines()
-                          if "GbssnRhs8interiorI" in line and line.split()[-2] in "tTwW"})
+                          if any(name in line for name in CHECKED_LOOPS)
+                          and line.split()[-2] in "tTwW"})
         found += len(symbols)
         for symbol in symbols:
             _, ins = disassemble(obj, re.escape(symbol) + "$")
@@ -95,6 +101,10 @@ def check_vectorised(objects):
             most = max((sum(c) for c in counts), default=0)
             packed_loops = [c for c in counts if sum(c) >= 0.5 * most and c[0] >= 0.9 * sum(c)]
             ok = most > 0 and bool(packed_loops)
+            divider = [m for _, m, _ in ins if DIVIDER.match(m)]
+            if "fill_horizon_shift" in symbol and divider:
+                ok = False
+                print(f"uses the divider: {', '.join(sorted(set(divider)))}")
             packed, scalar = max(packed_loops, key=sum) if ok else max(counts, key=sum,
                                                                          default=(0, 0))
             demangled = subprocess.run(["c++filt", symbol], capture_output=True,
@@ -104,7 +114,8 @@ def check_vectorised(objects):
             if not ok:
                 failed.append(demangled)
     if not found:
-        sys.exit("loop_mix.py: no instance of GbssnRhs::interior in " + " ".join(objects))
+        sys.exit("loop_mix.py: no instance of GbssnRhs::interior or fill_horizon_shift in "
+                 + " ".join(objects))
     if failed:
         print(f"loop_mix.py: {len(failed)} of {found} point loops not vectorised:", *failed,
               sep="\n  ")

@@ -16,11 +16,13 @@ std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& param
 
 namespace {
 
-/// One loop per normal, so that each vectorises.
+/// One loop per normal, so that each vectorises; out of line, so that
+/// `bench/loop_mix.py --check-vectorised` finds each (vectorised, and without the divider).
 template <ShiftNormal normal>
-void fill_horizon_shift(std::size_t n, const double* f, const double* chi, const double* a,
-                        double amplitude, double chi_smooth, double* beta_H,
-                        const double* beta_GD = nullptr, double* beta_full = nullptr) {
+[[gnu::noinline]] void fill_horizon_shift(std::size_t n, const double* f, const double* chi,
+                                          const double* a, double amplitude, double chi_smooth,
+                                          double* beta_H, const double* beta_GD = nullptr,
+                                          double* beta_full = nullptr) {
   for (std::size_t i = 0; i < n; ++i) {
     beta_H[i] = f[i] * amplitude * shift_normal(normal, chi[i], a[i], chi_smooth); // s^r even
     if (beta_full)

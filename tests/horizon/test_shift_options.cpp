@@ -21,6 +21,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
+#include <utility>
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
@@ -64,6 +66,54 @@ TEST_CASE("shift profiles: odd, their stated shapes at the origin, the peak and 
   CHECK(shift_profile(P::rational3, q) / (q * q * q) == doctest::Approx(1.0).epsilon(1e-5));
   CHECK(shift_profile(P::gauss3, q) / (q * q * q)
         == doctest::Approx(0.5 * std::exp(1.5)).epsilon(1e-5));
+}
+
+/// |got - sqrt(c / a)| in units of the last place of the correctly rounded value, the
+/// reference in long double (64-bit mantissa on x86: 11 bits to spare)
+double ulps_from_sqrt_quotient(double got, double c, double a) {
+  const long double exact = std::sqrt(static_cast<long double>(c) / static_cast<long double>(a));
+  const double rounded = static_cast<double>(exact);
+  const double ulp = std::nextafter(rounded, std::numeric_limits<double>::infinity()) - rounded;
+  return static_cast<double>(std::abs(static_cast<long double>(got) - exact) / ulp);
+}
+
+TEST_CASE("sqrt_quotient: sqrt(c / a) within 2 ulp without the divider, 0 at c = 0, NaN for a "
+          "degenerate metric") {
+  std::mt19937_64 gen(40);
+  std::uniform_real_distribution<double> exponent(-150.0, 150.0), unit(0.0, 1.0);
+  double worst = 0.0;
+  for (int k = 0; k < 200000; ++k) {
+    // c and a over 300 decades each, and the values a run meets: chi in (0, 1], a near 1
+    const double c = k % 2 ? std::pow(10.0, exponent(gen)) : unit(gen);
+    const double a = k % 2 ? std::pow(10.0, exponent(gen)) : 0.5 + unit(gen);
+    worst = std::max(worst, ulps_from_sqrt_quotient(sqrt_quotient(c, a), c, a));
+  }
+  MESSAGE("largest error: " << worst << " ulp");
+  CHECK(worst < 2.0);
+  // c a subnormal (the estimate reads the exponent bits, so x is scaled first), and c a
+  // near the largest double
+  for (const auto& [c, a] : {std::pair{1e-160, 1e-160},
+                             {4e-320, 1.0},
+                             {1.0, 5e-324},
+                             {1e154, 1e154},
+                             {1.0, 1e-300},
+                             {1e300, 1e-300}})
+    CHECK(ulps_from_sqrt_quotient(sqrt_quotient(c, a), c, a) < 2.0);
+  CHECK(sqrt_quotient(0.0, 1.7) == 0.0);
+  CHECK(sqrt_quotient(1.0, 1.0) == 1.0);
+  CHECK(sqrt_quotient(4.0, 1.0) == 2.0);
+  for (const auto& [c, a] : {std::pair{1.0, 0.0},
+                             {1.0, -1.0},
+                             {-1.0, 1.0},
+                             {1e200, 1e200},
+                             {1e-200, 1e-200},
+                             {1.0, std::numeric_limits<double>::infinity()},
+                             {std::numeric_limits<double>::quiet_NaN(), 1.0},
+                             {1.0, std::numeric_limits<double>::quiet_NaN()}}) {
+    CAPTURE(c);
+    CAPTURE(a);
+    CHECK(std::isnan(sqrt_quotient(c, a)));
+  }
 }
 
 TEST_CASE("shift normals: their values, and the unit normal's kink at a trumpet's puncture") {
