@@ -1,8 +1,9 @@
 // The horizon-adjusting shift (equations document, Sec. 14), the method under study:
 //   beta = beta_GD + beta_H,   beta_H = f(r) A (h_AH - h) s^r,
 // with its profiles f, normals s^r, the strength ramp and the deliberately inconsistent variants
-// of the study. The equations use it through GbssnRhs (gbssn/rhs.cpp); beta_H is written here
-// once (horizon_shift_on), for the right-hand side and for output alike.
+// of the study. The equations use it through GbssnRhs (gbssn/rhs.cpp); beta_H is written here,
+// for output (horizon_shift_on) and within beta_GD + beta_H for the right-hand side
+// (full_shift_on), by one loop.
 #pragma once
 
 #include "gbssn/horizon_shift_params.hpp"
@@ -106,11 +107,14 @@ inline double shift_normal(ShiftNormal normal, double chi, double a, double chi_
 /// f(r_i / w) on every point of the grid (odd in r).
 std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& params);
 
-/// beta_H = f amplitude s^r (H3) on n points, f = profile_on(...), amplitude = A(t) (h_AH - h),
-/// and beta_full = beta_GD + beta_H if beta_GD and beta_full are given.
+/// beta_H = f amplitude s^r (H3) on n points, f = profile_on(...), amplitude = A(t) (h_AH - h).
 void horizon_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
-                      const double* a, double amplitude, double chi_smooth, double* beta_H,
-                      const double* beta_GD = nullptr, double* beta_full = nullptr);
+                      const double* a, double amplitude, double chi_smooth, double* beta_H);
+
+/// beta_full = beta_GD + beta_H on n points, beta_H as horizon_shift_on's, in one pass.
+void full_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
+                   const double* a, double amplitude, double chi_smooth, const double* beta_GD,
+                   double* beta_full);
 
 /// f(r) A (h_AH - h) s^r on every point (ghosts included; odd in r like beta), or zero
 /// everywhere without a horizon radius.

@@ -77,14 +77,12 @@ void GbssnRhs::set_first_cell(std::size_t cell) {
 void GbssnRhs::split_shift(const State& u, double t) {
   const HorizonShiftParams& hs = params_.horizon_shift;
   const std::size_t n = grid_->n_total();
-  beta_H_.resize(n);
   beta_full_.resize(n);
-  const auto beta_GD = field(u, *grid_, Var::beta);
   // without a horizon beta_H = 0 (amplitude 0 keeps the same loop)
   const double amplitude = h_AH_ ? hs.strength(t) * (*h_AH_ - hs.h) : 0.0;
-  horizon_shift_on(hs.normal, n, profile_.data(), field(u, *grid_, Var::chi).data(),
-                   field(u, *grid_, Var::a).data(), amplitude, hs.chi_smooth, beta_H_.data(),
-                   beta_GD.data(), beta_full_.data());
+  full_shift_on(hs.normal, n, profile_.data(), field(u, *grid_, Var::chi).data(),
+                field(u, *grid_, Var::a).data(), amplitude, hs.chi_smooth,
+                field(u, *grid_, Var::beta).data(), beta_full_.data());
 }
 
 // compiled in rhs_biased.cpp

@@ -113,7 +113,7 @@ private:
   void evaluate(const State& u, State& dudt, double t);
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;
-  /// beta_H_ and beta_full_ = beta_GD + beta_H_ for the current h_AH_ (H3).
+  /// beta_full_ = beta_GD + beta_H for the current h_AH_ (H3).
   void split_shift(const State& u, double t);
 
   const Grid* grid_;
@@ -127,8 +127,8 @@ private:
   static constexpr std::size_t block_size = 256;  ///< points per block of the point loop
   static constexpr std::size_t vector_points = 8; ///< of a vector (AVX-512)
   static_assert(block_size % vector_points == 0);
-  std::vector<double> grid_blocks_;        ///< grid factors laid out per block (rhs_loop.hpp)
-  std::vector<double> beta_H_, beta_full_; ///< scratch of the horizon shift
+  std::vector<double> grid_blocks_; ///< grid factors laid out per block (rhs_loop.hpp)
+  std::vector<double> beta_full_;   ///< scratch of the horizon shift
 };
 
 } // namespace gbssn1d
