@@ -49,7 +49,7 @@ struct RhsTiming {
   double seconds = 0.0;
 };
 RhsTiming time_rhs(const Simulation& sim, double seconds) {
-  GbssnRhs rhs(sim.grid(), sim.rhs().params());
+  GbssnRhs rhs(sim.rhs()); // a copy: with the run's horizon locator
   State dudt(sim.state().size());
   using clock = std::chrono::steady_clock;
   RhsTiming t;
@@ -63,6 +63,39 @@ RhsTiming time_rhs(const Simulation& sim, double seconds) {
   return t;
 }
 
+/// The cost of the horizon shift, paired: chunks of 20 evaluations of the plain and of the
+/// horizon-shift right-hand side, alternating for at least `seconds`, so that both see the same
+/// state of a shared host (which drifts by tens of percent within minutes). Returns the
+/// ratio of the summed times and the median of the chunks' ratios.
+struct PairedRatio {
+  double summed = 0.0, median = 0.0;
+  long chunks = 0;
+};
+PairedRatio time_shift_cost(const Simulation& plain, const Simulation& shifted, double seconds) {
+  GbssnRhs rhs_plain(plain.rhs()), rhs_shifted(shifted.rhs()); // with the runs' horizon locators
+  State dudt(plain.state().size());
+  using clock = std::chrono::steady_clock;
+  const auto chunk = [&](GbssnRhs& rhs, const State& u) {
+    const auto start = clock::now();
+    for (int k = 0; k < 20; ++k)
+      rhs(u, dudt, 0.0);
+    return std::chrono::duration<double>(clock::now() - start).count();
+  };
+  double total_plain = 0.0, total_shifted = 0.0;
+  std::vector<double> ratios;
+  const auto start = clock::now();
+  do {
+    const double t_plain = chunk(rhs_plain, plain.state());
+    const double t_shifted = chunk(rhs_shifted, shifted.state());
+    total_plain += t_plain;
+    total_shifted += t_shifted;
+    ratios.push_back(t_shifted / t_plain);
+  } while (std::chrono::duration<double>(clock::now() - start).count() < seconds);
+  std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
+                   ratios.end());
+  return {total_shifted / total_plain, ratios[ratios.size() / 2], static_cast<long>(ratios.size())};
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -74,15 +107,19 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "timing per size and shift (s)")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 600.0));
-  std::vector<std::string> sections{"rhs", "fd-order", "upwind", "formulation", "boxes"};
+  std::vector<std::string> sections{"rhs",    "shift-cost",  "fd-order",
+                                    "upwind", "formulation", "boxes"};
   app.add_option("--sections", sections,
-                 "sections to run: rhs (plain and horizon shift, each N), fd-order, upwind, "
+                 "sections to run: rhs (plain and horizon shift, each N), shift-cost (the horizon "
+                 "shift's cost against plain, in alternating chunks: a paired ratio), fd-order, "
+                 "upwind, "
                  "formulation (on the largest N), boxes (whole runs), peak (the core's "
                  "ceilings: clock, FMA, multiply and division throughput, bandwidth; about 20 s, "
                  "not run by default)")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(CLI::IsMember({"rhs", "fd-order", "upwind", "formulation", "boxes", "peak"}));
+      ->check(CLI::IsMember(
+          {"rhs", "shift-cost", "fd-order", "upwind", "formulation", "boxes", "peak"}));
   double fma_latency = 4.0;
   app.add_option("--fma-latency", fma_latency,
                  "peak: cycles of one FMA's latency, which turns a chain of them into a clock")
@@ -132,6 +169,24 @@ int main(int argc, char** argv) {
         fmt::print("{} {} {} {:.3f} {:.4e} {:.2f} {:.1f}\n", horizon_shift ? "horizon" : "plain", n,
                    evals, elapsed, rate, 1e9 / rate, steps / elapsed_steps);
       }
+  }
+  // The horizon shift's cost per evaluation against plain (issue: at most 1.1 times), paired
+  if (wanted("shift-cost")) {
+    fmt::print("# shift-cost: horizon / plain time per evaluation, alternating chunks of 20\n");
+    fmt::print("# N chunks summed_ratio median_chunk_ratio\n");
+    for (int n : sizes) {
+      const auto config = [n](bool horizon_shift) {
+        Params p = trumpet(n, 100.0, "sinh", horizon_shift);
+        p.dr_inner = 0.01;
+        p.tmax = 0.0;
+        resolve_defaults(p);
+        validate(p);
+        return evolution_config(p);
+      };
+      const Simulation plain(config(false)), shifted(config(true));
+      const PairedRatio r = time_shift_cost(plain, shifted, seconds);
+      fmt::print("{} {} {:.4f} {:.4f}\n", n, r.chunks, r.summed, r.median);
+    }
   }
   // Every finite-difference order (--fd-order), plain Gamma-driver, on the largest size: the
   // wider stencils' cost per point.

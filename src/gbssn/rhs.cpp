@@ -74,15 +74,10 @@ void GbssnRhs::set_first_cell(std::size_t cell) {
   first_cell_ = cell / vector_points * vector_points;
 }
 
-void GbssnRhs::split_shift(const State& u, double t) {
+double GbssnRhs::shift_amplitude(double t) const {
   const HorizonShiftParams& hs = params_.horizon_shift;
-  const std::size_t n = grid_->n_total();
-  beta_full_.resize(n);
   // without a horizon beta_H = 0 (amplitude 0 keeps the same loop)
-  const double amplitude = h_AH_ ? hs.strength(t) * (*h_AH_ - hs.h) : 0.0;
-  full_shift_on(hs.normal, n, profile_.data(), field(u, *grid_, Var::chi).data(),
-                field(u, *grid_, Var::a).data(), amplitude, hs.chi_smooth,
-                field(u, *grid_, Var::beta).data(), beta_full_.data());
+  return h_AH_ ? hs.strength(t) * (*h_AH_ - hs.h) : 0.0;
 }
 
 // compiled in rhs_biased.cpp

@@ -113,8 +113,8 @@ private:
   void evaluate(const State& u, State& dudt, double t);
   void outer_boundary(const State& u, State& dudt) const;
   void origin_ghosts(State& dudt) const;
-  /// beta_full_ = beta_GD + beta_H for the current h_AH_ (H3).
-  void split_shift(const State& u, double t);
+  /// A(t) (h_AH - h) of beta_H for the current h_AH_ (H3), or 0 without a horizon.
+  double shift_amplitude(double t) const;
 
   const Grid* grid_;
   RhsParams params_;
@@ -128,7 +128,7 @@ private:
   static constexpr std::size_t vector_points = 8; ///< of a vector (AVX-512)
   static_assert(block_size % vector_points == 0);
   std::vector<double> grid_blocks_; ///< grid factors laid out per block (rhs_loop.hpp)
-  std::vector<double> beta_full_;   ///< scratch of the horizon shift
+  double shift_amplitude_ = 0.0;    ///< shift_amplitude(t) of the evaluation under way
 };
 
 } // namespace gbssn1d

@@ -6,6 +6,7 @@
 
 #include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
+#include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs.hpp"
 
 #include <algorithm>
@@ -115,7 +116,7 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
   if (hs.active()) {
     if (source_)
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
-    split_shift(u, t);
+    shift_amplitude_ = shift_amplitude(t);
   }
   using V = HorizonShiftParams::Variant;
   if (params_.formulation == Formulation::z4c) {
@@ -178,19 +179,32 @@ struct Block {
   Rows in;
   const double *beta_GD, *r, *inv_r, *inv_rx, *d2_fx;
 };
+/// What the full shift beta_GD + beta_H is formed from, on the whole grid (full_shift_on).
+struct FullShift {
+  ShiftNormal normal;
+  const double *profile, *chi, *a;
+  double amplitude, chi_smooth;
+};
 template <std::size_t R, std::size_t B, std::size_t n_fields, bool with_beta_GD>
-[[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const double* beta_GD_full,
+[[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const FullShift& shift,
                                                 double* buf, std::size_t i0, std::size_t n,
                                                 const double* grid) {
   constexpr std::size_t W = B + 2 * R; // block with the halo
   Block b{in_full, buf + n_fields * W + R, grid, grid + B, grid + 2 * B, grid + 3 * B};
+  constexpr std::size_t beta = index(Var::beta);
   for (std::size_t v = 0; v < n_fields; ++v)
-    std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
+    if (!with_beta_GD || v != beta)
+      std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
 #pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
   for (std::size_t v = 0; v < n_fields; ++v)
     b.in.row[v] = buf + v * W + R;
-  if constexpr (with_beta_GD) // the horizon shift's evolved part; otherwise beta itself
-    std::copy(beta_GD_full + i0 - R, beta_GD_full + i0 + n + R, buf + n_fields * W);
+  if constexpr (with_beta_GD) { // the horizon shift's evolved part; otherwise beta itself
+    const std::size_t from = i0 - R, count = n + 2 * R;
+    std::copy(in_full.row[beta] + from, in_full.row[beta] + from + count, buf + n_fields * W);
+    // the full shift, formed here: no pass over the grid before the loop, no row to copy
+    full_shift_on(shift.normal, count, shift.profile + from, shift.chi + from, shift.a + from,
+                  shift.amplitude, shift.chi_smooth, in_full.row[beta] + from, buf + beta * W);
+  }
   return b;
 }
 
@@ -220,11 +234,12 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   using namespace point_loop;
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
-  // With the horizon shift every term sees the full shift beta_GD + beta_H ...
-  Rows in_full(u, g);
-  const double* const beta_GD_full = in_full[Var::beta];
-  if constexpr (with_horizon_shift)
-    in_full[Var::beta] = beta_full_.data();
+  // With the horizon shift every term sees the full shift beta_GD + beta_H ... (formed block
+  // by block as the blocks are staged: stage_block)
+  const Rows in_full(u, g);
+  const HorizonShiftParams& hs = params_.horizon_shift;
+  const FullShift full_shift_rows{hs.normal,       profile_.data(),  in_full[Var::chi],
+                                  in_full[Var::a], shift_amplitude_, hs.chi_smooth};
   const double inv_dx = 1.0 / g.dx();
   // Kreiss-Oliger dissipation: sigma/dx x the (p+2)-th difference, signed and normalised so
   // that the highest grid mode decays at the rate sigma/dx (fd::Order)
@@ -254,7 +269,7 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
     const std::size_t k = i0 - g.first_interior(), offset = k % B; // 0 but in the first block
     n = std::min(B - offset, g.end_interior() - i0);
     const Block blk = stage_block<R, B, n_fields, with_horizon_shift>(
-        in_full, beta_GD_full, buf, i0, n, grid_blocks_.data() + k / B * rows_grid * B + offset);
+        in_full, full_shift_rows, buf, i0, n, grid_blocks_.data() + k / B * rows_grid * B + offset);
     const Rows in = blk.in;
     const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,
                         *const inv_rx = blk.inv_rx, *const d2_fx = blk.d2_fx;
