@@ -15,7 +15,9 @@ namespace gbssn1d {
 
 namespace {
 
-template <int p, Formulation formulation>
+/// with_constraints = false: the areal radius and expansion alone (the horizon finder's), whose
+/// loop leaves out the derivatives only the constraints take.
+template <int p, Formulation formulation, bool with_constraints>
 void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& out,
                         std::size_t k_begin, std::size_t k_end) {
   constexpr std::size_t n_fields = n_evolved(formulation);
@@ -38,22 +40,33 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
       using enum Var;
       pd.f[Theta] = pd.d[Theta] = pd.dd[Theta] = pd.adv[Theta] = 0.0;
     }
-    const Constraints c = constraints(pd);
-    out.H[k] = c.H;
-    out.M_r[k] = c.M_r;
-    out.G_r[k] = c.G_r;
+    if constexpr (with_constraints) {
+      const Constraints c = constraints(pd);
+      out.H[k] = c.H;
+      out.M_r[k] = c.M_r;
+      out.G_r[k] = c.G_r;
+    }
     out.R_areal[k] = areal_radius(pd);
     out.Theta_plus[k] = expansion_plus(pd);
   }
+}
+
+template <int p, Formulation formulation>
+void diagnostic_rows_as(const State& u, const Grid& grid, const DiagnosticRows& out,
+                        std::size_t k_begin, std::size_t k_end) {
+  if (out.H || out.M_r || out.G_r)
+    diagnostic_rows_at<p, formulation, true>(u, grid, out, k_begin, k_end);
+  else
+    diagnostic_rows_at<p, formulation, false>(u, grid, out, k_begin, k_end);
 }
 
 template <int p>
 void diagnostic_rows_of(const State& u, const Grid& grid, const DiagnosticRows& out,
                         std::size_t k_begin, std::size_t k_end) {
   if (formulation_of(u, grid) == Formulation::z4c)
-    diagnostic_rows_at<p, Formulation::z4c>(u, grid, out, k_begin, k_end);
+    diagnostic_rows_as<p, Formulation::z4c>(u, grid, out, k_begin, k_end);
   else
-    diagnostic_rows_at<p, Formulation::bssn>(u, grid, out, k_begin, k_end);
+    diagnostic_rows_as<p, Formulation::bssn>(u, grid, out, k_begin, k_end);
 }
 
 } // namespace
@@ -62,6 +75,10 @@ void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out
                      std::size_t k_begin, std::size_t k_end) {
   if (k_begin > k_end || k_end > grid.n_interior())
     throw std::out_of_range("diagnostic_rows: points outside the interior");
+  if (!out.R_areal || !out.Theta_plus
+      || (out.H || out.M_r || out.G_r) != (out.H && out.M_r && out.G_r))
+    throw std::invalid_argument(
+        "diagnostic_rows: R_areal and Theta_plus, and all three constraints or none");
   switch (grid.fd_order()) {
   case 2:
     return diagnostic_rows_of<2>(u, grid, out, k_begin, k_end);

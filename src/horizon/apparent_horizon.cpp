@@ -39,11 +39,13 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
   const std::size_t fill_lo = k_lo >= stencil ? k_lo - stencil : 0;
   const std::size_t fill_hi = std::min(n, k_hi + stencil + 1);
   const std::size_t m = fill_hi - fill_lo;
-  std::vector<double> theta_rows(m), R_rows(m), constraint_rows(3 * m); // H, M_r, G_r unused
-  diagnostic_rows(u, grid,
-                  {constraint_rows.data(), constraint_rows.data() + m,
-                   constraint_rows.data() + 2 * m, R_rows.data(), theta_rows.data()},
-                  fill_lo, fill_hi);
+  // (no constraints: their derivatives are left out of the loop; the rows are kept per
+  // thread, so that the search on every RK substage allocates nothing)
+  thread_local std::vector<double> theta_rows, R_rows;
+  theta_rows.resize(m);
+  R_rows.resize(m);
+  diagnostic_rows(u, grid, {nullptr, nullptr, nullptr, R_rows.data(), theta_rows.data()}, fill_lo,
+                  fill_hi);
   const auto theta = [&](std::size_t k) { return theta_rows[k - fill_lo]; };
   // x from fill_lo on, the rows of Theta_+ and R, for the Lagrange interpolant
   const std::span<const double> x =
@@ -67,7 +69,7 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
         throw HorizonFinderError(
             fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
                         theta(j), grid.r()[grid.first_interior() + j]));
-    const std::size_t j0 = k0 - fill_lo; // the stencil in the rows from fill_lo
+    const std::size_t j0 = k0 - fill_lo;                 // the stencil in the rows from fill_lo
     auto theta_of_x = [&](double xi) { return lagrange6(x, theta_rows, j0, xi); };
     const double x_lo = x[lo - fill_lo], x_hi = x[k - fill_lo];
     double x_root;
