@@ -5,6 +5,7 @@
 #include "grid/grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 namespace gbssn1d {
@@ -22,6 +23,33 @@ inline double lagrange6(std::span<const double> x, std::span<const double> f, st
   }
   return sum;
 }
+
+/// The same interpolant as lagrange6 in Newton's form: the divided differences of f on the six
+/// nodes are formed once (15 divisions), and each evaluation is a nested product (5
+/// multiplications, no division: lagrange6 takes 30). For a root-find on one stencil, which
+/// evaluates it ten times or more. Agrees with lagrange6 to round-off (tests).
+class Lagrange6Newton {
+public:
+  Lagrange6Newton(std::span<const double> x, std::span<const double> f, std::size_t k0) {
+    for (std::size_t j = 0; j < 6; ++j) {
+      node_[j] = x[k0 + j];
+      c_[j] = f[k0 + j];
+    }
+    // c_[j] = f[x_0 ... x_j], in place
+    for (std::size_t level = 1; level < 6; ++level)
+      for (std::size_t j = 5; j >= level; --j)
+        c_[j] = (c_[j] - c_[j - 1]) / (node_[j] - node_[j - level]);
+  }
+  double operator()(double xi) const {
+    double sum = c_[5];
+    for (std::size_t j = 5; j-- > 0;)
+      sum = c_[j] + (xi - node_[j]) * sum;
+    return sum;
+  }
+
+private:
+  std::array<double, 6> node_{}, c_{};
+};
 
 /// First node of a 6-point stencil around the interval [k, k+1] of n nodes, kept in [0, n-6].
 inline std::size_t lagrange6_start(std::size_t k, std::size_t n) {

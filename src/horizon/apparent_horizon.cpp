@@ -70,7 +70,7 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
             fmt::format("the horizon finder met a non-finite expansion Theta_+ = {} at r = {:.6g}",
                         theta(j), grid.r()[grid.first_interior() + j]));
     const std::size_t j0 = k0 - fill_lo;                 // the stencil in the rows from fill_lo
-    auto theta_of_x = [&](double xi) { return lagrange6(x, theta_rows, j0, xi); };
+    const Lagrange6Newton theta_of_x(x, theta_rows, j0); // lagrange6's, without divisions
     const double x_lo = x[lo - fill_lo], x_hi = x[k - fill_lo];
     double x_root;
     if (f_lo == 0.0) {

@@ -199,6 +199,33 @@ TEST_CASE("lagrange6: quintics are reproduced exactly on uneven nodes") {
   CHECK(lagrange6(x, g, 0, 0.5) == doctest::Approx(std::pow(0.5, 6) - product).epsilon(1e-12));
 }
 
+// Lagrange6Newton: the same interpolant in Newton's form (the horizon finder's root-find)
+TEST_CASE("Lagrange6Newton: quintics exactly, and lagrange6's values to round-off") {
+  const std::vector<double> x{0.1, 0.25, 0.33, 0.6, 0.71, 1.0};
+  auto q5 = [](double t) {
+    return 0.3 - t + 2.0 * t * t - 0.5 * t * t * t + t * t * t * t - 0.7 * t * t * t * t * t;
+  };
+  std::vector<double> f;
+  for (double t : x)
+    f.push_back(q5(t));
+  const Lagrange6Newton newton(x, f, 0);
+  for (double t : {0.1, 0.17, 0.3, 0.5, 0.9, 1.0})
+    CHECK(std::abs(newton(t) - q5(t)) < 1e-13);
+  // at the nodes, the data
+  for (std::size_t k = 0; k < x.size(); ++k)
+    CHECK(newton(x[k]) == doctest::Approx(f[k]).epsilon(1e-14));
+  // on a grid's stencil (uniform x, as the finder's), a non-polynomial: lagrange6's values, from
+  // the 7th node of 12
+  std::vector<double> xu, g;
+  for (int k = 0; k < 12; ++k) {
+    xu.push_back(0.5 + 0.01 * k);
+    g.push_back(std::exp(-xu.back()) * std::sin(7.0 * xu.back()) - 0.2);
+  }
+  const Lagrange6Newton on_grid(xu, g, 6);
+  for (double t = xu[6]; t <= xu[11]; t += 0.0013)
+    CHECK(on_grid(t) == doctest::Approx(lagrange6(xu, g, 6, t)).epsilon(1e-13));
+}
+
 // interpolate_at_radius: between the points of a sinh grid, 6th order in the spacing.
 TEST_CASE("interpolate_at_radius converges at 6th order on the sinh grid") {
   auto f = [](double r) { return std::exp(-0.1 * r * r) * std::cos(0.8 * r) + 0.05 * r; };
