@@ -71,8 +71,13 @@ struct PairedRatio {
   double summed = 0.0, median = 0.0;
   long chunks = 0;
 };
-PairedRatio time_shift_cost(const Simulation& plain, const Simulation& shifted, double seconds) {
-  GbssnRhs rhs_plain(plain.rhs()), rhs_shifted(shifted.rhs()); // with the runs' horizon locators
+PairedRatio time_shift_cost(const Simulation& plain, const Simulation& shifted, double seconds,
+                            bool with_search) {
+  // with the runs' horizon locators (the search on every evaluation, as --ah-every substage),
+  // or without (the shift's loop and its pass alone: no h_AH, beta_H = 0 by the same loop)
+  GbssnRhs rhs_plain = with_search ? plain.rhs() : GbssnRhs(plain.grid(), plain.rhs().params());
+  GbssnRhs rhs_shifted =
+      with_search ? shifted.rhs() : GbssnRhs(shifted.grid(), shifted.rhs().params());
   State dudt(plain.state().size());
   using clock = std::chrono::steady_clock;
   const auto chunk = [&](GbssnRhs& rhs, const State& u) {
@@ -173,7 +178,8 @@ int main(int argc, char** argv) {
   // The horizon shift's cost per evaluation against plain (issue: at most 1.1 times), paired
   if (wanted("shift-cost")) {
     fmt::print("# shift-cost: horizon / plain time per evaluation, alternating chunks of 20\n");
-    fmt::print("# N chunks summed_ratio median_chunk_ratio\n");
+    fmt::print("# what N chunks summed_ratio median_chunk_ratio (loop: the shift's point loop "
+               "and its pass, no search; with-search: the search on every evaluation too)\n");
     for (int n : sizes) {
       const auto config = [n](bool horizon_shift) {
         Params p = trumpet(n, 100.0, "sinh", horizon_shift);
@@ -184,8 +190,11 @@ int main(int argc, char** argv) {
         return evolution_config(p);
       };
       const Simulation plain(config(false)), shifted(config(true));
-      const PairedRatio r = time_shift_cost(plain, shifted, seconds);
-      fmt::print("{} {} {:.4f} {:.4f}\n", n, r.chunks, r.summed, r.median);
+      for (const bool with_search : {false, true}) {
+        const PairedRatio r = time_shift_cost(plain, shifted, seconds, with_search);
+        fmt::print("{} {} {} {:.4f} {:.4f}\n", with_search ? "with-search" : "loop", n, r.chunks,
+                   r.summed, r.median);
+      }
     }
   }
   // Every finite-difference order (--fd-order), plain Gamma-driver, on the largest size: the
