@@ -97,15 +97,22 @@ std::optional<double> HorizonTracker::extrapolated_at(double t) const {
     return std::nullopt;
   if (!config_.horizon_search.in_window(t)) // no searches: the last radius is held
     return h.back()[1];
-  // the Lagrange polynomial through the last (up to four) radii, at t
-  double sum = 0.0;
-  for (std::size_t j = 0; j < h.size(); ++j) {
-    double w = 1.0;
-    for (std::size_t m = 0; m < h.size(); ++m)
-      if (m != j)
-        w *= (t - h[m][0]) / (h[j][0] - h[m][0]);
-    sum += w * h[j][1];
+  // The polynomial through the last (up to four) radii, at t: in Newton's form, its divided
+  // differences formed once per history (every box evaluates it at every RK substage, and the
+  // Lagrange form took 12 divisions a call, about 2% of a box run with the shift)
+  if (newton_nodes_ != h) {
+    newton_nodes_ = h;
+    newton_coefficients_.resize(h.size());
+    for (std::size_t j = 0; j < h.size(); ++j)
+      newton_coefficients_[j] = h[j][1];
+    for (std::size_t level = 1; level < h.size(); ++level)
+      for (std::size_t j = h.size() - 1; j >= level; --j)
+        newton_coefficients_[j] =
+            (newton_coefficients_[j] - newton_coefficients_[j - 1]) / (h[j][0] - h[j - level][0]);
   }
+  double sum = newton_coefficients_[h.size() - 1];
+  for (std::size_t j = h.size() - 1; j-- > 0;)
+    sum = newton_coefficients_[j] + (t - h[j][0]) * sum;
   return sum;
 }
 

@@ -97,6 +97,9 @@ private:
   std::optional<double> shared_;
   std::optional<double> shared_before_rhs_;
   std::vector<std::array<double, 2>> history_; ///< extrapolated: (t, h_AH) of the last searches
+  /// extrapolated_at's polynomial in Newton's form, and the history it was formed from
+  mutable std::vector<std::array<double, 2>> newton_nodes_;
+  mutable std::vector<double> newton_coefficients_;
 };
 
 } // namespace gbssn1d
