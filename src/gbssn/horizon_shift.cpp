@@ -1,6 +1,7 @@
 #include "gbssn/horizon_shift.hpp"
 
 #include "core/registry.hpp"
+#include "gbssn/full_shift.hpp"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // with its profiles f, normals s^r, the strength ramp and the deliberately inconsistent variants
 // of the study. The equations use it through GbssnRhs (gbssn/rhs.cpp); beta_H is written here,
 // for output (horizon_shift_on) and within beta_GD + beta_H for the right-hand side
-// (full_shift_on), by one loop.
+// (full_shift_on, declared in gbssn/full_shift.hpp), by one loop.
 #pragma once
 
 #include "gbssn/horizon_shift_params.hpp"
@@ -110,11 +110,6 @@ std::vector<double> profile_on(const Grid& grid, const HorizonShiftParams& param
 /// beta_H = f amplitude s^r (H3) on n points, f = profile_on(...), amplitude = A(t) (h_AH - h).
 void horizon_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
                       const double* a, double amplitude, double chi_smooth, double* beta_H);
-
-/// beta_full = beta_GD + beta_H on n points, beta_H as horizon_shift_on's, in one pass.
-void full_shift_on(ShiftNormal normal, std::size_t n, const double* f, const double* chi,
-                   const double* a, double amplitude, double chi_smooth, const double* beta_GD,
-                   double* beta_full);
 
 /// f(r) A (h_AH - h) s^r on every point (ghosts included; odd in r like beta), or zero
 /// everywhere without a horizon radius.

@@ -6,7 +6,7 @@
 
 #include "fd/stencils.hpp"
 #include "gbssn/equations.hpp"
-#include "gbssn/horizon_shift.hpp"
+#include "gbssn/full_shift.hpp"
 #include "gbssn/rhs.hpp"
 
 #include <algorithm>
