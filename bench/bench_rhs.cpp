@@ -1,15 +1,16 @@
 // Right-hand-side throughput: grid points x RHS evaluations per second, one core.
 //
-//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096] [--sections rhs,boxes,peak,...]
+//   build/gbssn1d_bench [--seconds S] [--N 256,1024,4096] [--sections rhs,shift-cost,peak,...]
 //                                                               (--help for the options)
 //
 // Evaluates the full grid RHS (derivatives, upwinding, equations, dissipation, boundary) on
 // 1+log-trumpet data on a sinh grid, for N = 256, 1024, 4096, and also one RK4 step's cost;
 // for the plain Gamma-driver and with the horizon-adjusting shift (rahA = 0.5, rah0 = 0.89:
-// the horizon search on every evaluation and the split shift included); each --fd-order, each
-// --upwind pair, each --formulation, and whole runs on nested boxes (--sections picks some;
-// --sections peak measures the core's ceilings, machine_ceilings.cpp; docs/roofline.md reads
-// them together).
+// the horizon search on every evaluation and the shift's pass included). --sections shift-cost
+// measures that cost paired, in alternating chunks, with and without the search. Also each
+// --fd-order, each --upwind pair, each --formulation, and whole runs on nested boxes
+// (--sections picks some; --sections peak measures the core's ceilings, machine_ceilings.cpp;
+// docs/roofline.md reads them together).
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
 #include "machine_ceilings.hpp"
