@@ -219,7 +219,8 @@ TEST_CASE("Z4c: the constraints and the expansion read K-hat + 2 Theta, the ADM 
 // sinh grid, perturbed data (a Theta profile, and every field changed smoothly so that no term
 // vanishes), the whole interior and a range. The two compile the same expressions; they may
 // differ by FMA contraction alone.
-TEST_CASE("diagnostic rows agree with the constraints and expansion computed point by point") {
+TEST_CASE("diagnostic rows agree with the constraints and expansion computed point by point, "
+          "and the finder's rows without the constraints with them") {
   for (int order : {2, 4, 6, 8})
     for (Formulation f : {Formulation::bssn, Formulation::z4c}) {
       const Grid g(RadialMap::sinh(40.0, 0.05, 160), 160, order);
@@ -245,7 +246,10 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
           u, g,
           {part.data(), part.data() + 30, part.data() + 60, part.data() + 90, part.data() + 120},
           k0, k0 + 30);
-      double worst = 0.0, worst_part = 0.0;
+      // the horizon finder's rows: R and Theta_+ alone, the constraints null
+      std::vector<double> finder(2 * n);
+      diagnostic_rows(u, g, {nullptr, nullptr, nullptr, finder.data(), finder.data() + n}, 0, n);
+      double worst = 0.0, worst_part = 0.0, worst_finder = 0.0;
       for (std::size_t k = 0; k < n; ++k) {
         const PointData p = adm_point_data(u, g, g.first_interior() + k);
         const Constraints c = constraints(p);
@@ -256,11 +260,15 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
           if (k >= k0 && k < k0 + 30)
             worst_part =
                 std::max(worst_part, std::abs(part[q * 30 + k - k0] - expected[q]) / scale);
+          if (q >= 3)
+            worst_finder =
+                std::max(worst_finder, std::abs(finder[(q - 3) * n + k] - expected[q]) / scale);
         }
       }
       INFO("order " << order << (f == Formulation::z4c ? " z4c" : " bssn"));
       CHECK(worst < 1e-12);
       CHECK(worst_part < 1e-12);
+      CHECK(worst_finder < 1e-12);
     }
   const Grid g(RadialMap::uniform(10.0), 40);
   std::vector<double> out(5);
@@ -268,4 +276,9 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
   const State u = initial_data(g, id, Formulation::bssn);
   CHECK_THROWS_AS(diagnostic_rows(u, g, {&out[0], &out[1], &out[2], &out[3], &out[4]}, 39, 41),
                   std::out_of_range);
+  // the constraints all three or none; R and Theta_+ always
+  CHECK_THROWS_AS(diagnostic_rows(u, g, {&out[0], nullptr, &out[2], &out[3], &out[4]}, 0, 1),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(diagnostic_rows(u, g, {nullptr, nullptr, nullptr, &out[3], nullptr}, 0, 1),
+                  std::invalid_argument);
 }
