@@ -13,6 +13,7 @@
 // docs/roofline.md reads them together).
 #include "config/params.hpp"
 #include "evolution/simulation.hpp"
+#include "horizon/apparent_horizon.hpp"
 #include "machine_ceilings.hpp"
 
 #include <CLI/CLI.hpp>
@@ -72,6 +73,31 @@ struct PairedRatio {
   double summed = 0.0, median = 0.0;
   long chunks = 0;
 };
+/// Alternates chunks of 20 calls of `plain` and of `other` for at least `seconds`.
+template <class Plain, class Other>
+PairedRatio paired_chunks(Plain&& plain, Other&& other, double seconds) {
+  using clock = std::chrono::steady_clock;
+  const auto chunk = [](auto&& call) {
+    const auto start = clock::now();
+    for (int k = 0; k < 20; ++k)
+      call();
+    return std::chrono::duration<double>(clock::now() - start).count();
+  };
+  double total_plain = 0.0, total_other = 0.0;
+  std::vector<double> ratios;
+  const auto start = clock::now();
+  do {
+    const double t_plain = chunk(plain);
+    const double t_other = chunk(other);
+    total_plain += t_plain;
+    total_other += t_other;
+    ratios.push_back(t_other / t_plain);
+  } while (std::chrono::duration<double>(clock::now() - start).count() < seconds);
+  std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
+                   ratios.end());
+  return {total_other / total_plain, ratios[ratios.size() / 2], static_cast<long>(ratios.size())};
+}
+
 PairedRatio time_shift_cost(const Simulation& plain, const Simulation& shifted, double seconds,
                             bool with_search) {
   // with the runs' horizon locators (the search on every evaluation, as --ah-every substage),
@@ -80,26 +106,28 @@ PairedRatio time_shift_cost(const Simulation& plain, const Simulation& shifted, 
   GbssnRhs rhs_shifted =
       with_search ? shifted.rhs() : GbssnRhs(shifted.grid(), shifted.rhs().params());
   State dudt(plain.state().size());
-  using clock = std::chrono::steady_clock;
-  const auto chunk = [&](GbssnRhs& rhs, const State& u) {
-    const auto start = clock::now();
-    for (int k = 0; k < 20; ++k)
-      rhs(u, dudt, 0.0);
-    return std::chrono::duration<double>(clock::now() - start).count();
-  };
-  double total_plain = 0.0, total_shifted = 0.0;
-  std::vector<double> ratios;
-  const auto start = clock::now();
-  do {
-    const double t_plain = chunk(rhs_plain, plain.state());
-    const double t_shifted = chunk(rhs_shifted, shifted.state());
-    total_plain += t_plain;
-    total_shifted += t_shifted;
-    ratios.push_back(t_shifted / t_plain);
-  } while (std::chrono::duration<double>(clock::now() - start).count() < seconds);
-  std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
-                   ratios.end());
-  return {total_shifted / total_plain, ratios[ratios.size() / 2], static_cast<long>(ratios.size())};
+  return paired_chunks([&] { rhs_plain(plain.state(), dudt, 0.0); },
+                       [&] { rhs_shifted(shifted.state(), dudt, 0.0); }, seconds);
+}
+
+/// The horizon search of one RK substage (find_horizon_near from the last radius, as the
+/// single grid's locator calls it) against one plain evaluation, paired.
+PairedRatio time_search_cost(const Simulation& plain, const Simulation& shifted,
+                             const HorizonFinderParams& finder, double seconds) {
+  GbssnRhs rhs_plain(plain.grid(), plain.rhs().params());
+  State dudt(plain.state().size());
+  const auto first = find_horizon_near(shifted.state(), shifted.grid(), finder, 0.89);
+  if (!first)
+    throw std::runtime_error("search-cost: no horizon on the benchmark's data");
+  const double seed = first->r;
+  double sink = 0.0;
+  const PairedRatio r = paired_chunks(
+      [&] { rhs_plain(plain.state(), dudt, 0.0); },
+      [&] { sink += find_horizon_near(shifted.state(), shifted.grid(), finder, seed)->r; },
+      seconds);
+  if (!(sink > 0.0))
+    throw std::runtime_error("search-cost: the search lost the horizon");
+  return r;
 }
 
 } // namespace
@@ -179,8 +207,10 @@ int main(int argc, char** argv) {
   // The horizon shift's cost per evaluation against plain (issue: at most 1.1 times), paired
   if (wanted("shift-cost")) {
     fmt::print("# shift-cost: horizon / plain time per evaluation, alternating chunks of 20\n");
-    fmt::print("# what N chunks summed_ratio median_chunk_ratio (loop: the shift's point loop "
-               "and its pass, no search; with-search: the search on every evaluation too)\n");
+    fmt::print(
+        "# what N chunks summed_ratio median_chunk_ratio (loop: the shift's point loop "
+        "and its pass, no search; with-search: the search on every evaluation too; search: one "
+        "substage's horizon search alone against a plain evaluation)\n");
     for (int n : sizes) {
       const auto config = [n](bool horizon_shift) {
         Params p = trumpet(n, 100.0, "sinh", horizon_shift);
@@ -190,12 +220,16 @@ int main(int argc, char** argv) {
         validate(p);
         return evolution_config(p);
       };
-      const Simulation plain(config(false)), shifted(config(true));
+      const EvolutionConfig shifted_config = config(true);
+      const Simulation plain(config(false)), shifted(shifted_config);
       for (const bool with_search : {false, true}) {
         const PairedRatio r = time_shift_cost(plain, shifted, seconds, with_search);
         fmt::print("{} {} {} {:.4f} {:.4f}\n", with_search ? "with-search" : "loop", n, r.chunks,
                    r.summed, r.median);
       }
+      const PairedRatio r =
+          time_search_cost(plain, shifted, shifted_config.horizon_search.finder, seconds);
+      fmt::print("search {} {} {:.4f} {:.4f}\n", n, r.chunks, r.summed, r.median);
     }
   }
   // Every finite-difference order (--fd-order), plain Gamma-driver, on the largest size: the
