@@ -71,7 +71,9 @@ std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, 
     return shared_;
   std::optional<MarginalSurface> found;
   try {
-    found = find_horizon_near(u, grid, config_.horizon_search.finder, seed);
+    // r alone: the areal radius is not interpolated (its 30 divisions were about a sixth of a
+    // substage's search)
+    found = find_horizon_near(u, grid, config_.horizon_search.finder, seed, 8, false);
   } catch (const HorizonFinderError& e) {
     throw HorizonFinderError(fmt::format("{} (RK substage at t = {:.6g})", e.what(), t));
   }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -28,12 +29,16 @@ std::optional<MarginalSurface> HorizonSearch::horizon() const {
 
 namespace {
 
-/// Scans the intervals [k-1, k] for k_lo < k <= k_hi (interior indices), from the outside in.
+/// Scans the intervals [k-1, k] for k_lo < k <= k_hi (interior indices), from the outside in,
+/// and hands each zero of Theta_+ found to `visit`, which returns true to stop the scan.
 /// Theta_+ and the areal radius on the window and its interpolation stencils come from one
 /// vectorised loop (diagnostic_rows), not a call per point: the search at every output time
-/// scans the whole grid, the one near its seed on every RK substage 29 points.
-HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& params,
-                   std::size_t k_lo, std::size_t k_hi, bool stop_at_first_outer) {
+/// scans the whole grid, the one near its seed on every RK substage 29 points. Without
+/// `areal_radius`, R_areal and mass are NaN (the RK substages' searches read r alone: the
+/// areal radius's interpolation took 30 divisions a search).
+template <class Visit>
+void scan(const State& u, const Grid& grid, const HorizonFinderParams& params, std::size_t k_lo,
+          std::size_t k_hi, bool areal_radius, Visit&& visit) {
   const std::size_t n = grid.n_interior();
   // the scanned points and the interpolation stencils around them: [fill_lo, fill_hi)
   const std::size_t fill_lo = k_lo >= stencil ? k_lo - stencil : 0;
@@ -50,7 +55,6 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
   // x from fill_lo on, the rows of Theta_+ and R, for the Lagrange interpolant
   const std::span<const double> x =
       std::span<const double>(grid.x()).subspan(grid.first_interior() + fill_lo);
-  HorizonSearch result;
   for (std::size_t k = k_hi; k > k_lo; --k) {
     const std::size_t lo = k - 1;
     if (grid.r()[grid.first_interior() + k] < params.r_min)
@@ -77,7 +81,8 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
       x_root = x_lo;
     } else {
       // tolerance in x equivalent to params.tolerance in r
-      const double tol_x = params.tolerance / grid.map().dr_dx(x_lo);
+      // (dr/dx from the grid's row of its inverse: the map's sinh took about 5% of a search)
+      const double tol_x = params.tolerance * grid.inv_dr_dx()[grid.first_interior() + lo];
       auto done = [tol_x](double a, double b) { return std::abs(b - a) <= tol_x; };
       std::uintmax_t iterations = 100;
       try {
@@ -96,14 +101,13 @@ HorizonSearch scan(const State& u, const Grid& grid, const HorizonFinderParams& 
     }
     MarginalSurface s;
     s.r = grid.map().r(x_root);
-    s.R_areal = lagrange6(x, R_rows, j0, x_root);
+    s.R_areal =
+        areal_radius ? lagrange6(x, R_rows, j0, x_root) : std::numeric_limits<double>::quiet_NaN();
     s.mass = 0.5 * s.R_areal;
     s.outer = f_lo < 0.0 && f_hi >= 0.0;
-    result.surfaces.push_back(s);
-    if (stop_at_first_outer && s.outer)
-      break;
+    if (visit(s))
+      return;
   }
-  return result;
 }
 
 /// The scan reaches the interval between the first two interior cells: Theta_+ there takes the
@@ -115,12 +119,17 @@ constexpr std::size_t k_first = 0;
 } // namespace
 
 HorizonSearch find_horizons(const State& u, const Grid& grid, const HorizonFinderParams& params) {
-  return scan(u, grid, params, k_first, grid.n_interior() - 1, false);
+  HorizonSearch result;
+  scan(u, grid, params, k_first, grid.n_interior() - 1, true, [&](const MarginalSurface& s) {
+    result.surfaces.push_back(s);
+    return false;
+  });
+  return result;
 }
 
 std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& grid,
                                                  const HorizonFinderParams& params, double r_seed,
-                                                 std::size_t window) {
+                                                 std::size_t window, bool areal_radius) {
   const std::size_t n = grid.n_interior();
   const auto& r = grid.r();
   const auto it =
@@ -129,12 +138,18 @@ std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& gri
   const std::size_t k_seed = static_cast<std::size_t>(it - r.begin()) - grid.first_interior();
   const std::size_t k_lo = std::max(k_first, k_seed > window ? k_seed - window : 0);
   const std::size_t k_hi = std::min(n - 1, k_seed + window);
-  if (k_hi > k_lo) {
-    const auto local = scan(u, grid, params, k_lo, k_hi, true).horizon();
-    if (local)
-      return local;
-  }
-  return scan(u, grid, params, k_first, n - 1, true).horizon();
+  // the outermost zero with Theta_+ < 0 inside (HorizonSearch::horizon), kept without a list
+  std::optional<MarginalSurface> found;
+  const auto first_outer = [&found](const MarginalSurface& s) {
+    if (s.outer)
+      found = s;
+    return s.outer;
+  };
+  if (k_hi > k_lo)
+    scan(u, grid, params, k_lo, k_hi, areal_radius, first_outer);
+  if (!found)
+    scan(u, grid, params, k_first, n - 1, areal_radius, first_outer);
+  return found;
 }
 
 } // namespace gbssn1d

@@ -48,9 +48,11 @@ public:
 HorizonSearch find_horizons(const State& u, const Grid& grid, const HorizonFinderParams& params);
 
 /// The apparent horizon only, searched first within `window` cells of `r_seed` (the previous
-/// location), then, if none is found there, over the whole grid.
+/// location), then, if none is found there, over the whole grid. Without `areal_radius` the
+/// surface's R_areal and mass are NaN, not computed (what the RK substages' searches, which
+/// read r alone, ask for).
 std::optional<MarginalSurface> find_horizon_near(const State& u, const Grid& grid,
                                                  const HorizonFinderParams& params, double r_seed,
-                                                 std::size_t window = 8);
+                                                 std::size_t window = 8, bool areal_radius = true);
 
 } // namespace gbssn1d

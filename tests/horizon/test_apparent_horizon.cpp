@@ -125,6 +125,14 @@ TEST_CASE("with several marginal surfaces the horizon is the outermost outer one
   REQUIRE(found.horizon().has_value());
   CHECK(found.horizon()->r == doctest::Approx(outer).epsilon(1e-7));
   CHECK(found.horizon()->mass == doctest::Approx(R(outer) / 2).epsilon(1e-7));
+  // the search near a seed, with and without the areal radius: from the middle surface (no
+  // outer one in its window) and from outside every window, the whole grid's outermost
+  for (const double seed : {middle, 8.0})
+    for (const bool areal_radius : {true, false}) {
+      const auto near = find_horizon_near(u, g, {}, seed, 8, areal_radius);
+      REQUIRE(near.has_value());
+      CHECK(near->r == found.horizon()->r);
+    }
 }
 
 // The finder scans down to the first interior cell: at N = 96 over 16 M (spacing M/6) the
@@ -154,4 +162,34 @@ TEST_CASE("the finder reaches the first cells: the wormhole's throat at N = 96 o
   const auto near = find_horizon_near(coarse.state(), coarse.grid(), {}, 0.5);
   REQUIRE(near.has_value());
   CHECK(near->r == r_coarse);
+}
+
+// The RK substages' search (find_horizon_near without the areal radius) must find the same
+// horizon as the full one, bit for bit, from a seed inside its window and from one outside it
+// (the whole-grid scan), on uniform and sinh grids; R_areal and mass are NaN, not stale values.
+TEST_CASE("the substage search without the areal radius finds the full search's r, bit for bit") {
+  for (const char* id : {"wormhole", "maximal-trumpet", "1log-trumpet"})
+    for (const char* grid : {"uniform", "sinh"}) {
+      Params p = grid_params(id, 240);
+      p.grid = GridChoice::parse(grid);
+      const Simulation sim = simulation(p);
+      const auto full = find_horizons(sim.state(), sim.grid(), {});
+      REQUIRE(full.horizon().has_value());
+      const double r_AH = full.horizon()->r;
+      for (const double seed : {r_AH, r_AH + 0.05, 8.0}) { // 8 M: outside the window
+        CAPTURE(id);
+        CAPTURE(grid);
+        CAPTURE(seed);
+        const auto with_R = find_horizon_near(sim.state(), sim.grid(), {}, seed);
+        const auto r_only = find_horizon_near(sim.state(), sim.grid(), {}, seed, 8, false);
+        REQUIRE(with_R.has_value());
+        REQUIRE(r_only.has_value());
+        CHECK(with_R->r == r_AH);
+        CHECK(r_only->r == r_AH);
+        CHECK(r_only->outer);
+        CHECK(with_R->R_areal == full.horizon()->R_areal);
+        CHECK(std::isnan(r_only->R_areal));
+        CHECK(std::isnan(r_only->mass));
+      }
+    }
 }
