@@ -30,15 +30,30 @@ inline double lagrange6(std::span<const double> x, std::span<const double> f, st
 /// evaluates it ten times or more. Agrees with lagrange6 to round-off (tests).
 class Lagrange6Newton {
 public:
-  Lagrange6Newton(std::span<const double> x, std::span<const double> f, std::size_t k0) {
-    for (std::size_t j = 0; j < 6; ++j) {
-      node_[j] = x[k0 + j];
-      c_[j] = f[k0 + j];
-    }
-    // c_[j] = f[x_0 ... x_j], in place
-    for (std::size_t level = 1; level < 6; ++level)
-      for (std::size_t j = 5; j >= level; --j)
-        c_[j] = (c_[j] - c_[j - 1]) / (node_[j] - node_[j - level]);
+  Lagrange6Newton(std::span<const double> x, std::span<const double> f, std::size_t k0)
+      : node_{x[k0], x[k0 + 1], x[k0 + 2], x[k0 + 3], x[k0 + 4], x[k0 + 5]} {
+    // c_j = f[x_0 ... x_j]: each level of divided differences from the one below, in named
+    // registers (as a loop over an array, GCC's vectorised form stalled on forwarding its
+    // stores: about a third of a substage's horizon search).
+    const auto& [x0, x1, x2, x3, x4, x5] = node_;
+    double c0 = f[k0], c1 = f[k0 + 1], c2 = f[k0 + 2], c3 = f[k0 + 3], c4 = f[k0 + 4],
+           c5 = f[k0 + 5];
+    c5 = (c5 - c4) / (x5 - x4); // level 1
+    c4 = (c4 - c3) / (x4 - x3);
+    c3 = (c3 - c2) / (x3 - x2);
+    c2 = (c2 - c1) / (x2 - x1);
+    c1 = (c1 - c0) / (x1 - x0);
+    c5 = (c5 - c4) / (x5 - x3); // level 2
+    c4 = (c4 - c3) / (x4 - x2);
+    c3 = (c3 - c2) / (x3 - x1);
+    c2 = (c2 - c1) / (x2 - x0);
+    c5 = (c5 - c4) / (x5 - x2); // level 3
+    c4 = (c4 - c3) / (x4 - x1);
+    c3 = (c3 - c2) / (x3 - x0);
+    c5 = (c5 - c4) / (x5 - x1); // level 4
+    c4 = (c4 - c3) / (x4 - x0);
+    c5 = (c5 - c4) / (x5 - x0); // level 5
+    c_ = {c0, c1, c2, c3, c4, c5};
   }
   double operator()(double xi) const {
     double sum = c_[5];
