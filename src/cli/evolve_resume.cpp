@@ -9,6 +9,7 @@
 #include "core/stop_signal.hpp"
 #include "core/text.hpp"
 #include "evolution/checkpoint.hpp"
+#include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 
@@ -104,6 +105,9 @@ int evolve(Params p, bool print_config) {
 
   Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
+  for (const auto& w : empty_norm_windows(sim.composite().grid(), sim.composite_profiles().R_areal,
+                                          sim.config().norms))
+    say("gbssn1d: warning: {}: {}\n", w.flags, w.what);
   const std::filesystem::path dir(p.out);
   // the content of --rah-hAH-file as it was read (before the folder is made)
   const std::optional<std::string> hAH_content = prescribed_horizon_content(p);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gbssn1d {
 
@@ -35,7 +36,7 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
     sum += values[k] * values[k] * grid.dr()[i];
     width += grid.dr()[i];
   }
-  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+  return width > 0.0 ? std::sqrt(sum / width) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
@@ -60,7 +61,7 @@ double l2_norm_areal(std::span<const double> values, std::span<const double> R_a
     sum += values[k] * values[k] * dR;
     width += dR;
   }
-  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+  return width > 0.0 ? std::sqrt(sum / width) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double l2_norm_interior(std::span<const double> values, std::span<const double> R_areal,
@@ -71,7 +72,7 @@ double l2_norm_interior(std::span<const double> values, std::span<const double> 
     sum += values[k] * values[k] * dr;
     width += dr;
   }
-  return width > 0.0 ? std::sqrt(sum / width) : 0.0;
+  return width > 0.0 ? std::sqrt(sum / width) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double central_value(std::span<const double> f, const Grid& grid) {

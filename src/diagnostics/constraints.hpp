@@ -19,21 +19,21 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid);
 
 /// Discrete L2 norm over the interior points with rmin <= r <= rmax, weighted by the cell
 /// widths: sqrt( sum f_i^2 dr_i / sum dr_i ). `values` holds one value per interior point.
-/// Returns 0 when no point lies in the range.
+/// NaN when no point lies in the range (no value, not a vanishing one).
 double l2_norm(std::span<const double> values, const Grid& grid, double rmin, double rmax);
 
 /// L2 norm over the interior points of the outer sheet (outside the outermost minimum of the
 /// areal radius: a wormhole's throat) whose areal radius lies in [Rmin, Rmax], weighted by the
 /// areal width |dR| of each cell: sqrt( sum f_i^2 |dR_i| / sum |dR_i| ). A window in R is the same
-/// place in every gauge, so norms of runs with different shifts compare. Returns 0 when no point
-/// lies in the window.
+/// place in every gauge, so norms of runs with different shifts compare. NaN when no point lies
+/// in the window.
 double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
                      double Rmax);
 
 /// L2 norm near the puncture: over the points from the innermost one outwards while the areal
 /// radius stays <= Rmax (inside the horizon when Rmax < 2M), weighted by the cell widths dr
-/// (near a trumpet's puncture R hardly changes, so |dR| would hide those cells). Returns 0
-/// when the innermost point already has R > Rmax (a wormhole's other sheet).
+/// (near a trumpet's puncture R hardly changes, so |dR| would hide those cells). NaN when the
+/// innermost point already has R > Rmax (a wormhole's other sheet).
 double l2_norm_interior(std::span<const double> values, std::span<const double> R_areal,
                         const Grid& grid, double Rmax);
 

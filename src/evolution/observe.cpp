@@ -84,6 +84,27 @@ double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProf
   return interpolate_at_radius(g, f, r);
 }
 
+std::vector<EmptyNormWindow> empty_norm_windows(const Grid& g, std::span<const double> R_areal,
+                                                const NormWindows& w) {
+  std::vector<EmptyNormWindow> empty;
+  const std::vector<double> ones(g.n_interior(), 1.0);
+  if (std::isnan(l2_norm(ones, g, w.rmin, w.rmax)))
+    empty.push_back({"--norm-rmin/--norm-rmax",
+                     fmt::format("the coordinate window {} <= r <= {} holds no grid point, so "
+                                 "that H_L2_ext, M_L2_ext, G_L2_ext and dtalpha_max_ext are NaN",
+                                 w.rmin, w.rmax)});
+  if (std::isnan(l2_norm_areal(ones, R_areal, w.Rmin, w.Rmax))) {
+    const auto [lo, hi] = std::minmax_element(R_areal.begin(), R_areal.end());
+    empty.push_back(
+        {"--norm-Rmin/--norm-Rmax",
+         fmt::format("the areal window {} <= R <= {} holds no point of the initial data (whose "
+                     "areal radius spans {:.4g} ... {:.4g} on the grid), so that H_L2_R and M_L2_R "
+                     "are NaN",
+                     w.Rmin, w.Rmax, R_areal.empty() ? 0.0 : *lo, R_areal.empty() ? 0.0 : *hi)});
+  }
+  return empty;
+}
+
 HorizonSearch find_all_horizons(const mesh::MeshLayout& layout, const std::vector<State>& levels,
                                 const HorizonFinderParams& finder, double t) {
   auto with_time = [t](auto search) {
@@ -155,10 +176,13 @@ SeriesRow SeriesDiagnostics::row(const std::vector<State>& levels, double t,
   row.r_ah = horizon ? horizon->r : std::numeric_limits<double>::quiet_NaN();
   row.M_ah = horizon ? horizon->mass : std::numeric_limits<double>::quiet_NaN();
   row.M_ah_err = row.M_ah - config_.initial_data.M;
-  row.dtalpha_max_ext = 0.0;
+  // (NaN, as the norms, when the window holds no point: no value, not a vanishing one)
+  row.dtalpha_max_ext = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
     if (g.r()[i] >= config_.norms.rmin && g.r()[i] <= config_.norms.rmax)
-      row.dtalpha_max_ext = std::max(row.dtalpha_max_ext, std::abs(dt_alpha[i]));
+      row.dtalpha_max_ext = std::isnan(row.dtalpha_max_ext)
+                                ? std::abs(dt_alpha[i])
+                                : std::max(row.dtalpha_max_ext, std::abs(dt_alpha[i]));
   return row;
 }
 

@@ -13,6 +13,7 @@
 #include "mesh/composite.hpp"
 
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,19 @@ public:
 /// chi <= 0, or an alpha outside [alpha_min, alpha_max] (on the interior).
 void check_physical_range(const mesh::MeshLayout& layout, const std::vector<State>& levels,
                           double t, double alpha_min, double alpha_max);
+
+/// A norm window (NormWindows) that holds no point, so that its norms are NaN: the flags that
+/// set it, and what is empty (with the columns it leaves without a value).
+struct EmptyNormWindow {
+  std::string flags, what;
+};
+/// The windows of `w` empty on the composite grid `g` (the coordinate window) and on the outer
+/// sheet of its areal radius R_areal (the areal window; as l2_norm_areal's rule), for the run's
+/// start: a window empty there is empty for good (coordinate), or until the gauge moves the
+/// grid's R across it (areal). The interior window is not checked: it is empty on a wormhole's
+/// other sheet until the puncture forms.
+std::vector<EmptyNormWindow> empty_norm_windows(const Grid& g, std::span<const double> R_areal,
+                                                const NormWindows& w);
 
 /// H, M_r, G_r, R, Theta_+ on every level's interior.
 std::vector<DerivedProfiles> level_profiles(const mesh::MeshLayout& layout,

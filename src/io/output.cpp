@@ -191,8 +191,8 @@ const char* const series_legend =
     "norm-rmin <= r <= norm-rmax (the same rule before and after a horizon forms), weighted by "
     "cell width; *_L2_R over the areal-radius window norm-Rmin M <= R <= norm-Rmax M (the same "
     "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
-    "R = norm-Rint M, weighted by cell width; r_ah, M_ah: apparent horizon (NaN if none), "
-    "M_ah_err = M_ah - M\n";
+    "R = norm-Rint M, weighted by cell width; a norm (and dtalpha_max_ext) is NaN while its "
+    "window holds no point; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - M\n";
 const char* const z4c_legend =
     "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
     "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "

@@ -11,6 +11,7 @@
 #include "config/folder_lock.hpp"
 #include "config/params.hpp"
 #include "core/registry.hpp"
+#include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 #include "study/parallel.hpp"
@@ -187,6 +188,16 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   if (s.radii.empty())
     throw ParamError("--norm-rmin", fmt::format("{}", s.members.front().norm_rmin),
                      "the exterior region holds no grid point of the coarsest member");
+  { // the areal window, on the coarsest member's initial data: H_L2_R and M_L2_R are judged
+    const Simulation coarsest(evolution_config(s.members.front()));
+    for (const auto& w :
+         empty_norm_windows(coarsest.composite().grid(), coarsest.composite_profiles().R_areal,
+                            coarsest.config().norms))
+      if (w.flags.starts_with("--norm-Rmin"))
+        throw ParamError(
+            "--norm-Rmin", fmt::format("{}", s.members.front().norm_Rmin),
+            fmt::format("{} for the coarsest member, and converge judges them", w.what));
+  }
   for (const auto& name : options.fields)
     s.fields.push_back(*var_from_name(name));
   // the layout of the saved series rows is part of what the samples file must match
@@ -317,7 +328,9 @@ int run_converge(const Params& base, const ConvergeOptions& options,
     say("gbssn1d converge: N = {} completed at t = {}, but {}; norms, orders and the verdict in "
         "{}/convergence.dat\n",
         fmt::join(options.N, ", "), t_common, judged, options.out);
-    return v.kind == ConvergenceClass::pre_asymptotic ? 5 : 4;
+    return v.kind == ConvergenceClass::pre_asymptotic ? 5
+           : v.kind == ConvergenceClass::unjudged     ? 6
+                                                      : 4;
   }
   say("gbssn1d converge: N = {} completed at t = {}; {}; norms, orders and the verdict in "
       "{}/convergence.dat\n",

@@ -152,6 +152,14 @@ private:
     std::size_t more = 0;
     for (const auto& i : verdict_.items)
       more += i.kind == kind ? 1 : 0;
+    if (kind == ConvergenceClass::unjudged)
+      return fmt::format(
+          "{}: {} at {} has no value at any common time (a norm whose window holds no point of "
+          "the coarser member: NaN in its timeseries.dat){}",
+          class_words(kind), failure.quantity, resolutions_text(failure.N),
+          more > 1 ? fmt::format(" (and {} more quantity/resolution sets; see the order lines)",
+                                 more - 1)
+                   : "");
     const std::string why =
         kind == ConvergenceClass::pre_asymptotic ? ""
         : failure.p_rms < kFallingOrder

@@ -41,6 +41,8 @@ std::string class_words(ConvergenceClass c) {
     return "converges";
   case ConvergenceClass::to_floor:
     return "converges until the round-off floor";
+  case ConvergenceClass::unjudged:
+    return "not judged";
   case ConvergenceClass::pre_asymptotic:
     return "pre-asymptotic";
   case ConvergenceClass::diverges:
@@ -61,6 +63,7 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     std::vector<std::size_t> times; // the judged times
     for (std::size_t t = 0; t < s.coarse.size(); ++t) {
       const double c = s.coarse[t], f = s.fine[t];
+      j.valued += std::isfinite(c) ? 1 : 0;
       // no value, not to be judged, or no error at all (G^r of the initial data): neither
       // judged nor at the floor
       if (!std::isfinite(c) || !std::isfinite(s.floor[t]) || (c == 0.0 && f == 0.0))
@@ -97,7 +100,10 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     if (j.judged == 0) {
       j.p_rms = std::numeric_limits<double>::quiet_NaN();
       j.worst = std::numeric_limits<double>::quiet_NaN();
-      j.kind = j.at_floor > 0 ? ConvergenceClass::to_floor : ConvergenceClass::converges;
+      // no value at any time (not one at the floor or both zero): not judged, not "converges"
+      j.kind = j.at_floor > 0  ? ConvergenceClass::to_floor
+               : j.valued == 0 ? ConvergenceClass::unjudged
+                               : ConvergenceClass::converges;
     } else {
       j.p_rms = rms_order(0, j.judged);
       // consecutive windows of (about) a tenth of the judged times each
@@ -141,7 +147,8 @@ bool Verdict::converges() const {
 
 const OrderJudgement* Verdict::failure() const {
   const ConvergenceClass k = kind();
-  if (k != ConvergenceClass::pre_asymptotic && k != ConvergenceClass::diverges)
+  if (k != ConvergenceClass::unjudged && k != ConvergenceClass::pre_asymptotic
+      && k != ConvergenceClass::diverges)
     return nullptr;
   for (const auto& j : items)
     if (j.kind == k)

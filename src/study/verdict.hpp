@@ -64,11 +64,13 @@ struct OrderSeries {
   bool windowed = true; ///< norms: also judge the RMS over each tenth of the times
 };
 
-/// The classes of a verdict, best first (a study's is the worst of its items').
-enum class ConvergenceClass { converges, to_floor, pre_asymptotic, diverges };
+/// The classes of a verdict, best first (a study's is the worst of its items'). `unjudged`: a
+/// quantity without a value at any time (a norm whose window held no point): nothing can be
+/// said of it, and the study does not count as converging.
+enum class ConvergenceClass { converges, to_floor, unjudged, pre_asymptotic, diverges };
 
 /// The class's words, the verdict's first: "converges", "converges until the round-off floor",
-/// "pre-asymptotic", "does not converge".
+/// "not judged", "pre-asymptotic", "does not converge".
 std::string class_words(ConvergenceClass c);
 
 /// What the rule found for one OrderSeries.
@@ -77,6 +79,7 @@ struct OrderJudgement {
   std::vector<double> N;
   std::size_t judged = 0;        ///< times above the floor
   std::size_t at_floor = 0;      ///< times with the finer value at the floor (not judged)
+  std::size_t valued = 0;        ///< times with a (finite) coarser value
   std::size_t first_floor = 0;   ///< time index of the first of those
   double floor_value = 0.0;      ///< the floor (absolute) there
   std::size_t below = 0;         ///< of the judged times, those with order below the threshold
@@ -109,8 +112,8 @@ struct Verdict {
   ConvergenceClass kind() const;
   /// Classes 1 and 2.
   bool converges() const;
-  /// The first item (in the order given) of the study's class when that is pre-asymptotic or
-  /// does not converge: the item to name; nullptr when the study converges.
+  /// The first item (in the order given) of the study's class when that is not judged,
+  /// pre-asymptotic or does not converge: the item to name; nullptr when the study converges.
   const OrderJudgement* failure() const;
   /// The converging item with the lowest RMS order, or nullptr if none was judged.
   const OrderJudgement* weakest() const;

@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -349,4 +350,35 @@ TEST_CASE("help pages say what a newcomer needs: evolve's few common flags first
   CHECK(sweep.status == 0);
   CHECK(sweep.err.find("summary: " + (dir / "summary.dat").string()) != std::string::npos);
   fs::remove_all(dir);
+}
+
+// A norm window that holds no point: the run warns, naming the flags, and writes NaN in the
+// window's columns (no value), never 0 (a vanishing constraint); converge refuses an empty areal
+// window before anything runs (its verdict judges H_L2_R and M_L2_R).
+TEST_CASE("empty norm windows: evolve warns and writes NaN, converge refuses") {
+  const std::filesystem::path out = scratch("empty_windows");
+  const Result r = run("evolve --id 1log-trumpet --N 100 --tmax 1 --norm-rmin 5 --norm-rmax "
+                       "5.0001 --norm-Rmin 5000 --norm-Rmax 6000 --out "
+                       + out.string());
+  INFO("stderr: " << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("warning: --norm-rmin/--norm-rmax") != std::string::npos);
+  CHECK(r.err.find("warning: --norm-Rmin/--norm-Rmax") != std::string::npos);
+  const auto series = gbssn1d::testing::read_table((out / "timeseries.dat").string());
+  REQUIRE(series.rows.size() == 5); // t = 0, 0.25, ... 1
+  for (std::size_t row = 0; row < series.rows.size(); ++row) {
+    for (const char* empty :
+         {"H_L2_ext", "M_L2_ext", "G_L2_ext", "dtalpha_max_ext", "H_L2_R", "M_L2_R"}) {
+      CAPTURE(empty);
+      CHECK(std::isnan(series.at(row, empty)));
+    }
+    CHECK(series.at(row, "H_L2") > 0.0); // the other norms have their values
+  }
+  const std::filesystem::path study = scratch("empty_areal_converge");
+  const Result c = run("converge --N 50,60,70 --grid uniform --rmax 40 --tmax 0 --norm-Rmin 500 "
+                       "--norm-Rmax 600 --out "
+                       + study.string());
+  CHECK(c.status == 2);
+  CHECK(c.err.find("--norm-Rmin") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(study));
 }

@@ -34,7 +34,7 @@ TEST_CASE("central_value is exact for even quadratics, on uniform and sinh grids
   }
 }
 
-TEST_CASE("l2_norm: cell-width weights, the range selects points, empty range gives 0") {
+TEST_CASE("l2_norm: cell-width weights, the range selects points, an empty range gives NaN") {
   const Grid g(RadialMap::sinh(50.0, 0.05, 200), 200);
   std::vector<double> ones(g.n_interior(), 2.0);
   CHECK(l2_norm(ones, g, 0.0, 1e9) == doctest::Approx(2.0).epsilon(1e-14));
@@ -44,7 +44,24 @@ TEST_CASE("l2_norm: cell-width weights, the range selects points, empty range gi
     r[k] = g.r()[g.first_interior() + k];
   const double expected = std::sqrt((std::pow(10.0, 3) - 1.0) / (3.0 * 9.0));
   CHECK(l2_norm(r, g, 1.0, 10.0) == doctest::Approx(expected).epsilon(2e-3));
-  CHECK(l2_norm(r, g, 60.0, 70.0) == 0.0);
+  // no point in the range: no value (NaN), never a vanishing norm
+  CHECK(std::isnan(l2_norm(r, g, 60.0, 70.0)));
+  const double r0 = g.r()[g.first_interior() + 10], r1 = g.r()[g.first_interior() + 11];
+  CHECK(std::isnan(l2_norm(r, g, 0.4 * r0 + 0.6 * r1, 0.3 * r0 + 0.7 * r1))); // between two cells
+  CHECK(l2_norm(r, g, r0, r0) == r0);                                         // one point
+}
+
+TEST_CASE("the areal and interior norms of an empty window are NaN, not 0") {
+  const Grid g(RadialMap::uniform(10.0), 100);
+  std::vector<double> R(g.n_interior()), f(g.n_interior(), 3.0);
+  for (std::size_t k = 0; k < R.size(); ++k)
+    R[k] = 1.5 + g.r()[g.first_interior() + k]; // a trumpet-like sheet: R from 1.55 to 11.45
+  CHECK(l2_norm_areal(f, R, 2.0, 5.0) == doctest::Approx(3.0));
+  CHECK(std::isnan(l2_norm_areal(f, R, 50.0, 60.0)));   // beyond the grid
+  CHECK(std::isnan(l2_norm_areal(f, R, 0.5, 1.0)));     // inside the innermost point
+  CHECK(std::isnan(l2_norm_areal(f, R, 2.001, 2.002))); // between two points
+  CHECK(l2_norm_interior(f, R, g, 1.8) == doctest::Approx(3.0));
+  CHECK(std::isnan(l2_norm_interior(f, R, g, 1.0))); // the innermost point already has R > 1
 }
 
 TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {

@@ -203,12 +203,17 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
       CHECK(std::string(e.what()).find("non-finite") != std::string::npos);
     }
   }
-  // Every row written is complete and finite; the column header is there.
+  // Every row written is complete and finite (but H_L2_int, NaN while the interior window holds
+  // no point: the wormhole's innermost points lie on its other sheet); the column header is
+  // there.
   const auto series = gbssn1d::testing::read_table((dir / "timeseries.dat").string());
   CHECK(series.columns == series_columns(Formulation::bssn));
   for (const auto& row : series.rows)
-    for (double v : row)
-      CHECK(std::isfinite(v));
+    for (std::size_t c = 0; c < row.size(); ++c)
+      if (series.columns[c] != "H_L2_int") {
+        CAPTURE(series.columns[c]);
+        CHECK(std::isfinite(row[c]));
+      }
   const auto profiles = gbssn1d::testing::read_table((dir / "profiles.dat").string());
   CHECK(profiles.columns == profile_columns(Formulation::bssn));
   CHECK(profiles.rows.size() == 100);
@@ -374,8 +379,14 @@ TEST_CASE("the output cadence changes neither the time step nor the evolution") 
   REQUIRE(series_a.rows.size() == 13);
   REQUIRE(series_b.rows.size() == 11);
   CHECK(series_b.rows[4][0] == doctest::Approx(1.2));
+  // (NaN in the same places: H_L2_int while the wormhole's interior window holds no point)
+  const auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](double x, double y) {
+      return x == y || (std::isnan(x) && std::isnan(y));
+    });
+  };
   for (auto [ia, ib] : {std::pair(0, 0), std::pair(6, 5), std::pair(12, 10)})
-    CHECK(series_a.rows[ia] == series_b.rows[ib]);
+    CHECK(same(series_a.rows[ia], series_b.rows[ib]));
 }
 
 // --advective-shift as the evolution runs it (flag -> typed configuration -> the simulation's

@@ -253,10 +253,42 @@ TEST_CASE("verdict: exact zeros are neither judged nor at the floor, a non-finit
   CHECK(v.items[0].judged == 40);
   CHECK(v.items[0].at_floor == 0);
   CHECK(v.kind() == ConvergenceClass::diverges);
-  // no time at all: nothing judged, nothing at the floor
+  // no time at all: nothing judged, nothing at the floor, nothing valued: not judged
   const Verdict none = judge_convergence({OrderSeries{"H_L2_ext", {100, 200}, {}, {}, {}}}, 4.0);
-  CHECK(none.kind() == ConvergenceClass::converges);
+  CHECK(none.kind() == ConvergenceClass::unjudged);
+  CHECK_FALSE(none.converges());
   CHECK(none.weakest() == nullptr);
+}
+
+TEST_CASE("verdict: a norm without a value at any time (an empty window) is not judged, never "
+          "'converges'") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  OrderSeries empty = ratio_pair(1.0 / 16);
+  empty.quantity = "H_L2_R";
+  for (double& c : empty.coarse)
+    c = nan;
+  for (double& f : empty.fine)
+    f = nan;
+  const Verdict v = judge_convergence({ratio_pair(1.0 / 16), empty}, 4.0);
+  CHECK(v.items[0].kind == ConvergenceClass::converges);
+  CHECK(v.items[1].kind == ConvergenceClass::unjudged);
+  CHECK(v.items[1].judged == 0);
+  CHECK(v.items[1].valued == 0);
+  CHECK(v.kind() == ConvergenceClass::unjudged);
+  CHECK_FALSE(v.converges());
+  REQUIRE(v.failure() != nullptr);
+  CHECK(v.failure()->quantity == "H_L2_R");
+  CHECK(class_words(v.kind()) == "not judged");
+  // the coarser member empty, the finer not (a window between the coarse cells): not judged
+  OrderSeries coarse_empty = ratio_pair(1.0 / 16);
+  for (double& c : coarse_empty.coarse)
+    c = nan;
+  CHECK(judge_convergence({coarse_empty}, 4.0).kind() == ConvergenceClass::unjudged);
+  // one valued time is enough to judge
+  coarse_empty.coarse[7] = ratio_pair(1.0 / 16).coarse[7];
+  CHECK(judge_convergence({coarse_empty}, 4.0).kind() == ConvergenceClass::converges);
+  // a study that does not converge says so, whatever is not judged besides
+  CHECK(judge_convergence({ratio_pair(1.0), empty}, 4.0).kind() == ConvergenceClass::diverges);
 }
 
 TEST_CASE("the round-off floor: eps (M/dr_min)^2, as measured on the stationary trumpet") {
