@@ -123,6 +123,15 @@ int evolve(Params p, bool print_config) {
     throw ParamError("--out", p.out,
                      "exists and is not empty: another process wrote it meanwhile (use --force "
                      "to overwrite)");
+  if (p.force) {
+    // the earlier run's files this run may not write again go (unlinked: a hard-linked backup
+    // keeps them): its checkpoint would otherwise offer `resume` a run this folder no longer
+    // holds, its copy of --rah-hAH-file a curve this run does not follow
+    std::error_code ignored;
+    std::filesystem::remove(dir / "checkpoint.bin", ignored);
+    if (!hAH_content)
+      std::filesystem::remove(dir / prescribed_horizon_copy, ignored);
+  }
   const std::string config = config_text(p);
   write_file_atomically(dir / "config.toml", header_text("") + config);
   if (hAH_content)

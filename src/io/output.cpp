@@ -48,17 +48,29 @@ std::vector<std::string> horizon_columns() {
 
 namespace {
 
-/// `path` opened for writing (created, or emptied) without following a symbolic link: a link
-/// there is refused, naming it, rather than written through.
+/// `path` opened for writing as a new file, without following a link: a symbolic link there is
+/// refused, naming it, rather than written through; a file already there is unlinked first,
+/// not emptied, so that its other names (hard links: a backup made by `cp -al` or `rsync
+/// --link-dest`) keep their content (--force, a rerun, a resume's temporary files).
 std::FILE* open_for_writing(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  const auto symlink_refused = [&] {
+    return OutputError(fmt::format(
+        "cannot write {}: it is a symbolic link (gbssn1d writes no file through a link)",
+        path.string()));
+  };
+  struct ::stat there {};
+  if (::lstat(path.c_str(), &there) == 0) {
+    if (S_ISLNK(there.st_mode))
+      throw symlink_refused();
+    if (S_ISREG(there.st_mode) && ::unlink(path.c_str()) != 0 && errno != ENOENT)
+      throw OutputError(fmt::format("cannot replace {}: {}", path.string(), std::strerror(errno)));
+  }
+  // O_EXCL: a new file (a link made at the path meanwhile is refused, not followed)
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd < 0)
-    throw OutputError(
-        errno == ELOOP
-            ? fmt::format("cannot write {}: it is a symbolic link (gbssn1d writes "
-                          "no file through a link)",
-                          path.string())
-            : fmt::format("cannot open {} for writing: {}", path.string(), std::strerror(errno)));
+    throw errno == ELOOP ? symlink_refused()
+                         : OutputError(fmt::format("cannot open {} for writing: {}", path.string(),
+                                                   std::strerror(errno)));
   std::FILE* f = ::fdopen(fd, "w");
   if (!f) {
     const int err = errno;

@@ -400,3 +400,39 @@ TEST_CASE("sweep: a task line's --member builds its own member, not the whole sw
   CHECK(fs::exists(dir / "rahA=0.001_rah0=0.51" / "timeseries.dat"));
   fs::remove_all(dir);
 }
+
+// --force replaces a run's files with new ones; it never writes into the old ones, so that their
+// other names (a backup made with `cp -al` or `rsync --link-dest`) keep the earlier run; and the
+// earlier run's checkpoint goes, so that `resume` does not offer a run the folder no longer holds.
+TEST_CASE("--force leaves hard-linked copies of the earlier run as they were, and drops its "
+          "checkpoint") {
+  const fs::path out = scratch("forced_hardlinks"), backup = scratch("forced_hardlinks_backup");
+  REQUIRE(
+      run("evolve --id 1log-trumpet --N 80 --tmax 1 --checkpoint-every 0.5 --out " + out.string())
+          .status
+      == 0);
+  REQUIRE(fs::exists(out / "checkpoint.bin"));
+  fs::create_directories(backup);
+  std::map<std::string, std::string> before;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    fs::create_hard_link(entry.path(), backup / name);
+    before[name] = slurp(entry.path());
+  }
+  const Result r =
+      run("evolve --id 1log-trumpet --N 80 --tmax 0.5 --rahA 0.5 --force --out " + out.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  for (const auto& [name, text] : before) {
+    CAPTURE(name);
+    CHECK(slurp(backup / name) == text); // the backup: the earlier run, byte for byte
+  }
+  CHECK(slurp(out / "timeseries.dat") != before["timeseries.dat"]);
+  CHECK(slurp(out / "config.toml").find("rahA = 0.5") != std::string::npos);
+  CHECK_FALSE(fs::exists(out / "checkpoint.bin")); // the earlier run's checkpoint is gone
+  const Result resumed = run("resume " + out.string());
+  CHECK(resumed.status == 2);
+  CHECK(resumed.err.find("has no checkpoint.bin") != std::string::npos);
+  fs::remove_all(out);
+  fs::remove_all(backup);
+}
