@@ -166,6 +166,10 @@ void validate_evolution_numbers(const Params& p) {
 /// The horizon-adjusting shift and its horizon searches.
 void validate_horizon_shift(const Params& p) {
   require_finite("--rahA", p.rahA);
+  if (p.rahA < 0.0)
+    throw ParamError("--rahA", num(p.rahA),
+                     "must be >= 0: beta_H = f A (h_AH - h) s^r with A < 0 drives the horizon "
+                     "away from --rah0, not towards it");
   require_positive("--rah0", p.rah0);
   require_positive("--rah-width", p.rah_width);
   if (p.rah_rcut) {

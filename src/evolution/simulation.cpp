@@ -94,6 +94,32 @@ std::vector<double> Simulation::horizon_shift() {
   return composite_.gather(arrays);
 }
 
+std::optional<Simulation::ShiftCourant> Simulation::horizon_shift_courant() const {
+  const HorizonShiftParams& hs = config_.rhs.horizon_shift;
+  if (!hs.active())
+    return std::nullopt;
+  std::optional<double> h_AH;
+  if (config_.horizon_search.prescribed)
+    h_AH = config_.horizon_search.prescribed(t_);
+  else if (const auto found = horizons().horizon())
+    h_AH = found->r;
+  if (!h_AH)
+    return std::nullopt;
+  ShiftCourant worst{0.0, 0.0, 0.0, *h_AH};
+  std::vector<double> beta_H;
+  for (std::size_t l = 0; l < layout_.levels(); ++l) {
+    const Grid& g = layout_.grid(l);
+    horizon_shift_profile(levels_u_[l], g, hs, h_AH, beta_H, t_);
+    const double dt = config_.stepping.cfl * g.min_spacing();
+    for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+      const double number = std::abs(beta_H[i]) * dt / g.dr()[i];
+      if (!(number <= worst.number)) // (a NaN too)
+        worst = {number, g.r()[i], beta_H[i], *h_AH};
+    }
+  }
+  return worst;
+}
+
 std::vector<DerivedProfiles> Simulation::level_profiles() const {
   return gbssn1d::level_profiles(layout_, levels_u_);
 }

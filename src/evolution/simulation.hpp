@@ -121,6 +121,14 @@ public:
   std::optional<double> horizon_radius();
   /// beta_H on every point for the current state.
   std::vector<double> horizon_shift();
+  /// The horizon-adjusting shift's largest Courant number |beta_H| dt_l / dr at this time, over
+  /// every level's interior (dt_l = cfl x the level's smallest spacing, the longest step a level
+  /// takes), with h_AH the horizon of this state (or the prescribed h_AH(t)); where it lies
+  /// and beta_H there. Nothing without the shift or a horizon.
+  struct ShiftCourant {
+    double number, r, beta_H, h_AH;
+  };
+  std::optional<ShiftCourant> horizon_shift_courant() const;
   /// Every marginal surface of the current state (each from the finest level covering it).
   HorizonSearch horizons() const;
   /// The level the horizon shift's h_AH is searched on: the finest on which the horizon (or,

@@ -382,3 +382,21 @@ TEST_CASE("empty norm windows: evolve warns and writes NaN, converge refuses") {
   CHECK(c.err.find("--norm-Rmin") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(study));
 }
+
+// A horizon-adjusting shift faster than the grid's Courant limit at the start is warned about,
+// naming --rahA, not refused: such runs can go through (--rahA 200 here reaches 1000 M).
+TEST_CASE("--rahA far above the Courant limit at the start is warned about, naming --rahA") {
+  const std::filesystem::path out = scratch("courant_warning");
+  const Result fast =
+      run("evolve --id 1log-trumpet --N 200 --rahA 500 --rah0 1.2 --tmax 0 --out " + out.string());
+  INFO(fast.err);
+  CHECK(fast.status == 0);
+  CHECK(fast.err.find("warning: --rahA 500") != std::string::npos);
+  CHECK(fast.err.find("Courant number") != std::string::npos);
+  std::filesystem::remove_all(out);
+  const Result usual =
+      run("evolve --id 1log-trumpet --N 200 --rahA 0.5 --rah0 1.2 --tmax 0 --out " + out.string());
+  CHECK(usual.status == 0);
+  CHECK(usual.err.find("warning") == std::string::npos);
+  std::filesystem::remove_all(out);
+}
