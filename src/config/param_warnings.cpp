@@ -156,8 +156,27 @@ void output_size_warning(const Params& p, std::vector<std::string>& w) {
                           bytes / 1e6, thin));
 }
 
+/// Horizon-shift settings that make it do less than it says: a taper radius beyond the grid, or
+/// no horizon search before the run ends.
+void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
+  if (!shift_on(p))
+    return;
+  if (p.rah_rcut && *p.rah_rcut > p.rmax)
+    w.push_back(fmt::format(
+        "--rah-rcut {} lies beyond --rmax {}: beta_H is not tapered to zero before the outer "
+        "boundary, whose condition assumes the Gamma-driver's shift alone (leave --rah-rcut out "
+        "for its default rmax/2)",
+        num(*p.rah_rcut), num(p.rmax)));
+  if (p.rah_hAH_file.empty() && p.tmax > 0.0 && p.ah_tmin >= p.tmax)
+    w.push_back(fmt::format(
+        "--ah-tmin {} is at or after --tmax {}: no horizon search runs, so the horizon-adjusting "
+        "shift (--rahA {}) never acts",
+        num(p.ah_tmin), num(p.tmax), num(p.rahA)));
+}
+
 std::vector<std::string> warnings(const Params& p) {
   std::vector<std::string> w;
+  horizon_shift_warnings(p, w);
   // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
   // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
   // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.

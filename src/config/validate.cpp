@@ -172,14 +172,20 @@ void validate_horizon_shift(const Params& p) {
                      "away from --rah0, not towards it");
   require_positive("--rah0", p.rah0);
   require_positive("--rah-width", p.rah_width);
+  if (shift_on(p) && !(p.rah0 < p.rmax))
+    throw ParamError("--rah0", num(p.rah0),
+                     fmt::format("must be below --rmax = {}: the horizon is moved to a radius on "
+                                 "the grid",
+                                 num(p.rmax)));
   if (p.rah_rcut) {
     require_positive("--rah-rcut", *p.rah_rcut);
     // the shift must act at the horizon: the taper begins (at rcut/2) outside twice its radius
     if (shift_on(p) && !(*p.rah_rcut >= 4.0 * std::max(p.rah0, p.M)))
       throw ParamError("--rah-rcut", num(*p.rah_rcut),
-                       fmt::format("must be at least 4 max(rah0, M) = {}: beta_H would be cut "
-                                   "near the horizon it moves",
-                                   num(4.0 * std::max(p.rah0, p.M))));
+                       fmt::format("must be at least 4 max(rah0, M) = {} (--rah0 {}): beta_H "
+                                   "would be cut near the horizon it moves (its default is "
+                                   "rmax/2: a larger --rmax, or a smaller --rah0)",
+                                   num(4.0 * std::max(p.rah0, p.M)), num(p.rah0)));
   }
   if (!p.ah_every.valid())
     throw ParamError("--ah-every", printable(p.ah_every.name()),

@@ -400,3 +400,21 @@ TEST_CASE("--rahA far above the Courant limit at the start is warned about, nami
   CHECK(usual.err.find("warning") == std::string::npos);
   std::filesystem::remove_all(out);
 }
+
+// Horizon-shift settings that silently do less than they say are warned about, naming the flag.
+TEST_CASE("--rah-rcut beyond --rmax and --ah-tmin after --tmax are warned about") {
+  const std::filesystem::path out = scratch("shift_warnings");
+  const Result r = run("evolve --id 1log-trumpet --N 100 --rahA 0.5 --rah-rcut 5000 --ah-tmin 5 "
+                       "--tmax 2 --out "
+                       + out.string());
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(r.err.find("warning: --rah-rcut 5000 lies beyond --rmax 1000") != std::string::npos);
+  CHECK(r.err.find("warning: --ah-tmin 5 is at or after --tmax 2") != std::string::npos);
+  std::filesystem::remove_all(out);
+  const Result quiet =
+      run("evolve --id 1log-trumpet --N 100 --rahA 0.5 --ah-tmin 1 --tmax 2 --out " + out.string());
+  CHECK(quiet.status == 0);
+  CHECK(quiet.err.find("warning") == std::string::npos);
+  std::filesystem::remove_all(out);
+}
