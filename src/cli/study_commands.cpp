@@ -164,7 +164,7 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   if (!options.force && holds_this_study(options.out, config_text(base))) {
     continuing = true;
     say("gbssn1d converge: {} holds this study (same inputs): members continue from their "
-        "checkpoints\n",
+        "checkpoints; a member without one (one that completed keeps none) runs again\n",
         options.out);
   }
   validate_output_dir([&] {

@@ -57,6 +57,9 @@ std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const 
     afresh = fmt::format("its {} cannot be examined: {}", checkpoint_file.string(), ec.message());
   else if (fs::exists(st) && !fs::is_regular_file(st))
     afresh = fmt::format("its {} is not a regular file", checkpoint_file.string());
+  else if (!fs::exists(st) && fs::exists(fs::path(p.out) / "timeseries.dat"))
+    afresh = "it has no checkpoint (a member that completed keeps none, nor does one stopped "
+             "before its first)";
   if (fs::is_regular_file(st)) {
     try {
       Checkpoint c = read_checkpoint(checkpoint_file);

@@ -436,3 +436,20 @@ TEST_CASE("--force leaves hard-linked copies of the earlier run as they were, an
   fs::remove_all(out);
   fs::remove_all(backup);
 }
+
+// A completed converge study rerun with the same inputs says what happens: its members keep no
+// checkpoint, so each runs again (and says so), rather than "continue from their checkpoints".
+TEST_CASE("converge rerun after completion: members without a checkpoint say they run again") {
+  const fs::path out = scratch("converge_rerun_done");
+  const std::string cmd = "converge --N 40,50,60 --id 1log-trumpet --grid uniform --rmax 20 "
+                          "--tmax 1 --out "
+                          + out.string();
+  REQUIRE(run(cmd).status != 2);
+  const Result again = run(cmd);
+  INFO(again.err);
+  CHECK(again.status != 2);
+  CHECK(again.err.find("a member without one (one that completed keeps none) runs again")
+        != std::string::npos);
+  CHECK(again.err.find("member N = 50 starts afresh: it has no checkpoint") != std::string::npos);
+  fs::remove_all(out);
+}
