@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -322,6 +323,61 @@ struct ConfigOrigins {
   }
 };
 
+/// Edit distance (Levenshtein) of two flag names.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+/// What CLI11 could not place, in the order typed (its own message lists them reversed): the
+/// first unknown flag, with the command's flags closest to it, or a stray word; a flag before
+/// the subcommand is told to come after it.
+std::string unexpected_arguments(const CLI::App& app) {
+  std::vector<std::string> rest = app.remaining(true);
+  std::reverse(rest.begin(), rest.end()); // (CLI11 parsed the reversed vector)
+  const auto subcommands = app.get_subcommands();
+  const CLI::App* command = subcommands.empty() ? nullptr : subcommands.front();
+  const std::string where =
+      command ? fmt::format("gbssn1d {}", command->get_name()) : std::string("gbssn1d");
+  const auto flag = std::find_if(rest.begin(), rest.end(),
+                                 [](const std::string& w) { return w.rfind("--", 0) == 0; });
+  if (flag == rest.end())
+    return fmt::format("{} does not take '{}' (an argument without a flag; see {} --help)", where,
+                       printable(rest.empty() ? std::string() : rest.front()), where);
+  const std::vector<std::string> before = app.remaining(false); // not the subcommand's
+  if (!command || std::find(before.begin(), before.end(), *flag) != before.end())
+    return fmt::format("{} before the subcommand: flags follow it (gbssn1d {} {} ...)",
+                       printable(*flag), command ? command->get_name() : "evolve",
+                       printable(*flag));
+  const std::string name = flag->substr(0, flag->find('='));
+  // the command's flags within two edits, closest first, at most three
+  std::vector<std::pair<std::size_t, std::string>> near;
+  for (const CLI::Option* o : command->get_options())
+    for (const std::string& known : o->get_lnames())
+      if (const std::size_t d = edit_distance(name.substr(2), known); d <= 2)
+        near.emplace_back(d, "--" + known);
+  std::stable_sort(near.begin(), near.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> close;
+  for (std::size_t k = 0; k < near.size() && k < 3; ++k)
+    close.push_back(near[k].second);
+  return fmt::format("{} is not a flag of {}{} (see {} --help)", printable(name), where,
+                     close.empty() ? std::string()
+                                   : fmt::format("; did you mean {}?", fmt::join(close, " or ")),
+                     where);
+}
+
 int run_command_line(int argc, char** argv) {
   prepare_process(argc, argv);
   CLI::App app{"gbssn1d: spherically symmetric generalized BSSN evolutions of a Schwarzschild "
@@ -364,6 +420,9 @@ int run_command_line(int argc, char** argv) {
     return help_or_version(app, e);
   } catch (const CLI::CallForVersion& e) {
     return help_or_version(app, e);
+  } catch (const CLI::ExtrasError&) {
+    say("gbssn1d: error: {}\n", unexpected_arguments(app));
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');

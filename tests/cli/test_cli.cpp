@@ -418,3 +418,26 @@ TEST_CASE("--rah-rcut beyond --rmax and --ah-tmin after --tmax are warned about"
   CHECK(quiet.err.find("warning") == std::string::npos);
   std::filesystem::remove_all(out);
 }
+
+// An argument CLI11 cannot place is named as typed (CLI11's own message listed them reversed:
+// "0.5 --rah"), with the command's nearest flags, or as a flag before the subcommand.
+TEST_CASE("unknown flags are named as typed, with the nearest flags; flags before the subcommand "
+          "are told to follow it") {
+  const std::filesystem::path out = scratch("unknown_flags");
+  const Result typo = run("evolve --tmax 0 --rah 0.5 --out " + out.string());
+  CHECK(typo.status == 2);
+  CHECK(count_lines(typo.err) == 1);
+  CHECK(typo.err.find("--rah is not a flag of gbssn1d evolve; did you mean --rahA or --rah0")
+        != std::string::npos);
+  CHECK(typo.err.find("0.5 --rah") == std::string::npos);
+  const Result before = run("--out " + out.string() + " evolve --tmax 0");
+  CHECK(before.status == 2);
+  CHECK(before.err.find("--out before the subcommand: flags follow it") != std::string::npos);
+  const Result stray = run("evolve --tmax 0 stray --out " + out.string());
+  CHECK(stray.status == 2);
+  CHECK(stray.err.find("does not take 'stray'") != std::string::npos);
+  const Result resume_flag = run("resume " + out.string() + " --rahA 0.5");
+  CHECK(resume_flag.status == 2);
+  CHECK(resume_flag.err.find("--rahA is not a flag of gbssn1d resume") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+}
