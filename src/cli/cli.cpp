@@ -229,9 +229,10 @@ void add_sweep(CLI::App& app, SweepArgs& a) {
   a.cmd->allow_extras();
   a.cmd->footer(
       "Every other flag is an evolve flag, common to all members.\nOutput in --out: NAME/ "
-      "(each member's evolve output, NAME = its values, e.g. rahA=0.5_rah0=1.2), logs/ "
-      "(NAME.log, NAME.status, NAME.inputs), summary.dat (its path is printed at the end), "
-      "config.toml.\nOUT/summary.dat: a row per member, columns: the swept flags, status, flag, "
+      "(each member's evolve output with its own config.toml, NAME = its values, e.g. "
+      "rahA=0.5_rah0=1.2), logs/ (NAME.log, NAME.status, NAME.inputs), summary.dat (its path is "
+      "printed at the end).\nOUT/summary.dat: a row per member, columns: the swept flags, status, "
+      "flag, "
       "t_end, r_ah_final, M_ah_drift, M_ah_err_max, H_L2_ext_max, H_L2_R_max, wall_s, reason; "
       "its values, status (ok, invalid, blew-up, failed, interrupted, missing; a rerun "
       "of the sweep, or a requeued task line, runs the failed, interrupted and missing members "

@@ -46,7 +46,12 @@ void validate_output_dir(const Params& p) {
                                 : "is being written by another gbssn1d process: wait for it to "
                                   "end, or give another folder");
     if (!folder_is_empty(dir) && !p.force)
-      throw ParamError("--out", p.out, "exists and is not empty (use --force to overwrite)");
+      throw ParamError("--out", p.out,
+                       fs::is_regular_file(dir / "checkpoint.bin", ec)
+                           ? fmt::format("exists and holds a run with a checkpoint: `gbssn1d "
+                                         "resume {}` continues it; --force overwrites it",
+                                         printable(p.out))
+                           : "exists and is not empty (use --force to overwrite)");
     // gbssn1d writes no file through a symbolic link: with --force, a link where it writes
     // would send a file elsewhere (or be replaced): refused, whichever file it stands for
     for (const auto& entry : fs::directory_iterator(dir, ec))

@@ -441,3 +441,18 @@ TEST_CASE("unknown flags are named as typed, with the nearest flags; flags befor
   CHECK(resume_flag.err.find("--rahA is not a flag of gbssn1d resume") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
 }
+
+// evolve into the folder of a run that has a checkpoint (interrupted, or with
+// --checkpoint-every) names resume as well as --force, and leaves the folder as it was.
+TEST_CASE("--out holding a run with a checkpoint: the refusal names resume and --force") {
+  const std::filesystem::path out = scratch("out_with_checkpoint");
+  REQUIRE(run("evolve --N 60 --tmax 1 --checkpoint-every 0.5 --out " + out.string()).status == 0);
+  REQUIRE(std::filesystem::exists(out / "checkpoint.bin"));
+  const auto before = gbssn1d::testing::contents(out);
+  const Result r = run("evolve --N 60 --tmax 1 --out " + out.string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("holds a run with a checkpoint: `gbssn1d resume") != std::string::npos);
+  CHECK(r.err.find("--force overwrites it") != std::string::npos);
+  CHECK(gbssn1d::testing::contents(out) == before);
+  std::filesystem::remove_all(out);
+}
