@@ -16,6 +16,7 @@
 #include "study/parallel.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -204,6 +205,28 @@ private:
   std::thread thread_;
 };
 
+/// Member folders of an earlier sweep into the same folder that this sweep does not list (other
+/// values): said, since summary.dat will not hold them; they are left as they are.
+void warn_of_unlisted_members(const fs::path& dir, const std::vector<SweepMember>& members) {
+  std::set<std::string> listed;
+  for (const auto& m : members)
+    listed.insert(m.name);
+  std::vector<std::string> unlisted;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory(ec) && name != "logs" && !listed.count(name)
+        && fs::exists(dir / "logs" / (name + ".status"), ec))
+      unlisted.push_back(name);
+  }
+  if (unlisted.empty())
+    return;
+  std::sort(unlisted.begin(), unlisted.end());
+  say("gbssn1d sweep: warning: {} holds {} member folder{} of an earlier sweep that this one "
+      "does not list ({}): left as they are, and not in summary.dat\n",
+      dir.string(), unlisted.size(), unlisted.size() == 1 ? "" : "s", fmt::join(unlisted, ", "));
+}
+
 /// The members run here, -j at a time, then summary.dat. A rerun into the same folder
 /// continues the sweep only if every member that has left anything there was run with the
 /// inputs it would run with now.
@@ -217,6 +240,7 @@ int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& 
   check_earlier_inputs(dir, all_of(members), options.out);
   create_output_dir("--out", dir / "logs");
   record_axis_order(options.out, axes);
+  warn_of_unlisted_members(dir, members);
   install_stop_handlers();
   std::size_t done_before = 0; // members finished by an earlier run of the same sweep
   for (const auto& m : members) {

@@ -544,3 +544,26 @@ TEST_CASE("sweep: a failed or killed member runs again from its checkpoint, a bl
   fs::remove(done_flag);
   fs::remove_all(out);
 }
+
+// A sweep rerun into its folder with other values lists only its own members in summary.dat;
+// the earlier sweep's members it does not list are named on stderr and left as they are.
+TEST_CASE("sweep: a rerun with other values names the earlier members it leaves out") {
+  const fs::path out = scratch("sweep_other_values");
+  fs::remove_all(out);
+  const std::string flags =
+      " --id 1log-trumpet --grid uniform --N 32 --rmax 8 --tmax 0.5 --out " + out.string();
+  std::string err;
+  REQUIRE(run_study("sweep --sweep rahA=0.25,0.5" + flags, &err) == 0);
+  const std::string kept = slurp(out / "rahA=0.25" / "timeseries.dat");
+  CHECK(run_study("sweep --sweep rahA=0.5,1" + flags, &err) == 0);
+  INFO(err);
+  CHECK(err.find("holds 1 member folder of an earlier sweep that this one does not list "
+                 "(rahA=0.25): left as they are, and not in summary.dat")
+        != std::string::npos);
+  CHECK(slurp(out / "rahA=0.25" / "timeseries.dat") == kept);
+  CHECK(slurp(out / "summary.dat").find("0.25") == std::string::npos);
+  // the same values again: nothing to say
+  CHECK(run_study("sweep --sweep rahA=0.25,0.5,1" + flags, &err) == 0);
+  CHECK(err.find("does not list") == std::string::npos);
+  fs::remove_all(out);
+}
