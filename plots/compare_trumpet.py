@@ -13,7 +13,7 @@ import argparse
 import numpy as np
 
 from gbssn1d_data import (column, header_params, parse, read_text, run_description, run_script,
-                          set_titles, style)
+                          set_titles, style, save_figure)
 
 
 def main():
@@ -64,7 +64,7 @@ def main():
         title = a.title or f'lapse at t = {t:g} M against the stationary 1+log trumpet'
         set_titles(fig, ax1, title, run_description([header_params(run_text)]))
         fig.tight_layout()
-        fig.savefig(a.output)
+        save_figure(fig, a.output)
 
 
 if __name__ == '__main__':

@@ -21,7 +21,7 @@ import numpy as np
 
 from gbssn1d_data import (DataError, axis_label, column, common_params, header_params, parse,
                           read_text, run_description, run_script, sequential_colors,
-                          set_titles, style)
+                          set_titles, style, save_figure)
 
 
 def common_rows(runs, paths):
@@ -116,7 +116,7 @@ def main():
         ax2.set_xlabel('t / M')
         ax2.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(a.output)
+        save_figure(fig, a.output)
 
 
 if __name__ == '__main__':

@@ -17,7 +17,8 @@ import re
 
 import numpy as np
 
-from gbssn1d_data import DataError, parse, read_text, run_script, sequential_colors, style
+from gbssn1d_data import (DataError, parse, read_text, run_script, save_figure,
+                          sequential_colors, style)
 
 
 def header_value(text, key):
@@ -80,7 +81,7 @@ def main():
         ax.legend(fontsize=8)
     axes[0][0].set_ylabel(f'|{args.y}(t) - {args.y}(0)| x (N/{n0:g})^{args.order:g}')
     fig.tight_layout()
-    fig.savefig(args.output)
+    save_figure(fig, args.output)
 
 
 if __name__ == '__main__':

@@ -497,4 +497,14 @@ def finish(fig, ax, xlabel, ylabel, title, output, description=''):
     set_titles(fig, ax, title, description)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(output)
+    save_figure(fig, output)
+
+
+def save_figure(fig, output):
+    """Writes the figure; an output path that cannot take it (a missing folder, no permission,
+    a name whose extension is no image format) raises DataError naming it, not a traceback."""
+    try:
+        fig.savefig(output)
+    except (OSError, ValueError) as e:
+        why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
+        raise DataError(f'cannot write the figure: {why}', output) from None

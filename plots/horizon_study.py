@@ -37,7 +37,7 @@ import textwrap
 import numpy as np
 
 from gbssn1d_data import (DataError, axis_label, header_params, params_of, parse, read_text,
-                          run_description, run_script, sequential_colors, style)
+                          run_description, run_script, sequential_colors, style, save_figure)
 
 
 def load(directory, key):
@@ -267,7 +267,7 @@ def figure(args):
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
     fig.tight_layout()
-    fig.savefig(args.output)
+    save_figure(fig, args.output)
 
 
 def main():

@@ -21,7 +21,7 @@ import numpy as np
 
 from gbssn1d_data import (LINESTYLES, QUALITATIVE, axis_label, column, header_params,
                           label_keys, parse, pyplot, read_text, run_description, run_label,
-                          run_script, sequential_colors, shifted, sort_key)
+                          run_script, sequential_colors, shifted, sort_key, save_figure)
 
 
 def phrase(key, value):
@@ -179,7 +179,7 @@ def main():
         fig.canvas.draw()
         width = legend.get_window_extent().width / fig.bbox.width
         fig.tight_layout(rect=(0, 0, 1 - width - 0.01, 1))
-    fig.savefig(a.output)
+    save_figure(fig, a.output)
 
 
 if __name__ == '__main__':

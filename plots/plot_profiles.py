@@ -5,13 +5,30 @@
   plot_profiles.py A/profiles.dat B/profiles.dat -x R_areal -y alpha --times 1000 -o lapse.png
 """
 import argparse
+import math
+import sys
 
 import numpy as np
 
-from gbssn1d_data import (axis_label, column, finish, header_params, label_keys, legend_name,
-                          line_styles, log_axis_label, parse, pyplot, qualitative_colors, read_text,
-                          run_description, run_labels, run_script, sequential_colors, several_label,
-                          sort_key)
+from gbssn1d_data import (axis_label, column, display_name, finish, header_params, label_keys,
+                          legend_name, line_styles, log_axis_label, parse, pyplot,
+                          qualitative_colors, read_text, run_description, run_labels, run_script,
+                          script_name, sequential_colors, several_label, sort_key)
+
+
+def requested_times(text):
+    """--times as finite numbers; anything else ends the script naming the flag (exit 2)."""
+    times = []
+    for word in text.split(','):
+        try:
+            t = float(word)
+        except ValueError:
+            t = math.nan
+        if not math.isfinite(t):
+            sys.stderr.write(f"{script_name()}: --times: '{word}' is not a finite time\n")
+            sys.exit(2)
+        times.append(t)
+    return times
 
 
 def main():
@@ -50,7 +67,7 @@ def main():
     series = 0
     for k, (columns, blocks) in enumerate(parsed):
         times = np.array([t if t is not None else 0.0 for t, _ in blocks])
-        wanted = [float(v) for v in a.times.split(',')] if a.times else sorted({times[0], times[-1]})
+        wanted = requested_times(a.times) if a.times else sorted({times[0], times[-1]})
         if len(wanted) == 1:
             colors, styles = [None], ['-'] * n_series
             series_colors = qualitative_colors(n_series, 'curves')
@@ -59,6 +76,9 @@ def main():
             series_colors = None
         for i, tw in enumerate(wanted):
             t, data = blocks[int(np.argmin(abs(times - tw)))]
+            if abs(t - tw) > 1e-9 * max(1.0, abs(tw)):  # said, so that no one reads t = tw
+                sys.stderr.write(f'{script_name()}: note: --times {tw:g}: {display_name(a.files[k])} '
+                                 f'has no block there; the nearest, t = {t:g}, is drawn\n')
             x = column(columns, data, a.x)
             keep = np.ones_like(x, dtype=bool)
             if a.xmin is not None:

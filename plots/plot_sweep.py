@@ -19,7 +19,7 @@ import sys
 import numpy as np
 
 from gbssn1d_data import (DataError, axis_label, header_params, params_of, pyplot, read_text,
-                          run_description, run_script, window)
+                          run_description, run_script, window, save_figure)
 
 
 def load(path):
@@ -184,7 +184,7 @@ def main():
     fig.suptitle((header[0][2:] if header else a.summary) + (f'\n{ran}' if ran else ''),
                  fontsize=10)
     fig.tight_layout()
-    fig.savefig(a.output)
+    save_figure(fig, a.output)
     bad = [r for r in rows if r[col['status']] != 'ok']
     if bad:
         sys.stderr.write(f'note: {len(bad)} member(s) did not finish (crossed out)\n')

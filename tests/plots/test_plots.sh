@@ -210,4 +210,22 @@ refused "standard input" bash -c '"$1" "$2/plot_series.py" - -y alpha -o "$3/x.p
   _ "$py" "$plots" "$dir"
 refused "$h/missing/gbssn1d" "$py" "$plots/boxes_cost.py" --out "$h/cost" --bin "$h/missing/gbssn1d"
 refused "$h/folder" "$py" "$plots/boxes_cost.py" --out "$h/cost" --bin "$h/folder"
-echo "plot scripts: a missing file, a folder, a binary file, '# t = abc': one line each, exit 2"
+# an output the figure cannot be written to: a missing folder, an extension that is no image
+# format (the data file named by mistake is left as it was): one line naming it, exit 2
+refused "$h/missing/x.png" "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y alpha_center \
+  -o "$h/missing/x.png"
+cp "$dir/run/timeseries.dat" "$h/kept.dat"
+refused "$h/kept.dat" "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y alpha_center \
+  -o "$h/kept.dat"
+cmp -s "$dir/run/timeseries.dat" "$h/kept.dat" || { echo "-o kept.dat overwrote it"; exit 1; }
+# --times between blocks: the nearest is drawn, and said; a time that is not a number: exit 2
+"$py" "$plots/plot_profiles.py" "$dir/run/profiles.dat" -y alpha --times 0.123 -o "$dir/near.png" \
+  2>"$dir/err"
+grep -q "note: --times 0.123: .* has no block there; the nearest, t = 0, is drawn" "$dir/err" \
+  || { echo "plot_profiles.py --times 0.123: no note"; cat "$dir/err"; exit 1; }
+status=0
+"$py" "$plots/plot_profiles.py" "$dir/run/profiles.dat" -y alpha --times 0,nan -o "$dir/nan.png" \
+  2>"$dir/err" || status=$?
+[ $status -eq 2 ] && grep -q "\-\-times: 'nan' is not a finite time" "$dir/err" && [ ! -e "$dir/nan.png" ] \
+  || { echo "plot_profiles.py --times nan: exit $status"; cat "$dir/err"; exit 1; }
+echo "plot scripts: a missing file, a folder, a binary file, '# t = abc', an output that cannot be written: one line each, exit 2"
