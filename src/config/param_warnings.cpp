@@ -113,6 +113,20 @@ double spacing_near_horizon(const Params& p) {
 /// The biased upwind stencil is worse than the lopsided one where the throat is under-resolved
 /// (docs/horizon-shift-study.md, Sec. 7.4: H 7 times on the trumpet at M/8, 1.5 times on a
 /// shrink to 0.6 M at M/8 to M/16; H 1.5-8 times lower from M/12 otherwise).
+/// A target radius within two cells of the origin: the horizon cannot be resolved there (runs
+/// lose it, or go non-finite: tests/horizon/test_horizon_tracking.cpp).
+void small_target_warning(const Params& p, std::vector<std::string>& w) {
+  if (!shift_on(p) || p.N <= 0)
+    return;
+  const double dr = spacing_near_horizon(p);
+  if (p.rah0 < 2.0 * dr)
+    w.push_back(fmt::format(
+        "--rah0 {} lies within two cells of the origin (spacing {:.3g} M near r = M): the "
+        "horizon cannot be resolved there, and such runs lose it or go non-finite; use a finer "
+        "grid or a larger --rah0",
+        num(p.rah0), dr / p.M));
+}
+
 void upwind_warnings(const Params& p, std::vector<std::string>& w) {
   if (p.upwind != fd::Upwind::biased || p.N <= 0)
     return;
@@ -177,6 +191,7 @@ void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
 std::vector<std::string> warnings(const Params& p) {
   std::vector<std::string> w;
   horizon_shift_warnings(p, w);
+  small_target_warning(p, w);
   // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
   // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
   // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.

@@ -402,7 +402,8 @@ TEST_CASE("--rahA far above the Courant limit at the start is warned about, nami
 }
 
 // Horizon-shift settings that silently do less than they say are warned about, naming the flag.
-TEST_CASE("--rah-rcut beyond --rmax and --ah-tmin after --tmax are warned about") {
+TEST_CASE("--rah-rcut beyond --rmax, --ah-tmin after --tmax and --rah0 within two cells are "
+          "warned about") {
   const std::filesystem::path out = scratch("shift_warnings");
   const Result r = run("evolve --id 1log-trumpet --N 100 --rahA 0.5 --rah-rcut 5000 --ah-tmin 5 "
                        "--tmax 2 --out "
@@ -411,6 +412,14 @@ TEST_CASE("--rah-rcut beyond --rmax and --ah-tmin after --tmax are warned about"
   CHECK(r.status == 0);
   CHECK(r.err.find("warning: --rah-rcut 5000 lies beyond --rmax 1000") != std::string::npos);
   CHECK(r.err.find("warning: --ah-tmin 5 is at or after --tmax 2") != std::string::npos);
+  std::filesystem::remove_all(out);
+  // a target within two cells of the origin (such runs lose the horizon or go non-finite: sinh
+  // N = 200, rah0 0.01, 0.05 and 0.1 did at t = 11-16)
+  const Result small =
+      run("evolve --id 1log-trumpet --N 200 --rahA 0.5 --rah0 0.01 --tmax 0 --out " + out.string());
+  CHECK(small.status == 0);
+  CHECK(small.err.find("warning: --rah0 0.01 lies within two cells of the origin")
+        != std::string::npos);
   std::filesystem::remove_all(out);
   const Result quiet =
       run("evolve --id 1log-trumpet --N 100 --rahA 0.5 --ah-tmin 1 --tmax 2 --out " + out.string());
