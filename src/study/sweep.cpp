@@ -276,6 +276,16 @@ int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& 
 
 int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolve_args) {
   const std::vector<SweepAxis> axes = checked_axes(options);
+  // a swept flag given besides as a flag common to all members: every member would refuse
+  // it (given twice); refused here, before anything runs
+  for (const auto& axis : axes)
+    for (const auto& flag : axis.flags)
+      for (const auto& arg : evolve_args)
+        if (arg == "--" + flag || arg.rfind("--" + flag + "=", 0) == 0)
+          throw ParamError("--sweep", flag,
+                           fmt::format("is swept and also given to every member ({}): give it "
+                                       "in one place",
+                                       printable(arg)));
   check_axis_order(options.out, axes);
   // a task line (--member) builds its own member only: 10,000 members' configurations for each
   // of 10,000 lines was hours of CPU over an array job
