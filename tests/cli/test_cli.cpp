@@ -430,8 +430,9 @@ TEST_CASE("--rah-rcut beyond --rmax, --ah-tmin after --tmax and --rah0 within tw
 
 // An argument CLI11 cannot place is named as typed (CLI11's own message listed them reversed:
 // "0.5 --rah"), with the command's nearest flags, or as a flag before the subcommand.
-TEST_CASE("unknown flags are named as typed, with the nearest flags; flags before the subcommand "
-          "are told to follow it") {
+TEST_CASE(
+    "unknown flags are named as typed, with the nearest flags, and flags before the subcommand "
+    "are told to follow it") {
   const std::filesystem::path out = scratch("unknown_flags");
   const Result typo = run("evolve --tmax 0 --rah 0.5 --out " + out.string());
   CHECK(typo.status == 2);
