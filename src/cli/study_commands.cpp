@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -172,7 +173,22 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     o.force = options.force || continuing;
     return o;
   }());
-  converge_members(base, options); // validates every member before anything is written
+  // validates every member before anything is written; their warnings (as evolve's), each
+  // once, naming the members it concerns when not all
+  const std::vector<Params> members = converge_members(base, options);
+  std::vector<std::pair<std::string, std::vector<int>>> said;
+  for (const Params& m : members)
+    for (const auto& w : warnings(m)) {
+      auto it = std::find_if(said.begin(), said.end(), [&](const auto& x) { return x.first == w; });
+      if (it == said.end())
+        said.push_back({w, {m.N}});
+      else
+        it->second.push_back(m.N);
+    }
+  for (const auto& [w, Ns] : said)
+    say("gbssn1d converge: warning{}: {}\n",
+        Ns.size() == members.size() ? std::string() : fmt::format(" (N = {})", fmt::join(Ns, ", ")),
+        w);
   return run_converge(base, options, config_text(base));
 }
 

@@ -222,6 +222,11 @@ void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, cons
       for (std::size_t q = 0; q < n_times; ++q)
         if (std::abs(records.front().rows[q].t - tw) < std::abs(records.front().rows[s].t - tw))
           s = q;
+      const double t_row = records.front().rows[s].t;
+      if (std::abs(t_row - tw) > 1e-9 * std::max(1.0, std::abs(tw)))
+        say("gbssn1d converge: note: --scaled-times {} is no output time (rows every --dt-series "
+            "{}): its block is the nearest row's, t = {}\n",
+            time_text(tw), time_text(base.dt_series), time_text(t_row));
       if (!written.insert(s).second) {
         say("gbssn1d converge: note: --scaled-times {} falls on the output at t = {}, which has "
             "its block already (one block per output time)\n",

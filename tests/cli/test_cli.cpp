@@ -466,3 +466,40 @@ TEST_CASE("--out holding a run with a checkpoint: the refusal names resume and -
   CHECK(gbssn1d::testing::contents(out) == before);
   std::filesystem::remove_all(out);
 }
+
+// converge says the warnings evolve says for its members (once each, with the members' N when
+// they concern only some), before anything runs.
+TEST_CASE("converge passes on its members' parameter warnings") {
+  const std::filesystem::path out = scratch("converge_warnings");
+  const Result r = run("converge --N 40,60,80 --grid uniform --rmax 16 --rahA 0.5 --rah0 0.5 "
+                       "--rah-rcut 40 --tmax 0 --out "
+                       + out.string());
+  INFO(r.err);
+  CHECK(r.status != 2);
+  // the same for every member: once, without N
+  CHECK(r.err.find("gbssn1d converge: warning: --rah-rcut 40 lies beyond --rmax 16")
+        != std::string::npos);
+  // spacing 0.4 and 0.267 M at N = 40 and 60; not at N = 80 (0.2 M)
+  CHECK(r.err.find("warning (N = 40): --rah0 0.5 lies within two cells") != std::string::npos);
+  CHECK(r.err.find("warning (N = 60): --rah0 0.5 lies within two cells") != std::string::npos);
+  CHECK(r.err.find("(N = 80)") == std::string::npos);
+  std::filesystem::remove_all(out);
+}
+
+// A --scaled-times value between output rows gets the nearest row's block, and says so.
+TEST_CASE("converge --scaled-times between rows: the nearest row's block, with a note") {
+  const std::filesystem::path out = scratch("converge_scaled_between");
+  const Result r = run("converge --N 40,60,80 --grid uniform --rmax 16 --scaled-times 3,4 "
+                       "--dt-series 2 --tmax 4 --out "
+                       + out.string());
+  INFO(r.err);
+  CHECK(r.status != 2);
+  CHECK(r.err.find("note: --scaled-times 3 is no output time (rows every --dt-series 2): its "
+                   "block is the nearest row's, t = 2")
+        != std::string::npos);
+  CHECK(r.err.find("--scaled-times 4 is no output time") == std::string::npos);
+  const std::string scaled = slurp(out / "scaled_H.dat");
+  CHECK(scaled.find("# t = 2\n") != std::string::npos);
+  CHECK(scaled.find("# t = 4\n") != std::string::npos);
+  std::filesystem::remove_all(out);
+}
