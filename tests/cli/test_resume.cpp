@@ -102,6 +102,10 @@ TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an un
       CHECK(without_out(whole / f) == without_out(parts / f));
     CHECK(slurp(parts / "old_checkpoint.bin") == old_checkpoint);
     CHECK(slurp(parts / "checkpoint.bin") != old_checkpoint);
+    // ... through its temporary file, which the rename consumed: the stale one is gone (a
+    // checkpoint written in place at its path would leave it, and a kill mid-write there
+    // would leave no whole checkpoint)
+    CHECK_FALSE(fs::exists(parts / "checkpoint.bin.tmp"));
     fs::remove(parts / "old_checkpoint.bin");
   }
   // a checkpoint of another configuration, a missing one, and --tmax before it are refused
