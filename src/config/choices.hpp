@@ -37,7 +37,7 @@ std::string_view choice_name(const Choices<E>& choices, E value) {
 enum class RadialGrid { uniform, sinh, boxes };
 
 /// --ah-every's word forms; a number n stands for every n steps.
-enum class SearchEvery { substage, step };
+enum class SearchEvery { substage, step, extrapolated };
 
 inline const Choices<RadialGrid> grid_choices{
     {"uniform", RadialGrid::uniform}, {"sinh", RadialGrid::sinh}, {"boxes", RadialGrid::boxes}};
@@ -95,7 +95,8 @@ inline const Choices<ShiftVariant> variant_choices{
     {"midstep-update", ShiftVariant::midstep_update},
     {"box-substage", ShiftVariant::box_substage}};
 inline const Choices<SearchEvery> search_every_words{{"substage", SearchEvery::substage},
-                                                     {"step", SearchEvery::step}};
+                                                     {"step", SearchEvery::step},
+                                                     {"extrapolated", SearchEvery::extrapolated}};
 
 /// A value of a choice flag: one of `table`'s values, or a text that names none of them as it
 /// was given (a flag is read whole before it is validated: validate() refuses it, naming the

@@ -86,6 +86,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.norms.Rmax = p.norm_Rmax * p.M;
   c.norms.Rint = p.norm_Rint * p.M;
   c.horizon_search.every_steps = ah_every_steps(p);
+  c.horizon_search.extrapolate = p.ah_every == SearchEvery::extrapolated;
   c.horizon_search.schedule = search_schedule(p.rah_variant.value());
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
@@ -140,7 +141,7 @@ std::function<double(double)> load_prescribed_horizon(const std::string& path, d
 }
 
 long ah_every_steps(const Params& p) {
-  if (p.ah_every == SearchEvery::substage)
+  if (p.ah_every == SearchEvery::substage || p.ah_every == SearchEvery::extrapolated)
     return 0;
   if (p.ah_every == SearchEvery::step)
     return 1;

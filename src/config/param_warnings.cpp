@@ -48,7 +48,7 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && shift_on(p)
-      && p.ah_every != SearchEvery::substage)
+      && p.ah_every != SearchEvery::substage && p.ah_every != SearchEvery::extrapolated)
     w.push_back(fmt::format(
         "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
         "jump in time, and the fine boxes' quadratic time interpolation across the jumps is "

@@ -104,7 +104,7 @@ struct Params {
   /// beta_GD d_r Delta^r in B's driver
   DriverStencilChoice driver_advection = AdvectionStencil::matched;
   StencilChoice delta_advection = AdvectionStencil::upwind_full; ///< beta d_r Delta^r in (E6)
-  AhEvery ah_every = SearchEvery::substage; ///< substage | step | n (every n steps)
+  AhEvery ah_every = SearchEvery::substage; ///< substage | extrapolated | step | n (every n steps)
   double ah_tmin =
       evolution_defaults().horizon_search.t_min; ///< searches are made for ah-tmin <= t ...
   std::optional<double> ah_tmax;                 ///< ... <= ah-tmax; unset: until the end

@@ -249,7 +249,8 @@ void validate_horizon_shift(const Params& p) {
       && (p.grid != RadialGrid::boxes || p.ah_every != SearchEvery::substage))
     throw ParamError("--rah-variant", p.rah_variant.name(),
                      "needs --grid boxes and --ah-every substage");
-  if (p.rah_variant == ShiftVariant::midstep_update && p.ah_every == SearchEvery::substage)
+  if (p.rah_variant == ShiftVariant::midstep_update
+      && (p.ah_every == SearchEvery::substage || p.ah_every == SearchEvery::extrapolated))
     throw ParamError("--rah-variant", p.rah_variant.name(),
                      "needs searches every n steps (--ah-every step or a number)");
 }

@@ -36,6 +36,10 @@ struct HorizonSearchSettings {
   };
   /// 0: at every RK substage (inside the RHS); n >= 1: every n steps
   long every_steps = 0;
+  /// every_steps = 0 on a single grid: a search after every step instead, h_AH at each RK
+  /// stage's time extrapolated from the last four radii, as boxes always do
+  /// (`--ah-every extrapolated`; HorizonTracker::Mode::extrapolated)
+  bool extrapolate = false;
   Schedule schedule = Schedule::standard;
   double t_min = 0.0;                                     ///< no searches before t_min ...
   double t_max = std::numeric_limits<double>::infinity(); ///< ... or after t_max

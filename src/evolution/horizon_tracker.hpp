@@ -9,9 +9,10 @@
 //                 midstep-update variant: inside the RHS, at the 2nd substage of every n-th step);
 //   substage      a single grid, or boxes with the box-substage variant: the RHS of the level
 //                 holding the horizon searches on every RK stage's state, the others read it;
-//   extrapolated  boxes, searches every substage (the default): a search on the box holding the
-//                 horizon after each step of the hierarchy, and h_AH at any stage's time from the
-//                 Lagrange polynomial through the last (up to) four radii (error O(dt^4)).
+//   extrapolated  boxes, searches every substage (the default), or any grid with
+//                 --ah-every extrapolated: a search (on the box holding the horizon) after each
+//                 step of the hierarchy, and h_AH at any stage's time from the Lagrange
+//                 polynomial through the last (up to) four radii (error O(dt^4)).
 // Until a first horizon is found beta_H = 0; a horizon found and then lost by a search stops the
 // run (HorizonLostError), rather than letting beta_H switch off unsaid.
 #pragma once

@@ -41,7 +41,7 @@ void Simulation::restore(const Checkpoint& checkpoint) {
     for (std::size_t l = 0; l < n_levels; ++l)
       stepper_.set_history(l, c.history[l]);
   } else {
-    tracker_.restore(c.h_AH, {});
+    tracker_.restore(c.h_AH, c.h_AH_history); // a history with --ah-every extrapolated only
   }
   had_horizon_ = c.had_horizon;
   reported_ = c.reported;
@@ -62,10 +62,10 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
   c.evaluations = evaluations_before_rhs_;
   c.marks = out.marks();
   c.u = levels_u_[0];
+  c.h_AH_history = tracker_.history(); // boxes, and single grids with --ah-every extrapolated
   if (layout_.levels() > 1) {
     c.finer.assign(levels_u_.begin() + 1, levels_u_.end());
     c.shared_h_AH = tracker_.shared_before_rhs(); // before the next step's first RHS, as h_AH
-    c.h_AH_history = tracker_.history();
     for (std::size_t l = 0; l < layout_.levels(); ++l) {
       c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
       c.history.push_back(stepper_.history(l));
