@@ -15,6 +15,7 @@
 #include "evolution/simulation.hpp"
 #include "horizon/apparent_horizon.hpp"
 #include "machine_ceilings.hpp"
+#include "stencil_windows.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -149,11 +150,13 @@ int main(int argc, char** argv) {
                  "upwind, "
                  "formulation (on the largest N), boxes (whole runs), peak (the core's "
                  "ceilings: clock, FMA, multiply and division throughput, bandwidth; about 20 s, "
-                 "not run by default)")
+                 "not run by default), stencils (the point loop's stencils alone, as GCC "
+                 "vectorises them against explicit SIMD windows: an experiment of "
+                 "docs/roofline.md; not run by default)")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::IsMember(
-          {"rhs", "shift-cost", "fd-order", "upwind", "formulation", "boxes", "peak"}));
+          {"rhs", "shift-cost", "fd-order", "upwind", "formulation", "boxes", "peak", "stencils"}));
   double fma_latency = 4.0;
   app.add_option("--fma-latency", fma_latency,
                  "peak: cycles of one FMA's latency, which turns a chain of them into a clock")
@@ -173,7 +176,10 @@ int main(int argc, char** argv) {
   };
   if (wanted("peak"))
     print_machine_ceilings(0.2, fma_latency);
-  if (sections == std::vector<std::string>{"peak"})
+  if (wanted("stencils"))
+    print_stencil_windows(seconds);
+  if (std::all_of(sections.begin(), sections.end(),
+                  [](const std::string& s) { return s == "peak" || s == "stencils"; }))
     return 0;
   fmt::print("# gbssn1d {} RHS benchmark (1+log trumpet, sinh grid rmax = 100 M)\n",
              GBSSN1D_VERSION);

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace gbssn1d::fd {
 
@@ -125,21 +126,26 @@ struct Stencil {
     return s;
   }
   constexpr Rational exact(std::size_t k) const { return Rational(weight[k], denominator); }
-  /// sum_k w[k] f[first + k] (without the denominator), in increasing k, skipping zeros.
-  [[gnu::always_inline]] double sum(const double* f) const {
-    double s = 0.0;
+  /// sum_k w[k] f[first + k] (without the denominator), in increasing k, skipping zeros. `f`
+  /// points at the value at the point, or is any F whose f[k] is the k-th neighbour's value (a
+  /// window of SIMD vectors: bench/stencil_windows.cpp), summed in the same order.
+  template <class F>
+  [[gnu::always_inline]] auto sum(const F& f) const {
+    using T = std::remove_cvref_t<decltype(f[0])>;
+    T s{};
     bool started = false;
 #pragma GCC unroll 16
     for (std::size_t k = 0; k < n; ++k) {
       if (weight[k] == 0)
         continue;
-      const double t = static_cast<double>(weight[k]) * f[first + static_cast<int>(k)];
+      const T t = static_cast<double>(weight[k]) * f[first + static_cast<int>(k)];
       s = started ? s + t : t;
       started = true;
     }
     return s;
   }
-  [[gnu::always_inline]] double operator()(const double* f) const {
+  template <class F>
+  [[gnu::always_inline]] auto operator()(const F& f) const {
     return sum(f) * (1.0 / static_cast<double>(denominator));
   }
 };
