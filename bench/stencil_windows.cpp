@@ -104,9 +104,25 @@ void stencils_pairs(const double* in, const double* inv_rx, const double* d2_fx,
   }
 }
 
-/// As the point loop: a scalar loop over the block's points, vectorised by GCC.
+/// As the point loop: a scalar loop over the block's points, vectorised by GCC at the width it
+/// prefers for the target (-march=native: 512 bits on Sapphire Rapids, 256 on Ice Lake).
 void stencils_autovectorised(const double* in, const double* inv_rx, const double* d2_fx,
                              double* out, const Factors& c) {
+#pragma GCC ivdep
+  for (std::size_t i = 0; i < B; ++i) {
+    const double beta_r = in[beta * stride + i] * c.inv_dx * inv_rx[i];
+    const double abs_beta_r = beta_r < 0.0 ? -beta_r : beta_r;
+#pragma GCC unroll 16
+    for (std::size_t v = 0; v < n_fields; ++v)
+      out[v * stride + i] =
+          field_terms(in + v * stride + i, inv_rx[i], d2_fx[i], beta_r, abs_beta_r, c);
+  }
+}
+
+/// The same, vectorised at 512 bits where the target has them (the width of windows-8).
+[[gnu::target("prefer-vector-width=512")]] void
+stencils_autovectorised_512(const double* in, const double* inv_rx, const double* d2_fx,
+                            double* out, const Factors& c) {
 #pragma GCC ivdep
   for (std::size_t i = 0; i < B; ++i) {
     const double beta_r = in[beta * stride + i] * c.inv_dx * inv_rx[i];
@@ -221,6 +237,7 @@ void print_stencil_windows(double seconds) {
     long calls = 0;
   };
   Version versions[] = {{"autovectorised", stencils_autovectorised},
+                        {"autovectorised-512", stencils_autovectorised_512},
                         {"windows-4", stencils_windows<4>},
                         {"windows-8", stencils_windows<8>},
                         {"pairs", stencils_pairs}};
