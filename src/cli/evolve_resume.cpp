@@ -224,9 +224,9 @@ SeriesEnd series_end(const std::filesystem::path& file) {
 
 namespace {
 
-/// DIR must hold a run's config.toml and checkpoint.bin; a file of the run that cannot even be
-/// examined (a loop of symbolic links) is refused.
-void check_resume_dir(const std::string& dir_name) {
+/// DIR must hold a run's config.toml and (`with_checkpoint`) checkpoint.bin; a file of the run
+/// that cannot even be examined (a loop of symbolic links) is refused.
+void check_resume_dir(const std::string& dir_name, bool with_checkpoint) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
   check_path("DIR", dir);
@@ -241,7 +241,7 @@ void check_resume_dir(const std::string& dir_name) {
   };
   if (!has_file("config.toml"))
     throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
-  if (!has_file("checkpoint.bin"))
+  if (with_checkpoint && !has_file("checkpoint.bin"))
     throw ParamError("DIR", dir_name,
                      "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
                      "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
@@ -322,8 +322,11 @@ KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_n
 int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
-  check_resume_dir(dir_name);
-  const FolderLock lock("DIR", dir); // one writer per folder, from before anything is read
+  check_resume_dir(dir_name, false);
+  // one writer per folder, from before anything is read: a run still writing DIR (which writes
+  // no checkpoint until its first) is named as the holder, not reported as a missing checkpoint
+  const FolderLock lock("DIR", dir);
+  check_resume_dir(dir_name, true);
   // a key added since the run was recorded means what the run did without it
   std::vector<std::string> args{"--config", (dir / "config.toml").string()};
   for (const auto& a : absent_key_args(file_text(dir / "config.toml")))

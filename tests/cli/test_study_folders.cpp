@@ -180,6 +180,15 @@ TEST_CASE("one writer per folder: a folder another process writes is refused by 
     CHECK(r.status == 2);
     CHECK(r.err.find("being written by another gbssn1d process") != std::string::npos);
     CHECK(slurp(out / "timeseries.dat") == series);
+    // a run that has not yet written its first checkpoint: the writer is named, not the
+    // missing checkpoint (the lock is taken before the checkpoint is looked for)
+    fs::rename(out / "checkpoint.bin", out / "checkpoint.held");
+    const Result early = run("resume " + out.string() + " --tmax 2");
+    INFO(early.err);
+    CHECK(early.status == 2);
+    CHECK(early.err.find("being written by another gbssn1d process") != std::string::npos);
+    CHECK(early.err.find("no checkpoint.bin") == std::string::npos);
+    fs::rename(out / "checkpoint.held", out / "checkpoint.bin");
   }
   CHECK(run("resume " + out.string() + " --tmax 2").status == 0);
   CHECK(slurp(out / "timeseries.dat") != series);
