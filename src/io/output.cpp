@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -19,6 +20,15 @@
 #include <stdexcept>
 
 namespace gbssn1d {
+
+void append_scientific(fmt::memory_buffer& out, double v) {
+  char text[32]; // at most 24: -d.dddddddddddddddde+308
+  const auto [end, error] =
+      std::to_chars(text, text + sizeof text, v, std::chars_format::scientific, 16);
+  if (error != std::errc{})
+    throw std::logic_error("append_scientific: std::to_chars failed");
+  out.append(text, end);
+}
 
 std::vector<std::string> series_columns(Formulation formulation) {
   std::vector<std::string> cols{
@@ -269,14 +279,21 @@ OutputMarks Output::marks() {
 }
 
 void Output::write_series(const SeriesRow& row) {
-  series_.print("{} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} "
-                "{:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e} {:.16e}",
-                time_text(row.t), row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext,
-                row.G_L2, row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R,
-                row.M_L2_R, row.H_L2_int, row.M_ah_err);
+  fmt::memory_buffer line;
+  fmt::format_to(std::back_inserter(line), "{}", time_text(row.t));
+  for (double v : {row.alpha_center, row.H_L2, row.H_L2_ext, row.M_L2, row.M_L2_ext, row.G_L2,
+                   row.G_L2_ext, row.dtalpha_max_ext, row.r_ah, row.M_ah, row.H_L2_R, row.M_L2_R,
+                   row.H_L2_int, row.M_ah_err}) {
+    line.push_back(' ');
+    append_scientific(line, v);
+  }
   if (formulation_ == Formulation::z4c)
-    series_.print(" {:.16e} {:.16e} {:.16e}", row.G_L2_R, row.Theta_L2_ext, row.Theta_L2_R);
-  series_.print("\n");
+    for (double v : {row.G_L2_R, row.Theta_L2_ext, row.Theta_L2_R}) {
+      line.push_back(' ');
+      append_scientific(line, v);
+    }
+  line.push_back('\n');
+  series_.write(line.data(), line.size());
   series_.flush();
 }
 
@@ -316,7 +333,7 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
   for (std::size_t k = 0; k < grid.n_interior(); ++k) {
     const std::size_t i = grid.first_interior() + k;
     line.clear();
-    fmt::format_to(std::back_inserter(line), "{:.16e}", grid.r()[i]);
+    append_scientific(line, grid.r()[i]);
     const double beta_GD = field(u, grid, Var::beta)[i];
     for (const auto& entry : evolved(formulation_)) {
       double v = field(u, grid, entry.var)[i];
@@ -324,10 +341,14 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
         v = beta_GD + beta_H[i];
       else if (entry.var == Var::K && formulation_ == Formulation::z4c)
         v += 2.0 * field(u, grid, Var::Theta)[i]; // the ADM K (Z1)
-      fmt::format_to(std::back_inserter(line), " {:.16e}", v);
+      line.push_back(' ');
+      append_scientific(line, v);
     }
-    for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]})
-      fmt::format_to(std::back_inserter(line), " {:.16e}", v);
+    for (double v :
+         {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]}) {
+      line.push_back(' ');
+      append_scientific(line, v);
+    }
     fmt::format_to(std::back_inserter(line), " {}\n", level.empty() ? 0 : level[k]);
     profiles_.write(line.data(), line.size());
   }

@@ -9,13 +9,17 @@
 #include "../simulation_support.hpp"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <random>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -136,4 +140,38 @@ TEST_CASE("output files are never written through a symbolic link: a link where 
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(text == "precious\n");
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("append_scientific writes every double as fmt's {:.16e} does, byte for byte") {
+  // random bit patterns (every exponent, subnormals, NaNs of both signs) and decimal magnitudes
+  // from 1e-300 to 1e300, then the special values
+  std::mt19937_64 bits(7);
+  std::uniform_real_distribution<double> decade(-300.0, 300.0);
+  std::vector<double> values;
+  for (int k = 0; k < 500000; ++k) {
+    const std::uint64_t b = bits();
+    double x = 0.0;
+    std::memcpy(&x, &b, sizeof x);
+    values.push_back(x);
+    values.push_back((b & 1 ? -1.0 : 1.0) * std::pow(10.0, decade(bits)));
+  }
+  for (double x :
+       {0.0, -0.0, 1.0, -1.0, 0.1, 1e23, 9.9999999999999995e22, 5e-324, -5e-324,
+        2.2250738585072014e-308, 1.7976931348623157e308, std::numeric_limits<double>::quiet_NaN(),
+        -std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()})
+    values.push_back(x);
+  long differ = 0;
+  for (double x : values) {
+    fmt::memory_buffer fast;
+    gbssn1d::append_scientific(fast, x);
+    const std::string reference = fmt::format("{:.16e}", x);
+    if (std::string(fast.data(), fast.size()) != reference) {
+      if (differ < 5)
+        MESSAGE("append_scientific " << std::string(fast.data(), fast.size()) << ", fmt "
+                                     << reference);
+      ++differ;
+    }
+  }
+  CHECK(differ == 0);
 }
