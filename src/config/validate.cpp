@@ -189,7 +189,8 @@ void validate_horizon_shift(const Params& p) {
   }
   if (!p.ah_every.valid())
     throw ParamError("--ah-every", printable(p.ah_every.name()),
-                     "must be 'substage', 'step' or a whole number of steps >= 1");
+                     "must be 'substage', 'extrapolated', 'step' or a whole number of steps "
+                     ">= 1");
   require_choice("--rah-profile", p.rah_profile);
   require_choice("--rah-normal", p.rah_normal);
   if (p.rah_taper)

@@ -54,8 +54,12 @@ std::optional<double> HorizonTracker::at_evaluation(std::size_t level, const Sta
   case Mode::prescribed:
     return s.prescribed(t); // open loop: the same h_AH(t) at every resolution
   case Mode::substage:
-  case Mode::extrapolated:
     return s.in_window(t) ? locate(level, u, grid, seed, t) : held;
+  case Mode::extrapolated:
+    // Outside the window the last radius found, on every box and in the output (radius()):
+    // a box's own last value was the extrapolation to its last stage time in the window, a
+    // different one on each box, and not the one the output reported
+    return s.in_window(t) ? locate(level, u, grid, seed, t) : extrapolated_at(t);
   case Mode::held:
     // midstep-update: the 2nd RK substage (evaluation 4k + 1) of every n-th step
     if (s.schedule == SearchSchedule::midstep_update
@@ -68,12 +72,7 @@ std::optional<double> HorizonTracker::at_evaluation(std::size_t level, const Sta
 
 std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, const Grid& grid,
                                              double seed, double t) {
-  // A single grid's extrapolation (--ah-every extrapolated) searches on the stage state until
-  // the history holds four radii: extrapolating from fewer (a constant, a line, a parabola)
-  // errs by O(dt), O(dt^2), O(dt^3) in the first steps, which made h_AH converge at 2nd order
-  // to the substage search's (1+log trumpet, stretch to 0.89 M). Boxes extrapolate from the
-  // start (a coarse box's stage is ahead of the fine box holding the horizon).
-  if (mode_ == Mode::extrapolated && (layout_.levels() > 1 || history_.size() >= 4))
+  if (mode_ == Mode::extrapolated && !searches_stages())
     return extrapolated_at(t);
   // a single grid, or the study variant box_substage: the box holding the horizon searches on
   // its own stage state, the other boxes read its latest value
@@ -91,6 +90,16 @@ std::optional<double> HorizonTracker::locate(std::size_t level, const State& u, 
     lost(level, t, *shared_);
   shared_ = found ? std::optional<double>(found->r) : std::nullopt;
   return shared_;
+}
+
+bool HorizonTracker::searches_stages() const {
+  // A single grid's extrapolation (--ah-every extrapolated) searches on the stage state until
+  // the history holds four radii: extrapolating from fewer (a constant, a line, a parabola)
+  // errs by O(dt), O(dt^2), O(dt^3) in the first steps, which made h_AH converge at 2nd order
+  // to the substage search's (1+log trumpet, stretch to 0.89 M). Boxes extrapolate from the
+  // start (a coarse box's stage is ahead of the fine box holding the horizon).
+  return mode_ == Mode::substage
+         || (mode_ == Mode::extrapolated && layout_.levels() == 1 && history_.size() < 4);
 }
 
 void HorizonTracker::lost(std::size_t l, double t, double last) const {
@@ -193,7 +202,9 @@ std::optional<double> HorizonTracker::radius(double t) {
   case Mode::prescribed:
     return config_.horizon_search.prescribed(t);
   case Mode::extrapolated:
-    return extrapolated_at(t);
+    if (!searches_stages() || !config_.horizon_search.in_window(t))
+      return extrapolated_at(t);
+    [[fallthrough]]; // the first steps of a single grid: as the RHS, a search on the state
   case Mode::substage:
     if (config_.horizon_search.in_window(t)) {
       const std::size_t l = level();

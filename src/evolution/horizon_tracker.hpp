@@ -80,6 +80,9 @@ private:
   /// A search at an RK substage of `level` near `seed` (modes substage and extrapolated).
   std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
                                double t);
+  /// Whether an RK stage's h_AH is searched for on the stage state: the substage mode, and a
+  /// single grid's extrapolated mode until its history holds four radii.
+  bool searches_stages() const;
   /// h_AH at time t from the history (extrapolated mode).
   std::optional<double> extrapolated_at(double t) const;
   /// A search near `seed` on level l's state; a HorizonFinderError gets the time added.
