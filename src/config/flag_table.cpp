@@ -198,9 +198,8 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
        "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), extrapolated (after every step, h_AH at the "
-       "RK stages from the last four radii; on two or more boxes the same as substage), step, or a "
-       "number "
-       "of steps (held in between)"},
+       "RK stages from the last four radii; on two or more boxes the same as substage), step, "
+       "or a number of steps (held in between)"},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time"},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time"},
       {"ah-tol", &Params::ah_tol, "Horizon",
