@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The instruction mix of the right-hand side's point loop, counted from the compiled code.
 
-    python3 bench/loop_mix.py [OBJECT] [--symbol REGEX]
+    python3 bench/loop_mix.py [OBJECT] [--symbol REGEX] [--mca [--mcpu CPU]]
     python3 bench/loop_mix.py --check-vectorised OBJECT...
 
 Disassembles OBJECT (default: build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs.cpp.o) with
@@ -15,6 +15,12 @@ of one point (an FMA counts two; each vector instruction does one lane's work fo
 docs/roofline.md reads these counts against the machine's ceilings (gbssn1d_bench --sections
 peak).
 The loop body is branch-free, so the static count of one iteration is its dynamic count.
+
+--mca: also runs LLVM's machine-code analyser (llvm-mca, Debian package llvm) on the loop body:
+its model of the CPU's ports, latencies and out-of-order window (-mcpu, default: this host's
+CPU) gives the cycles an iteration takes when every load hits L1 (no line splits, no aliasing)
+and the front end keeps up, and the pressure on each port (the busiest ones bound the loop).
+Prints those cycles per iteration and per point, the loop's bytes of code, and the ports.
 
 --check-vectorised: for every instance of GbssnRhs::interior and of the loop that writes beta_H
 (fill_horizon_shift, one per normal) in the OBJECTs (those without one are skipped; at least one
@@ -172,6 +178,30 @@ def classify(body):
     return kinds, loads, stores
 
 
+def mca(body, lanes, mcpu, iterations=300):
+    """llvm-mca's cycles per iteration of the loop body and the pressure on each port."""
+    asm = [".intel_syntax noprefix"]
+    for _, mnemonic, operands in body[:-1]: # the backward jump is left out
+        operands = re.sub(r"<[^>]*>", "", re.sub(r"\s*#.*", "", operands))
+        asm.append(f"{mnemonic} {operands}")
+    try:
+        out = subprocess.run(["llvm-mca", f"-mcpu={mcpu}", f"-iterations={iterations}",
+                              "-timeline=false", "-instruction-info=false"],
+                             input="\n".join(asm) + "\n", capture_output=True, text=True,
+                             check=True).stdout
+    except FileNotFoundError:
+        sys.exit("loop_mix.py: --mca needs llvm-mca (Debian package llvm)")
+    except subprocess.CalledProcessError as e:
+        sys.exit(f"loop_mix.py: llvm-mca failed: {e.stderr.strip()}")
+    cycles = int(re.search(r"Total Cycles:\s+(\d+)", out).group(1)) / iterations
+    names = dict(re.findall(r"\[(\d+)\]\s+- (\S+)", out))
+    lines = out.splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith("Resource pressure per iter"))
+    values = lines[at + 2].split()
+    pressure = {names[str(k)]: (0.0 if v == "-" else float(v)) for k, v in enumerate(values)}
+    return cycles, pressure
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("object", nargs="*", default=[DEFAULT_OBJECT])
@@ -179,6 +209,9 @@ def main():
                         help="regular expression on the mangled function name")
     parser.add_argument("--check-vectorised", action="store_true",
                         help="require every point-loop instance in the objects to be vectorised")
+    parser.add_argument("--mca", action="store_true",
+                        help="also llvm-mca's cycles per iteration and port pressure")
+    parser.add_argument("--mcpu", default="native", help="llvm-mca's CPU model (with --mca)")
     args = parser.parse_args()
     if args.check_vectorised:
         return check_vectorised(args.object)
@@ -205,6 +238,13 @@ def main():
         print(f"{name:40s} {value:5d} {value / lanes:8.2f}")
     # each vector instruction works on every point of the iteration, one lane each
     print(f"flops_per_point (fma = 2) {flops}")
+    print(f"code_bytes_per_iteration {body[-1][0] - body[0][0]}")
+    if args.mca:
+        cycles, pressure = mca(body, lanes, args.mcpu)
+        print(f"mca_cycles_per_iteration ({args.mcpu}) {cycles:.1f} per_point {cycles / lanes:.2f}")
+        busiest = sorted(pressure.items(), key=lambda kv: -kv[1])[:4]
+        print("mca_port_pressure_per_iteration "
+              + " ".join(f"{name}={value:.0f}" for name, value in busiest))
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -13,7 +13,12 @@
 //  - FMA and multiply throughput: 12 independent chains, enough to fill two pipelined units;
 //  - division throughput: 8 independent chains;
 //  - bandwidth: the sum of an array (read) and a = b + s c (triad: two reads, one write, counted
-//    as 24 bytes per element), for arrays that fit L1, L2, the shared L3, and none of them.
+//    as 24 bytes per element), for arrays that fit L1, L2, the shared L3, and none of them;
+//  - front end: loops of K seven-byte NOPs (x86-64 only), code of 0.9 to 14 KiB a loop: the
+//    bytes of code the core fetches and decodes a cycle when nothing else limits it (a loop that
+//    fits the decoded-instruction cache streams from it; one that does not is decoded again each
+//    iteration, at 16 bytes a cycle on Intel cores). The point loop is 3.7 KiB of code
+//    (bench/loop_mix.py), so this says whether its size alone could bound it.
 #include "machine_ceilings.hpp"
 
 #include <fmt/format.h>
@@ -175,6 +180,15 @@ Bandwidth bandwidth(std::size_t bytes, double seconds) {
   return {8.0 * elements / t_read, 24.0 * elements / t_triad};
 }
 
+#if defined(__x86_64__)
+/// n iterations of a loop of K seven-byte NOPs (0f 1f 80 00 00 00 00: nopl 0x0(%rax)).
+template <int K>
+[[gnu::noinline]] void nops(long n) {
+  for (long i = 0; i < n; ++i)
+    asm volatile(".rept %c0\n\t.byte 0x0f, 0x1f, 0x80, 0, 0, 0, 0\n\t.endr" : : "i"(K));
+}
+#endif
+
 /// Seconds per call of f(n) for n chosen so that one call takes about 10 ms: the best of
 /// `rounds` calls, divided by n.
 double per_iteration(void (*f)(long), int rounds) {
@@ -213,6 +227,19 @@ void print_machine_ceilings(double seconds, double fma_latency) {
     fmt::print("{} {} {:.3f} {:.2f} {:.2f}\n", r.name, r.lanes, per_second / hz,
                per_second / hz * flops_per_instruction, per_second * flops_per_instruction * 1e-9);
   }
+#if defined(__x86_64__)
+  fmt::print("# front end (loops of 7-byte NOPs): code_bytes_per_loop bytes_per_cycle "
+             "instructions_per_cycle\n");
+  struct Loop {
+    int instructions;
+    void (*f)(long);
+  };
+  const Loop loops[] = {{128, nops<128>}, {524, nops<524>}, {1024, nops<1024>}, {2048, nops<2048>}};
+  for (const Loop& l : loops) {
+    const double per_cycle = l.instructions / per_iteration(l.f, rounds) / hz;
+    fmt::print("{} {:.1f} {:.2f}\n", 7 * l.instructions, 7.0 * per_cycle, per_cycle);
+  }
+#endif
   fmt::print("# bandwidth (arrays of the size given, each): bytes read_GB_per_s triad_GB_per_s\n");
   for (const std::size_t bytes : {std::size_t{16} << 10, std::size_t{512} << 10,
                                   std::size_t{32} << 20, std::size_t{512} << 20}) {

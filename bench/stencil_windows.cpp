@@ -66,12 +66,23 @@ struct Pairs {
   /// sum_k w[k] f[first + k] of a stencil on -radius ... radius (symmetric or antisymmetric)
   template <std::size_t n>
   [[gnu::always_inline]] T apply(const gbssn1d::fd::Stencil<n>& s) const {
+    // zero weights left out, as Stencil::sum does (0 x f0 is not folded: f0 may be infinite)
     const int radius = -s.first;
     const bool symmetric = s.weight[0] == s.weight[n - 1];
-    T t = static_cast<double>(s.weight[static_cast<std::size_t>(radius)]) * f0;
-    for (int k = 1; k <= radius; ++k)
-      t += static_cast<double>(s.weight[static_cast<std::size_t>(radius + k)])
-           * (symmetric ? sum[k] : diff[k]);
+    T t{};
+    bool started = false;
+    if (s.weight[static_cast<std::size_t>(radius)] != 0) {
+      t = static_cast<double>(s.weight[static_cast<std::size_t>(radius)]) * f0;
+      started = true;
+    }
+    for (int k = 1; k <= radius; ++k) {
+      const std::int64_t w = s.weight[static_cast<std::size_t>(radius + k)];
+      if (w == 0)
+        continue;
+      const T term = static_cast<double>(w) * (symmetric ? sum[k] : diff[k]);
+      t = started ? t + term : term;
+      started = true;
+    }
     return t;
   }
 };
