@@ -50,6 +50,52 @@ template <class F, class T>
   return f[0] + d + dd + adv + c.ko_scale * inv_rx * diff;
 }
 
+/// sum_k w[k] f[first + k] in two partial sums (alternate non-zero terms), added at the end:
+/// half of Stencil::sum's chain of dependent FMAs, for one multiply and one add more. Tests
+/// whether the chains' latency limits the loop (docs/roofline.md, Sec. 7).
+template <std::size_t n>
+[[gnu::always_inline]] inline double tree_sum(const gbssn1d::fd::Stencil<n>& st, const double* f) {
+  double s[2] = {0.0, 0.0};
+  bool started[2] = {false, false};
+  int which = 0;
+#pragma GCC unroll 16
+  for (std::size_t k = 0; k < n; ++k) {
+    if (st.weight[k] == 0)
+      continue;
+    const double t = static_cast<double>(st.weight[k]) * f[st.first + static_cast<int>(k)];
+    s[which] = started[which] ? s[which] + t : t;
+    started[which] = true;
+    which = 1 - which;
+  }
+  return started[1] ? s[0] + s[1] : s[0];
+}
+/// field_terms with each stencil in two partial sums (tree_sum).
+[[gnu::always_inline]] inline double field_terms_tree(const double* f, double inv_rx, double d2_fx,
+                                                      double beta_r, double abs_beta_r,
+                                                      const Factors& c) {
+  const double d1_scale = c.inv_dx * inv_rx, d2_scale = d1_scale * d1_scale;
+  const double d1 = tree_sum(O::d1, f) * (1.0 / static_cast<double>(O::d1.denominator)),
+               d2 = tree_sum(O::d2, f) * (1.0 / static_cast<double>(O::d2.denominator)),
+               diff = tree_sum(O::difference, f), upwind = tree_sum(O::lopsided_sum, f);
+  const double d = d1 * d1_scale;
+  const double dd = d2 * d2_scale + d1 * c.inv_dx * d2_fx;
+  const double adv = 0.5 * beta_r * upwind + c.half_ratio * abs_beta_r * diff;
+  return f[0] + d + dd + adv + c.ko_scale * inv_rx * diff;
+}
+/// As the point loop, with each stencil in two partial sums.
+void stencils_tree(const double* in, const double* inv_rx, const double* d2_fx, double* out,
+                   const Factors& c) {
+#pragma GCC ivdep
+  for (std::size_t i = 0; i < B; ++i) {
+    const double beta_r = in[beta * stride + i] * c.inv_dx * inv_rx[i];
+    const double abs_beta_r = beta_r < 0.0 ? -beta_r : beta_r;
+#pragma GCC unroll 16
+    for (std::size_t v = 0; v < n_fields; ++v)
+      out[v * stride + i] =
+          field_terms_tree(in + v * stride + i, inv_rx[i], d2_fx[i], beta_r, abs_beta_r, c);
+  }
+}
+
 /// The neighbours of a point as sums f[k] + f[-k] and differences f[k] - f[-k] (k = 1 ... R):
 /// a symmetric stencil (d2, the difference) reads the sums, an antisymmetric one (d1, the
 /// upwind sum) the differences.
@@ -251,7 +297,8 @@ void print_stencil_windows(double seconds) {
                         {"autovectorised-512", stencils_autovectorised_512},
                         {"windows-4", stencils_windows<4>},
                         {"windows-8", stencils_windows<8>},
-                        {"pairs", stencils_pairs}};
+                        {"pairs", stencils_pairs},
+                        {"tree", stencils_tree}};
   // the versions' results: each against the point loop's way
   double largest = 0.0, difference = 0.0;
   stencils_autovectorised(rows, grid.p, grid.p + stride, out_a.p, c);

@@ -8,6 +8,8 @@
 /// advection and dissipation terms built from them) for 9 fields on staged blocks of 256 points:
 /// once as the point loop computes them (a scalar loop GCC vectorises, each neighbour a load of
 /// its own), and once with explicit vectors of 4 and of 8 doubles, each field's neighbours
-/// formed in registers from three aligned loads. Prints ns per point of each, their paired
-/// ratios, and the largest difference between the versions' results.
+/// formed in registers from three aligned loads; also from the pairs f[k] +/- f[-k], and with
+/// each stencil in two partial sums (shorter dependent chains: docs/roofline.md, Sec. 7). Prints
+/// ns per point of each, their paired ratios, and the largest difference between the versions'
+/// results.
 void print_stencil_windows(double seconds);
