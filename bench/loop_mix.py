@@ -20,7 +20,8 @@ The loop body is branch-free, so the static count of one iteration is its dynami
 its model of the CPU's ports, latencies and out-of-order window (-mcpu, default: this host's
 CPU) gives the cycles an iteration takes when every load hits L1 (no line splits, no aliasing)
 and the front end keeps up, and the pressure on each port (the busiest ones bound the loop).
-Prints those cycles per iteration and per point, the loop's bytes of code, and the ports.
+Prints those cycles per iteration and per point (the backward jump left out), the loop's bytes
+of code, and the busiest ports (--mca-asm FILE: also the assembly given to llvm-mca).
 
 --check-vectorised: for every instance of GbssnRhs::interior and of the loop that writes beta_H
 (fill_horizon_shift, one per normal) in the OBJECTs (those without one are skipped; at least one
@@ -178,27 +179,36 @@ def classify(body):
     return kinds, loads, stores
 
 
-def mca(body, lanes, mcpu, iterations=300):
-    """llvm-mca's cycles per iteration of the loop body and the pressure on each port."""
+def mca(body, mcpu, asm_file=None, iterations=300):
+    """llvm-mca's cycles per iteration of the loop body and the pressure on each resource (its
+    ports; on some models numbered units of one resource, labelled [12.0], [12.1] ...)."""
     asm = [".intel_syntax noprefix"]
     for _, mnemonic, operands in body[:-1]: # the backward jump is left out
         operands = re.sub(r"<[^>]*>", "", re.sub(r"\s*#.*", "", operands))
         asm.append(f"{mnemonic} {operands}")
+    text = "\n".join(asm) + "\n"
+    if asm_file:
+        with open(asm_file, "w") as f:
+            f.write(text)
     try:
         out = subprocess.run(["llvm-mca", f"-mcpu={mcpu}", f"-iterations={iterations}",
                               "-timeline=false", "-instruction-info=false"],
-                             input="\n".join(asm) + "\n", capture_output=True, text=True,
-                             check=True).stdout
+                             input=text, capture_output=True, text=True, check=True).stdout
     except FileNotFoundError:
         sys.exit("loop_mix.py: --mca needs llvm-mca (Debian package llvm)")
     except subprocess.CalledProcessError as e:
         sys.exit(f"loop_mix.py: llvm-mca failed: {e.stderr.strip()}")
     cycles = int(re.search(r"Total Cycles:\s+(\d+)", out).group(1)) / iterations
-    names = dict(re.findall(r"\[(\d+)\]\s+- (\S+)", out))
+    names = dict(re.findall(r"^\[([\d.]+)\]\s+- (\S+)", out, re.M))
     lines = out.splitlines()
     at = next(i for i, line in enumerate(lines) if line.startswith("Resource pressure per iter"))
+    labels = re.findall(r"\[([\d.]+)\]", lines[at + 1])
     values = lines[at + 2].split()
-    pressure = {names[str(k)]: (0.0 if v == "-" else float(v)) for k, v in enumerate(values)}
+    if len(labels) != len(values) or any(label not in names for label in labels):
+        sys.exit("loop_mix.py: llvm-mca's resource pressure table not understood")
+    # a unit of a resource with several keeps its number: Zn3FPP45.0, Zn3FPP45.1
+    pressure = {names[label] + (label[label.index("."):] if "." in label else ""):
+                (0.0 if value == "-" else float(value)) for label, value in zip(labels, values)}
     return cycles, pressure
 
 
@@ -212,6 +222,8 @@ def main():
     parser.add_argument("--mca", action="store_true",
                         help="also llvm-mca's cycles per iteration and port pressure")
     parser.add_argument("--mcpu", default="native", help="llvm-mca's CPU model (with --mca)")
+    parser.add_argument("--mca-asm", metavar="FILE",
+                        help="with --mca: also write the assembly given to llvm-mca to FILE")
     args = parser.parse_args()
     if args.check_vectorised:
         return check_vectorised(args.object)
@@ -238,9 +250,12 @@ def main():
         print(f"{name:40s} {value:5d} {value / lanes:8.2f}")
     # each vector instruction works on every point of the iteration, one lane each
     print(f"flops_per_point (fma = 2) {flops}")
-    print(f"code_bytes_per_iteration {body[-1][0] - body[0][0]}")
+    # from the loop's first instruction to the one after its backward jump
+    after = next((a for a, _, _ in ins if a > body[-1][0]), None)
+    if after is not None:
+        print(f"code_bytes_per_iteration {after - body[0][0]}")
     if args.mca:
-        cycles, pressure = mca(body, lanes, args.mcpu)
+        cycles, pressure = mca(body, args.mcpu, args.mca_asm)
         print(f"mca_cycles_per_iteration ({args.mcpu}) {cycles:.1f} per_point {cycles / lanes:.2f}")
         busiest = sorted(pressure.items(), key=lambda kv: -kv[1])[:4]
         print("mca_port_pressure_per_iteration "
