@@ -14,6 +14,7 @@
 #include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
+#include "mesh/hierarchy.hpp"
 #include "study/parallel.hpp"
 #include "study/verdict.hpp"
 
@@ -217,6 +218,36 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   return s;
 }
 
+/// Members on subcycled boxes whose hierarchies step by different dt, with a horizon shift that
+/// follows the searches: h_AH(t) is held or extrapolated over a step of the hierarchy, so each
+/// such step is a different gauge, and the fields cannot converge between them
+/// (docs/horizon-shift-study.md, Sec. 6.7). Empty when the steps agree or do not matter.
+std::string hierarchy_step_warning(const std::vector<Params>& members) {
+  const Params& p = members.front();
+  if (p.grid != RadialGrid::boxes || !p.levels || *p.levels < 2 || p.no_subcycling || !shift_on(p)
+      || uses_hAH_file(p))
+    return {};
+  std::vector<std::string> steps;
+  bool differ = false;
+  double first = 0.0;
+  for (const Params& m : members) {
+    const EvolutionConfig c = evolution_config(m);
+    const double dt = mesh::hierarchy_dt(make_layout(c), c.stepping);
+    if (steps.empty())
+      first = dt;
+    differ = differ || std::abs(dt - first) > 1e-12 * first;
+    steps.push_back(fmt::format("N = {}: {:.4g} M", m.N, dt));
+  }
+  if (!differ)
+    return {};
+  return fmt::format(
+      "the members' hierarchies step by different dt ({}): on subcycled boxes the horizon "
+      "shift takes h_AH over a step of the hierarchy, so each member evolves a different gauge "
+      "and its fields cannot converge to the others' (docs/horizon-shift-study.md, Sec. 6.7); "
+      "use N in power-of-two ratios, --no-subcycling, or --rah-hAH-file",
+      fmt::join(steps, ", "));
+}
+
 } // namespace
 
 std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options) {
@@ -279,6 +310,8 @@ bool holds_this_study(const std::string& out, const std::string& base_config) {
 int run_converge(const Params& base, const ConvergeOptions& options,
                  const std::string& base_config) {
   ConvergeStudy s = plan_study(base, options);
+  if (const std::string w = hierarchy_step_warning(s.members); !w.empty())
+    say("gbssn1d converge: warning: {}\n", w);
   const FolderLock lock("--out", options.out); // one writer per study folder
   // what the folder holds again, under the lock: another process may have written it since it
   // was checked (an evolve run of the same flags is no study to continue)

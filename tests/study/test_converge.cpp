@@ -225,6 +225,11 @@ TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) is pre-asympt
   CHECK(err.find("completed at t = 20, but pre-asymptotic: alpha at N = 24, 32 and 48: ")
         != std::string::npos);
   CHECK(err.find("order of its RMS over time 1.7") != std::string::npos);
+  // the cause, named: the members' hierarchies step by 1/3, 1/2 and 1/3 M (the coarse boxes'
+  // eta cap), and with them h_AH's extrapolation, a different gauge in each member
+  CHECK(err.find("warning: the members' hierarchies step by different dt (N = 24: 0.3333 M, N = "
+                 "32: 0.5 M, N = 48: 0.3333 M)")
+        != std::string::npos);
   std::string text = slurp(out / "convergence.dat");
   CHECK(text.find("\n# verdict: pre-asymptotic: alpha at N = 24, 32 and 48") != std::string::npos);
   CHECK(order_line(text, "H_L2_ext", "N = 32 and 48").find(": converges") != std::string::npos);
@@ -237,6 +242,21 @@ TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) is pre-asympt
   text = slurp(out / "convergence.dat");
   CHECK(text.find("\n# verdict: converges: every judged order") != std::string::npos);
   CHECK(text.find("round-off floor 1") == std::string::npos); // no time at the floor
+  fs::remove_all(out);
+}
+
+TEST_CASE("converge: on seven boxes the stretched horizon converges (exit 0) when the members' "
+          "hierarchies step alike (N = 24, 48, 96: 1/3 M each), and no warning is given") {
+  const fs::path out = scratch("converge_same_hierarchy_step");
+  std::string err;
+  std::string flags = seven_boxes;
+  flags.replace(flags.find("--N 24,32,48"), 12, "--N 24,48,96");
+  REQUIRE(
+      run_study("converge" + flags + "--tmax 20 --rahA 0.5 --rah0 0.89 --out " + out.string(), &err)
+      == 0);
+  INFO(err);
+  CHECK(err.find("completed at t = 20; converges: every judged order") != std::string::npos);
+  CHECK(err.find("hierarchies step by different dt") == std::string::npos);
   fs::remove_all(out);
 }
 
