@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace gbssn1d {
 
 namespace {
@@ -112,12 +114,47 @@ void HorizonTracker::lost(std::size_t l, double t, double last) const {
       layout_.levels() > 1 ? fmt::format(", level {}", l) : std::string()));
 }
 
+namespace {
+
+/// The cubic through the four nodes around t (the first or last four at the ends), at t, in
+/// Lagrange's form; `nodes` time-ordered, at least four.
+double local_cubic(const std::vector<std::array<double, 2>>& nodes, double t) {
+  const auto after =
+      std::upper_bound(nodes.begin(), nodes.end(), t,
+                       [](double x, const std::array<double, 2>& n) { return x < n[0]; });
+  const std::ptrdiff_t last_start = static_cast<std::ptrdiff_t>(nodes.size()) - 4;
+  const std::ptrdiff_t first =
+      std::clamp<std::ptrdiff_t>((after - nodes.begin()) - 2, 0, last_start);
+  double sum = 0.0;
+  for (std::ptrdiff_t j = first; j < first + 4; ++j) {
+    double weight = 1.0;
+    for (std::ptrdiff_t m = first; m < first + 4; ++m)
+      if (m != j)
+        weight *= (t - nodes[static_cast<std::size_t>(m)][0])
+                  / (nodes[static_cast<std::size_t>(j)][0] - nodes[static_cast<std::size_t>(m)][0]);
+    sum += weight * nodes[static_cast<std::size_t>(j)][1];
+  }
+  return sum;
+}
+
+} // namespace
+
+bool HorizonTracker::wants_start_nodes() const {
+  return mode_ == Mode::extrapolated && layout_.levels() > 1 && config_.stepping.subcycling;
+}
+
+void HorizonTracker::seed_start(std::vector<std::array<double, 2>> nodes) {
+  start_nodes_ = nodes.size() >= 4 ? std::move(nodes) : std::vector<std::array<double, 2>>{};
+}
+
 std::optional<double> HorizonTracker::extrapolated_at(double t) const {
   const auto& h = history_;
   if (h.empty())
     return std::nullopt;
   if (!config_.horizon_search.in_window(t)) // no searches: the last radius is held
     return h.back()[1];
+  if (!start_nodes_.empty() && t <= start_nodes_.back()[0]) // the pilot's steps
+    return local_cubic(start_nodes_, t);
   // The polynomial through the last (up to four) radii, at t: in Newton's form, its divided
   // differences formed once per history (every box evaluates it at every RK substage, and the
   // Lagrange form took 12 divisions a call, about 2% of a box run with the shift)

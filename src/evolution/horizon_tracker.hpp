@@ -76,6 +76,17 @@ public:
   void restore(const std::optional<double>& shared,
                const std::vector<std::array<double, 2>>& history);
 
+  /// Subcycled boxes in the extrapolated mode: over the first steps of the hierarchy its history
+  /// holds fewer than four radii, and the coarse boxes step first, up to a step of the hierarchy
+  /// ahead of the last search. That step is capped by the coarse boxes' damping limit and is
+  /// the same at every N (0.5 M at eta = 2/M), so the constant, linear and quadratic
+  /// extrapolations of those steps put an offset into the gauge that N does not reduce (1.3e-4
+  /// in r_AH: docs/horizon-shift-study.md, Sec. 6.7). Whether the run starts from a pilot.
+  bool wants_start_nodes() const;
+  /// The pilot's radii (t, h_AH) at every step of the finest box from t = 0 (time-ordered):
+  /// while t <= their last time, h_AH(t) is the cubic through the four nodes around t.
+  void seed_start(std::vector<std::array<double, 2>> nodes);
+
 private:
   /// A search at an RK substage of `level` near `seed` (modes substage and extrapolated).
   std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
@@ -100,7 +111,8 @@ private:
   /// The radius every level's horizon shift uses, found on level()'s state; the others read it.
   std::optional<double> shared_;
   std::optional<double> shared_before_rhs_;
-  std::vector<std::array<double, 2>> history_; ///< extrapolated: (t, h_AH) of the last searches
+  std::vector<std::array<double, 2>> history_;     ///< extrapolated: (t, h_AH) of the last searches
+  std::vector<std::array<double, 2>> start_nodes_; ///< seed_start's nodes, empty without a pilot
   /// extrapolated_at's polynomial in Newton's form, and the history it was formed from
   mutable std::vector<std::array<double, 2>> newton_nodes_;
   mutable std::vector<double> newton_coefficients_;

@@ -249,9 +249,39 @@ void Simulation::save_checkpoint(Output* out, const std::optional<double>& h_AH_
     on_checkpoint(c);
 }
 
+void Simulation::seed_horizon_start() {
+  const double t_pilot = std::min(config_.tmax, 3.0 * schedule_.dt);
+  if (!tracker_.wants_start_nodes() || !(t_ < t_pilot) || stepper_.steps(layout_.levels() - 1) == 1)
+    return;
+  EvolutionConfig c = config_;
+  c.stepping.subcycling = false;
+  c.tmax = t_pilot;
+  std::vector<std::array<double, 2>> nodes;
+  try {
+    Simulation pilot(c);
+    pilot.on_step = [&nodes](const HorizonTracker& tracker) {
+      for (const auto& node : tracker.history()) // the radii not yet taken, t = 0 first
+        if (nodes.empty() || node[0] > nodes.back()[0])
+          nodes.push_back(node);
+    };
+    pilot.run(nullptr);
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::exception&) { // the run itself meets whatever stopped the pilot
+    return;
+  }
+  // every step of the finest box, from t = 0 on
+  const double dt_fine = schedule_.dt / static_cast<double>(stepper_.steps(layout_.levels() - 1));
+  if (nodes.empty() || nodes.front()[0] != 0.0 || nodes.back()[0] < t_pilot * (1.0 - 1e-12)
+      || static_cast<double>(nodes.size()) < t_pilot / dt_fine)
+    return;
+  tracker_.seed_start(std::move(nodes));
+}
+
 void Simulation::run(Output* out) {
   const Schedule& s = schedule_;
   const double t_end = config_.tmax;
+  seed_horizon_start();
   if (!resumed_) {
     check_finite();
     tracker_.start(t_);
@@ -285,6 +315,8 @@ void Simulation::run(Output* out) {
     step_ = n;
     check_finite();
     tracker_.after_step(n, t_);
+    if (on_step)
+      on_step(tracker_);
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)
     const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
     tracker_.mark_before_rhs();

@@ -87,6 +87,9 @@ public:
   /// convergence study.
   std::function<void(Simulation&)> on_series;
 
+  /// Called after every step, with the horizon's tracker (seed_horizon_start's pilot).
+  std::function<void(const HorizonTracker&)> on_step;
+
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
   bool show_progress = false;
   /// Put after "gbssn1d" in messages on stderr (a study names its member, e.g. " converge N=60").
@@ -162,6 +165,12 @@ private:
   void save_checkpoint(Output* out, const std::optional<double>& h_AH_before_rhs);
   /// Say on stderr when the horizon appears or disappears.
   void report_horizon(const std::optional<MarginalSurface>& h);
+  /// Subcycled boxes with the horizon shift, before the first steps (HorizonTracker::
+  /// wants_start_nodes): the same configuration without subcycling, from t = 0 over the first
+  /// three steps of the hierarchy, searching after each step of the finest box; its radii go to
+  /// the tracker (seed_start). Deterministic, so a resumed run makes the same. Without a horizon
+  /// at each of those steps, or if the pilot fails, nothing is seeded.
+  void seed_horizon_start();
 
   EvolutionConfig config_;
   mesh::MeshLayout layout_;       ///< the levels (one: the single grid)

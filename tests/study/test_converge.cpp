@@ -211,28 +211,27 @@ TEST_CASE("converge: the box-substage shift on seven boxes does not converge (ex
   fs::remove_all(out);
 }
 
-TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) is pre-asymptotic (exit 5), "
-          "the standard gauge converges (exit 0)") {
+TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) converges (exit 0) though the "
+          "members' hierarchies step by 1/3, 1/2, 1/3 M, which a warning names, and the standard "
+          "gauge converges (exit 0)") {
+  // Until the start's pilot (Simulation::seed_horizon_start) the stretch was pre-asymptotic
+  // here (alpha's order of its RMS over time 1.71): h_AH's constant, linear and quadratic
+  // extrapolation over the first 1/3 or 1/2 M steps was a different gauge in each member
+  // (docs/horizon-shift-study.md, Sec. 6.7).
   const fs::path out = scratch("converge_pre_asymptotic");
   std::string err;
   REQUIRE(
       run_study("converge" + seven_boxes + "--tmax 20 --rahA 0.5 --rah0 0.89 --out " + out.string(),
                 &err)
-      == 5);
+      == 0);
   INFO(err);
-  // alpha's differences fall at order 1.7 over the run (errors fall, below 2.5); the norms
-  // converge at about 4
-  CHECK(err.find("completed at t = 20, but pre-asymptotic: alpha at N = 24, 32 and 48: ")
-        != std::string::npos);
-  CHECK(err.find("order of its RMS over time 1.7") != std::string::npos);
-  // the cause, named: the members' hierarchies step by 1/3, 1/2 and 1/3 M (the coarse boxes'
-  // eta cap), and with them h_AH's extrapolation, a different gauge in each member
+  CHECK(err.find("completed at t = 20; converges: every judged order") != std::string::npos);
   CHECK(err.find("warning: the members' hierarchies step by different dt (N = 24: 0.3333 M, N = "
                  "32: 0.5 M, N = 48: 0.3333 M)")
         != std::string::npos);
   std::string text = slurp(out / "convergence.dat");
-  CHECK(text.find("\n# verdict: pre-asymptotic: alpha at N = 24, 32 and 48") != std::string::npos);
-  CHECK(order_line(text, "H_L2_ext", "N = 32 and 48").find(": converges") != std::string::npos);
+  CHECK(text.find("\n# verdict: converges: every judged order") != std::string::npos);
+  CHECK(order_line(text, "alpha", "N = 24, 32 and 48").find(": converges") != std::string::npos);
   REQUIRE(run_study("converge" + seven_boxes + "--tmax 20 --force --out " + out.string(), &err)
           == 0);
   CHECK(err.find("completed at t = 20; converges: every judged order of an RMS over time (norms: "
