@@ -62,9 +62,14 @@ std::function<double(double)> read_horizon_history(const std::string& path, doub
   for (std::size_t k = 0; k < table.rows.size(); ++k) {
     const auto& row = table.rows[k];
     const std::size_t line = table.lines[k];
-    if (row.size() <= std::max(*col_t, *col_r))
-      throw HorizonFileError(fmt::format("line {}: a short data row (no {} column)", line,
-                                         row.size() <= *col_t ? "t" : "r_ah"));
+    // every row as wide as the header: a row cut short (a file copied while it was written,
+    // or truncated) may still hold numbers in the t and r_ah columns, but not the run's
+    if (row.size() != table.columns.size())
+      throw HorizonFileError(fmt::format(
+          "line {}: {} column{} where the header names {} ({}): a row {}", line, row.size(),
+          row.size() == 1 ? "" : "s", table.columns.size(), fmt::join(table.columns, " "),
+          row.size() < table.columns.size() ? "cut short (the file truncated?)"
+                                            : "of another table"));
     const double t_k = row[*col_t], r_k = row[*col_r];
     if (!std::isfinite(t_k))
       throw HorizonFileError(

@@ -5,6 +5,7 @@
 #include "../test_support.hpp"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -46,7 +47,21 @@ TEST_CASE("an h_AH file: every number checked, each refusal naming the line and 
   CHECK(refusal(with_row("inf 0.9")) == "line 3: t = 'inf' is not finite");
   CHECK(refusal(with_row("0 0.9"))
         == "line 3: t = 0 does not follow t = 0 of the row before (times must increase)");
-  CHECK(refusal(with_row("0.5")) == "line 3: a short data row (no r_ah column)");
+  CHECK(refusal(with_row("0.5"))
+        == "line 3: 1 column where the header names 2 (t r_ah): a row cut short (the file "
+           "truncated?)");
+  CHECK(refusal(with_row("0.5 0.9 1")).find("line 3: 3 columns where the header names 2") == 0);
+  // a horizon.dat cut short in its last row: t and r_ah are there, the other columns are not
+  // (the row is not the run's: its r_ah lost digits with them)
+  const std::string columns = "# t r_ah R_ah M_ah n_ah r_in R_in r_in2 R_in2 level\n";
+  auto full = [](double t) { return fmt::format("{} 0.9 1.8 1 2 0.5 0.9 nan nan 0\n", t); };
+  std::string cut = columns;
+  for (int k = 0; k < 4; ++k)
+    cut += full(0.5 * k);
+  CHECK(refusal(cut + "2 1.140")
+        == "line 6: 2 columns where the header names 10 (t r_ah R_ah M_ah n_ah r_in R_in r_in2 "
+           "R_in2 level): a row cut short (the file truncated?)");
+  CHECK(refusal(cut + full(2.0)) == "accepted");
   CHECK(refusal(with_row("0.7 0.9")) == "line 3: t = 0.7: its times are not equally spaced");
   // comments and the blank lines between header and rows count as lines
   CHECK(refusal("# gbssn1d 0.1.0\n\n# t r_ah\n0 0.9\n0.5 0.9\n1 -1\n")
