@@ -25,6 +25,8 @@ bool acts(Acts where, const Params& p) {
     return p.id == InitialDataKind::wormhole;
   case Acts::with_z4c:
     return z4c_on(p);
+  case Acts::with_searches:
+    return shift_on(p) && !uses_hAH_file(p);
   }
   return true;
 }
@@ -37,6 +39,12 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
   switch (where) {
   case Acts::with_shift:
     return {"with --rahA 0", shift_off};
+  case Acts::with_searches:
+    if (!shift_on(p))
+      return {"with --rahA 0", shift_off};
+    return {"with --rah-hAH-file",
+            "h_AH(t) comes from the file, and no horizon search steers the shift (leave the "
+            "file out for searches)"};
   case Acts::with_smooth_normal:
     if (!shift_on(p))
       return {"with --rahA 0", shift_off};
@@ -199,9 +207,12 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), extrapolated (after every step, h_AH at the "
        "RK stages from the last four radii; on two or more boxes the same as substage), step, "
-       "or a number of steps (held in between)"},
-      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches before this time"},
-      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches after this time"},
+       "or a number of steps (held in between); with --rahA != 0 and no --rah-hAH-file",
+       Acts::with_searches},
+      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches for the shift before this time",
+       Acts::with_searches},
+      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches for the shift after this time",
+       Acts::with_searches},
       {"ah-tol", &Params::ah_tol, "Horizon",
        "root-finder tolerance of the horizon radius; at most 1e-3 x the smallest cell width"},
       {"rah-variant", &Params::rah_variant, "Horizon",

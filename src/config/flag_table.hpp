@@ -38,6 +38,7 @@ enum class Acts {
   on_sinh,            ///< --grid sinh
   with_wormhole,      ///< --id wormhole
   with_z4c,           ///< --formulation z4c
+  with_searches,      ///< horizon searches steer the shift: shift_on(), no --rah-hAH-file
 };
 
 /// Whether a flag that acts `where` acts in `p`.

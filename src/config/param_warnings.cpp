@@ -48,7 +48,8 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && shift_on(p)
-      && p.ah_every != SearchEvery::substage && p.ah_every != SearchEvery::extrapolated)
+      && !uses_hAH_file(p) && p.ah_every != SearchEvery::substage
+      && p.ah_every != SearchEvery::extrapolated)
     w.push_back(fmt::format(
         "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
         "jump in time, and the fine boxes' quadratic time interpolation across the jumps is "
@@ -181,6 +182,17 @@ void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
         "boundary, whose condition assumes the Gamma-driver's shift alone (leave --rah-rcut out "
         "for its default rmax/2)",
         num(*p.rah_rcut), num(p.rmax)));
+  // --rah-variant midstep-update and box-substage change when the horizon is searched for;
+  // with --rah-hAH-file nothing is searched for (--ah-every, --ah-tmin and --ah-tmax are idle
+  // flags then: config/flag_table.cpp)
+  if (uses_hAH_file(p)
+      && (p.rah_variant == ShiftVariant::midstep_update
+          || p.rah_variant == ShiftVariant::box_substage))
+    w.push_back(fmt::format(
+        "--rah-variant {} does nothing with --rah-hAH-file: it changes when h_AH is searched "
+        "for, and h_AH(t) comes from the file (no searches); the run is --rah-variant "
+        "consistent's",
+        p.rah_variant.name()));
   if (p.rah_hAH_file.empty() && p.tmax > 0.0 && p.ah_tmin >= p.tmax)
     w.push_back(fmt::format(
         "--ah-tmin {} is at or after --tmax {}: no horizon search runs, so the horizon-adjusting "

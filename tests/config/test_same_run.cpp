@@ -10,9 +10,11 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +40,14 @@ Params resolved(const std::string& args) {
   Params p = parse_evolve_args(words(args));
   resolve_defaults(p);
   return p;
+}
+
+/// The names of the flags idle_flags() calls idle in `p`.
+std::set<std::string> idle_names(const Params& p) {
+  std::set<std::string> names;
+  for (const auto& group : idle_flags(p))
+    names.insert(group.flags.begin(), group.flags.end());
+  return names;
 }
 
 /// The numbers a run wrote: every .dat file's lines that are not '#' comments (headers echo
@@ -89,6 +99,7 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     std::string base, flag, acting; // the flag is idle with `base`, acts with `acting`
   };
   const std::string shifted = trumpet + " --rahA 0.5 --rah0 1";
+  const std::string hAH = shifted + " --rah-hAH-file " + file.string();
   const std::vector<Case> cases{
       {trumpet, "--rah0 0.6", trumpet + " --rahA 0.5"},
       // an explicit profile: auto sets the width itself (--rah-width is then not used)
@@ -112,25 +123,36 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       // Z4c's damping does nothing in BSSN
       {trumpet, "--kappa1 0.3", trumpet + " --formulation z4c"},
       {trumpet, "--kappa2 0.5", trumpet + " --formulation z4c"},
+      // the searches steer the shift alone: idle without it, and with an h_AH file
+      {trumpet, "--ah-every 4", shifted},
+      {trumpet, "--ah-every extrapolated", shifted},
+      {trumpet, "--ah-tmin 0.5", shifted},
+      {trumpet, "--ah-tmax 0.5", shifted},
+      {hAH, "--ah-every 4", shifted},
+      {hAH, "--ah-every extrapolated", shifted},
+      {hAH, "--ah-tmin 0.5", shifted},
+      {hAH, "--ah-tmax 0.5", shifted},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
     INFO("flag " << c.flag << " with " << c.base);
     // the table: idle with the base, and the same run key
     const Params base = resolved(c.base), with = resolved(c.base + " " + c.flag);
-    CHECK_FALSE(idle_flags(with).empty());
-    CHECK(idle_flags(base).empty());
+    const std::string name = c.flag.substr(2, c.flag.find(' ') - 2);
+    CHECK(idle_names(with).count(name) == 1);
+    CHECK(idle_names(base).count(name) == 0);
+    CHECK(idle_names(base).size() + 1 == idle_names(with).size());
     CHECK(run_key(with) == run_key(base));
     // the runs: the same numbers
     CHECK(numbers_of(c.base + " " + c.flag, "idle_a") == numbers_of(c.base, "idle_b"));
     // where it acts: another key, other numbers
     const Params acting = resolved(c.acting), acting_with = resolved(c.acting + " " + c.flag);
-    CHECK(idle_flags(acting_with).empty());
+    CHECK(idle_names(acting_with).count(name) == 0);
     CHECK(run_key(acting_with) != run_key(acting));
     if (c.flag.rfind("--rah-variant midstep", 0) == 0 || c.flag.rfind("--rah-hAH", 0) == 0
         || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
         || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
-        || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3")
+        || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5")
       CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
   }
   fs::remove(file);
@@ -171,4 +193,28 @@ TEST_CASE("the effective configuration: without --out and --force, idle flags at
   CHECK(e.ko_sigma == 0.2);
   CHECK(e.box_taper == p.box_taper); // resolved on a single grid: 0, kept
   CHECK(run_key(p) == config_text(e));
+}
+
+TEST_CASE("the horizon searches' flags do nothing without the shift or with an h_AH file, "
+          "and the search schedules of --rah-variant nothing with the file: warned about") {
+  auto warned = [](const Params& p, const std::string& start) {
+    const auto w = warnings(p);
+    return std::count_if(w.begin(), w.end(),
+                         [&](const std::string& s) { return s.rfind(start, 0) == 0; });
+  };
+  // the searches with the shift off
+  const auto off = idle_flags(resolved(trumpet + " --ah-every 4 --ah-tmin 1 --ah-tmax 2"));
+  REQUIRE(off.size() == 1);
+  CHECK(off[0].warning().rfind("--ah-every 4, --ah-tmin 1, --ah-tmax 2 do nothing with --rahA 0", 0)
+        == 0);
+  // midstep-update changes when h_AH is searched for: nothing is with an h_AH file
+  const std::string file = trumpet + " --rahA 0.5 --rah-hAH-file h.dat";
+  const Params midstep = resolved(file + " --ah-every step --rah-variant midstep-update");
+  CHECK(warned(midstep, "--rah-variant midstep-update does nothing with --rah-hAH-file") == 1);
+  const auto idle = idle_flags(midstep);
+  REQUIRE(idle.size() == 1);
+  CHECK(idle[0].warning().rfind("--ah-every step does nothing with --rah-hAH-file: ", 0) == 0);
+  CHECK(warned(resolved(file), "--rah-variant") == 0);
+  CHECK(warned(resolved(file + " --ah-tmin 1"), "--ah-tmin 1 does nothing with --rah-hAH-file")
+        == 1);
 }
