@@ -19,6 +19,8 @@ bool acts(Acts where, const Params& p) {
     return shift_on(p) && p.rah_normal == ShiftNormal::smooth;
   case Acts::on_boxes:
     return p.grid == RadialGrid::boxes;
+  case Acts::with_box_taper:
+    return p.grid == RadialGrid::boxes && p.box_taper.value_or(0.0) > 0.0;
   case Acts::on_sinh:
     return p.grid == RadialGrid::sinh;
   case Acts::with_wormhole:
@@ -49,6 +51,10 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
     if (!shift_on(p))
       return {"with --rahA 0", shift_off};
     return {"with --rah-normal " + p.rah_normal.name(), "chi_s enters only --rah-normal smooth"};
+  case Acts::with_box_taper:
+    if (p.grid == RadialGrid::boxes)
+      return {"with --box-taper 0", "no box is tapered (give --box-taper F, 0 < F <= 0.5)"};
+    [[fallthrough]];
   case Acts::on_boxes:
   case Acts::on_sinh:
     return {"with --grid " + p.grid.name(),
@@ -94,7 +100,7 @@ std::vector<ParamSpec> evolution_specs() {
       {"box-taper-from", &Params::box_taper_from, "Grid",
        "--grid boxes: --box-taper only on the boxes that reach beyond this radius, in units "
        "of M",
-       Acts::on_boxes},
+       Acts::with_box_taper},
       {"dr-inner", &Params::dr_inner, "Grid",
        "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
        "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)",

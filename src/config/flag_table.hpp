@@ -35,6 +35,7 @@ enum class Acts {
   with_shift,         ///< the horizon-adjusting shift is on: shift_on()
   with_smooth_normal, ///< the shift is on with --rah-normal smooth
   on_boxes,           ///< --grid boxes
+  with_box_taper,     ///< --grid boxes with a tapered buffer (--box-taper > 0)
   on_sinh,            ///< --grid sinh
   with_wormhole,      ///< --id wormhole
   with_z4c,           ///< --formulation z4c

@@ -57,6 +57,17 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
         "docs/horizon-shift-study.md, Sec. 13); use --ah-every substage (the default), "
         "--time-interp rk-stages, or --no-subcycling",
         p.ah_every.name()));
+  // A taper radius given beyond every fine box: the taper acts on the boxes that reach beyond
+  // it (the largest fine box ends at rmax/2), so it would taper none (the default radius, 16 M,
+  // leaves the small grids of tests and short runs untapered by design: not warned about)
+  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.box_taper.value_or(0.0) > 0.0
+      && p.box_taper_from != Params{}.box_taper_from && !(0.5 * p.rmax > p.box_taper_from * p.M))
+    w.push_back(fmt::format(
+        "--box-taper-from {} (M) lies beyond every fine box (the largest ends at r = rmax/2 = "
+        "{} M): --box-taper {} tapers no box; give a radius below {} to taper the boxes that "
+        "reach beyond it, or --box-taper 0 to say there is no taper",
+        num(p.box_taper_from), num(0.5 * p.rmax / p.M), num(*p.box_taper),
+        num(0.5 * p.rmax / p.M)));
   // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
   // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
   // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at

@@ -100,6 +100,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
   };
   const std::string shifted = trumpet + " --rahA 0.5 --rah0 1";
   const std::string hAH = shifted + " --rah-hAH-file " + file.string();
+  const std::string boxes = "--id 1log-trumpet --grid boxes --levels 3 --N 32 --rmax 16 --tmax 1 "
+                            "--dt-series 0.25 --dt-profiles 0.5";
   const std::vector<Case> cases{
       {trumpet, "--rah0 0.6", trumpet + " --rahA 0.5"},
       // an explicit profile: auto sets the width itself (--rah-width is then not used)
@@ -132,6 +134,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       {hAH, "--ah-every extrapolated", shifted},
       {hAH, "--ah-tmin 0.5", shifted},
       {hAH, "--ah-tmax 0.5", shifted},
+      // a taper radius without a taper
+      {boxes + " --box-taper 0", "--box-taper-from 2", boxes},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
@@ -152,7 +156,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     if (c.flag.rfind("--rah-variant midstep", 0) == 0 || c.flag.rfind("--rah-hAH", 0) == 0
         || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
         || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
-        || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5")
+        || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5"
+        || c.flag == "--box-taper-from 2")
       CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
   }
   fs::remove(file);
@@ -217,4 +222,25 @@ TEST_CASE("the horizon searches' flags do nothing without the shift or with an h
   CHECK(warned(resolved(file), "--rah-variant") == 0);
   CHECK(warned(resolved(file + " --ah-tmin 1"), "--ah-tmin 1 does nothing with --rah-hAH-file")
         == 1);
+}
+
+TEST_CASE("a taper radius is warned about where it tapers nothing: without a taper, or beyond "
+          "every fine box") {
+  const std::string boxes = "--id 1log-trumpet --grid boxes --levels 3 --N 32 --rmax 16 --tmax 1";
+  auto warned = [](const Params& p, const std::string& start) {
+    const auto w = warnings(p);
+    return std::count_if(w.begin(), w.end(),
+                         [&](const std::string& s) { return s.rfind(start, 0) == 0; });
+  };
+  const std::string beyond = "--box-taper-from 1000000 (M) lies beyond every fine box (the "
+                             "largest ends at r = rmax/2 = 8 M): --box-taper 0.5 tapers no box";
+  CHECK(warned(resolved(boxes + " --box-taper-from 1e6"), beyond) == 1);
+  CHECK(warned(resolved(boxes + " --box-taper-from 8"), "--box-taper-from 8 (M)") == 1);
+  CHECK(warned(resolved(boxes + " --box-taper-from 7.5"), "--box-taper-from") == 0);
+  CHECK(warned(resolved(boxes), "--box-taper-from") == 0); // the default 16 M: by design
+  // the taper's radius without a taper: an idle flag
+  const auto untapered = idle_flags(resolved(boxes + " --box-taper 0 --box-taper-from 8"));
+  REQUIRE(untapered.size() == 1);
+  CHECK(untapered[0].warning().rfind("--box-taper-from 8 does nothing with --box-taper 0: ", 0)
+        == 0);
 }
