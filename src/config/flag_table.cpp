@@ -27,6 +27,8 @@ bool acts(Acts where, const Params& p) {
     return p.id == InitialDataKind::wormhole;
   case Acts::with_z4c:
     return z4c_on(p);
+  case Acts::with_z4c_damping:
+    return damped_z4c(p);
   case Acts::with_searches:
     return shift_on(p) && !uses_hAH_file(p);
   }
@@ -61,6 +63,11 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
             "only the sinh grid has an innermost width to set, and only boxes have boxes"};
   case Acts::with_wormhole:
     return {"with --id " + p.id.name(), "the trumpets' data fix their own lapse"};
+  case Acts::with_z4c_damping:
+    if (z4c_on(p))
+      return {"with --kappa1 0",
+              "kappa2 only ever multiplies kappa1 in Z4c's damping terms (give --kappa1 > 0)"};
+    [[fallthrough]];
   case Acts::with_z4c:
     return {"with --formulation " + p.formulation.name(),
             "BSSN has no constraint damping (give --formulation z4c)"};
@@ -118,8 +125,9 @@ std::vector<ParamSpec> evolution_specs() {
        "(docs/z4c-study.md)",
        Acts::with_z4c},
       {"kappa2", &Params::kappa2, "Formulation",
-       "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard)",
-       Acts::with_z4c},
+       "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard; it "
+       "multiplies kappa1, so does nothing with --kappa1 0)",
+       Acts::with_z4c_damping},
       {"z4c-lapse-adm", &Params::z4c_lapse_adm, "Formulation",
        "Z4c, for the study: the 1+log lapse driven by the ADM K = K-hat + 2 Theta (BSSN's "
        "slicing) instead of K-hat",

@@ -39,6 +39,7 @@ enum class Acts {
   on_sinh,            ///< --grid sinh
   with_wormhole,      ///< --id wormhole
   with_z4c,           ///< --formulation z4c
+  with_z4c_damping,   ///< --formulation z4c with its damping on (kappa1 > 0): damped_z4c()
   with_searches,      ///< horizon searches steer the shift: shift_on(), no --rah-hAH-file
 };
 

@@ -125,6 +125,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       // Z4c's damping does nothing in BSSN
       {trumpet, "--kappa1 0.3", trumpet + " --formulation z4c"},
       {trumpet, "--kappa2 0.5", trumpet + " --formulation z4c"},
+      // kappa2 only ever multiplies kappa1 in Z4c's equations
+      {trumpet + " --formulation z4c --kappa1 0", "--kappa2 0.5", trumpet + " --formulation z4c"},
       // the searches steer the shift alone: idle without it, and with an h_AH file
       {trumpet, "--ah-every 4", shifted},
       {trumpet, "--ah-every extrapolated", shifted},
@@ -243,4 +245,11 @@ TEST_CASE("a taper radius is warned about where it tapers nothing: without a tap
   REQUIRE(untapered.size() == 1);
   CHECK(untapered[0].warning().rfind("--box-taper-from 8 does nothing with --box-taper 0: ", 0)
         == 0);
+}
+
+TEST_CASE("--kappa2 does nothing with --kappa1 0 (it only ever multiplies kappa1): warned about") {
+  const auto z4c = idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5"));
+  REQUIRE(z4c.size() == 1);
+  CHECK(z4c[0].warning().rfind("--kappa2 0.5 does nothing with --kappa1 0: ", 0) == 0);
+  CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa2 0.5")).empty());
 }
