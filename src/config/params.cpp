@@ -68,6 +68,14 @@ void resolve_defaults(Params& p) {
     // `auto` is written to config.toml as the profile and width it stands for, so that a
     // checkpoint or a sweep member made when auto meant another width is told apart (not
     // resumed with the new one); M is validated afterwards
+    // auto chooses the width as well: a width given with it would be dropped (config.toml
+    // would record auto's), so it is refused (the unset width is the table's default, as the
+    // refinement flags on a single grid are told from theirs)
+    if (p.rah_profile == ShiftProfile::automatic && p.rah_width != Params{}.rah_width)
+      throw ParamError("--rah-width", fmt::format("{}", p.rah_width),
+                       "not used by --rah-profile auto (the default), which chooses the "
+                       "width itself (3 max(rah0, M) to stretch, 1 M to shrink); give "
+                       "--rah-profile rational, rational3, gauss or gauss3 with --rah-width");
     if (p.rah_profile == ShiftProfile::automatic && std::isfinite(p.M) && p.M > 0.0) {
       HorizonShiftParams hs;
       hs.profile = ShiftProfile::automatic;

@@ -179,7 +179,9 @@ bool shrinks_wormhole(const Params& p);
 int levels_rule(double rmax, double M);
 
 /// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax, levels of boxes);
-/// after it, eta and norm_rmax hold values, and levels does for --grid boxes.
+/// after it, eta and norm_rmax hold values, and levels does for --grid boxes. Throws
+/// ParamError for a value the rule it resolves would drop (--rah-width with --rah-profile
+/// auto and the shift on).
 void resolve_defaults(Params& p);
 
 /// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.
