@@ -284,7 +284,7 @@ const std::map<std::string, std::string>& default_rules() {
       {"ah-tmax", "none"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"box-taper", "0.5 on boxes (0 with Z4c's damping)"}};
+      {"box-taper", "0.5 on two or more boxes (0 with Z4c's damping)"}};
   return rules;
 }
 

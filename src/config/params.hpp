@@ -36,8 +36,8 @@ struct Params {
   bool no_subcycling = false; ///< boxes: every level steps with the finest dt
   /// boxes: the fraction of a box's cells (outermost) blended towards its parent at every
   /// synchronisation, 0 ... 0.5 (mesh::StepperOptions::taper_cells = round(box_taper N));
-  /// unset: 0.5 on boxes, 0 on a single grid (resolve_defaults; docs/horizon-shift-study.md
-  /// Sec. 6.6)
+  /// unset: 0.5 on two or more boxes, 0 on a single grid or one box (resolve_defaults;
+  /// docs/horizon-shift-study.md Sec. 6.6)
   std::optional<double> box_taper;
   /// boxes: only boxes reaching beyond this radius / M are tapered
   double box_taper_from =

@@ -47,6 +47,21 @@ void validate_refinement_flags(const Params& p) {
     if (!(p.box_taper_from >= 0.0 && std::isfinite(p.box_taper_from)))
       throw ParamError("--box-taper-from", num(p.box_taper_from),
                        "must be a finite radius >= 0 (in units of M)");
+    if (*p.levels == 1) {
+      // one box is a single grid: what only fine boxes have means nothing, refused as there
+      const std::string single = "needs --levels 2 or more (with --levels 1 the boxes are a "
+                                 "single grid, with no fine box)";
+      if (p.time_interp != Params{}.time_interp)
+        throw ParamError("--time-interp", p.time_interp.name(), single);
+      if (p.no_subcycling)
+        throw ParamError("--no-subcycling", single);
+      if (p.box_taper.value() != 0.0)
+        throw ParamError("--box-taper", num(*p.box_taper), single);
+      if (p.box_taper_from != Params{}.box_taper_from)
+        throw ParamError("--box-taper-from", num(p.box_taper_from), single);
+      if (p.rah_variant == ShiftVariant::box_substage)
+        throw ParamError("--rah-variant", p.rah_variant.name(), single);
+    }
     if (*p.levels > 1 && p.N % 2 != 0)
       throw ParamError("--N", std::to_string(p.N),
                        "must be even with --grid boxes: each coarse cell holds two fine cells, "
