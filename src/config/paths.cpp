@@ -113,6 +113,14 @@ void refuse_dangling_link(const std::string& flag, const std::filesystem::path& 
 void check_path(const std::string& flag, const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   const std::string text = path.string();
+  // '-' is standard input or output to many tools (the plot scripts read it as standard
+  // input; sweep --emit-tasks - writes to standard output): here it would be a file or folder
+  // of that name, made or read without a word
+  if (text == "-")
+    throw ParamError(flag, "-",
+                     "not standard input or output here: it would name a file or folder "
+                     "called '-' (a run writes several files into a folder); give ./- if that "
+                     "is meant");
   if (text.size() > 4095)
     throw ParamError(flag, shown_path(text), "is longer than 4095 bytes, the system's limit");
   for (const auto& part : path)

@@ -18,7 +18,8 @@ bool folder_is_empty(const std::filesystem::path& dir);
 
 /// Refuses (ParamError naming `flag`) a path the file system cannot take: a name in it longer
 /// than 255 bytes or the whole longer than 4095, a loop of symbolic links, a part that is not a
-/// folder, a folder it cannot search. A path that does not exist yet is fine.
+/// folder, a folder it cannot search, and '-' (not standard input or output: ./- names a file
+/// of that name). A path that does not exist yet is fine.
 void check_path(const std::string& flag, const std::filesystem::path& path);
 
 /// check_path(), and the path names a regular file that can be read: not missing, not a

@@ -135,6 +135,28 @@ TEST_CASE("--out: an existing non-empty directory is refused and left untouched"
   fs::remove_all(out);
 }
 
+TEST_CASE("--out -: refused (not standard output), and no folder named '-' made") {
+  const fs::path dir = scratch("dash_out");
+  fs::create_directories(dir);
+  const fs::path err = scratch("dash_out_err");
+  for (const std::string command :
+       {"evolve --tmax 0", "sweep --sweep N=32,40 --tmax 0", "converge --N 32,48,64 --tmax 0"}) {
+    INFO(command);
+    // in a folder of its own, where '-' would be made
+    const std::string line = "cd " + dir.string() + " && " + GBSSN1D_EXECUTABLE + " " + command
+                             + " --out - >/dev/null 2>" + err.string();
+    const int raw = std::system(line.c_str());
+    CHECK((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 2);
+    const std::string text = slurp(err);
+    CHECK(text.find("error: --out = - is invalid: not standard input or output here")
+          != std::string::npos);
+    CHECK(count_lines(text) == 1);
+    CHECK(fs::is_empty(dir));
+  }
+  fs::remove(err);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("--out: a directory that cannot be created is refused") {
   const fs::path file = scratch("plainfile");
   std::ofstream(file) << "x\n";
