@@ -326,6 +326,14 @@ void validate_grid_and_steps(const Params& p) {
                                  dt));
   // The step count (the step is the CFL step whatever the output cadence) and the row counts.
   const double n_steps = std::ceil(p.tmax / dt - 1e-9);
+  // a tmax within 1e-9 steps of 0 takes no step (levels.cpp, the same count): the run would
+  // end "completed at t = 0" under a header saying this tmax
+  if (p.tmax > 0.0 && n_steps < 1.0)
+    throw ParamError("--tmax", num(p.tmax),
+                     fmt::format("below 1e-9 of the time step dt = {:.6g}: the run would take "
+                                 "no step and end at t = 0 (--tmax 0 writes the initial data "
+                                 "only)",
+                                 dt));
   if (n_steps > steps_max)
     throw ParamError(
         "--tmax", num(p.tmax),
