@@ -133,6 +133,12 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     }
   }
   options.fields = split_list("--fields", fields);
+  // each field once: a field twice would be two equal columns of every table
+  for (std::size_t k = 0; k < options.fields.size(); ++k)
+    for (std::size_t j = 0; j < k; ++j)
+      if (options.fields[j] == options.fields[k])
+        throw ParamError("--fields", printable(fields),
+                         fmt::format("lists {} twice", printable(options.fields[k])));
   options.scaled_times.clear();
   if (!times.empty())
     for (const auto& t : split_list("--scaled-times", times))

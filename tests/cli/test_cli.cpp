@@ -239,6 +239,9 @@ TEST_CASE("input guards: lists, repeats, config values, sweep axes, -j, misleadi
   check_study_refused("converge --N 40,80,160 --scaled-times 1,x --tmax 1 --out OUT",
                       "--scaled-times");
   check_study_refused("converge --N 40,80,160 -j 100000 --tmax 1 --out OUT", "-j");
+  // a field twice would be two equal columns; an empty item in a list is refused everywhere
+  check_study_refused("converge --N 40,80,160 --fields alpha,alpha --tmax 1 --out OUT",
+                      "--fields = alpha,alpha is invalid: lists alpha twice");
   check_study_refused("sweep -j 100000 --sweep N=100,200 --tmax 0 --out OUT", "-j");
   check_study_refused("sweep --sweep cfl=0.2,0.3 --sweep cfl=0.25 --tmax 0 --out OUT", "cfl");
   check_study_refused("sweep --sweep N=100,200 --cfl 7 --tmax 0 --out OUT", "--cfl");
