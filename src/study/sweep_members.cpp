@@ -59,6 +59,15 @@ SweepAxis parse_sweep_axis(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     throw ParamError("--sweep", text, "must look like flag=value1,value2,...");
+  // an empty item (a trailing comma, "32,,40") is refused, as in converge's lists: split()
+  // would drop a trailing one without a word
+  const auto empty_item = [](const std::string& list) {
+    return list.empty() || list.front() == ',' || list.back() == ','
+           || list.find(",,") != std::string::npos;
+  };
+  if (empty_item(text.substr(0, eq)) || empty_item(text.substr(eq + 1)))
+    throw ParamError("--sweep", printable(text),
+                     "must be a comma-separated list without empty items (flag=value1,value2,...)");
   SweepAxis axis;
   axis.flags = split(text.substr(0, eq), ',');
   for (const auto& flag : axis.flags) {

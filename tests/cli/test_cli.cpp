@@ -242,6 +242,13 @@ TEST_CASE("input guards: lists, repeats, config values, sweep axes, -j, misleadi
   // a field twice would be two equal columns; an empty item in a list is refused everywhere
   check_study_refused("converge --N 40,80,160 --fields alpha,alpha --tmax 1 --out OUT",
                       "--fields = alpha,alpha is invalid: lists alpha twice");
+  check_study_refused("converge --N 40,80,160 --factors 1,1.5,2, --tmax 1 --out OUT", "--factors");
+  check_study_refused("sweep --sweep N=32, --tmax 0 --out OUT",
+                      "--sweep = N=32, is invalid: must be a comma-separated list without empty "
+                      "items");
+  check_study_refused("sweep --sweep N=,32 --tmax 0 --out OUT", "--sweep");
+  check_study_refused("sweep --sweep N=32,,40 --tmax 0 --out OUT", "--sweep");
+  check_study_refused("sweep --sweep N,=32 --tmax 0 --out OUT", "--sweep");
   check_study_refused("sweep -j 100000 --sweep N=100,200 --tmax 0 --out OUT", "-j");
   check_study_refused("sweep --sweep cfl=0.2,0.3 --sweep cfl=0.25 --tmax 0 --out OUT", "cfl");
   check_study_refused("sweep --sweep N=100,200 --cfl 7 --tmax 0 --out OUT", "--cfl");
