@@ -427,8 +427,8 @@ int run_command_line(int argc, char** argv) {
     say("gbssn1d: error: {}\n", unexpected_arguments(app));
     return 2;
   } catch (const CLI::ParseError& e) {
-    std::string what = e.what();
-    std::replace(what.begin(), what.end(), '\n', ' ');
+    // CLI11's message quotes the value: its control characters escaped, on one line
+    const std::string what = one_line(e.what());
     say("gbssn1d: error: {}{}\n", what, origins.note_in(what));
     return 2;
   } catch (const ParamError& e) {

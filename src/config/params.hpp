@@ -126,14 +126,29 @@ inline std::string shown_value(const std::string& value) {
   return value.substr(0, 100) + "... (" + std::to_string(value.size()) + " bytes)";
 }
 
+/// A message on one line: its control characters (a newline or tab in a value from a config
+/// file or a quoted argument) as \xNN, as printable() writes them; other bytes as they are.
+inline std::string one_line(const std::string& text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f)
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 0xf];
+    else
+      out += ch;
+  }
+  return out;
+}
+
 class ParamError : public std::runtime_error {
 public:
   ParamError(const std::string& flag, const std::string& value, const std::string& why)
-      : std::runtime_error(flag + " = " + shown_value(value) + " is invalid: " + why), flag_(flag) {
-  }
+      : std::runtime_error(one_line(flag + " = " + shown_value(value) + " is invalid: " + why)),
+        flag_(flag) {}
   /// "flag: message", for errors that are not about one value.
   ParamError(const std::string& flag, const std::string& message)
-      : std::runtime_error(flag + ": " + message), flag_(flag) {}
+      : std::runtime_error(one_line(flag + ": " + message)), flag_(flag) {}
   const std::string& flag() const { return flag_; }
 
 private:

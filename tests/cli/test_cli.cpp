@@ -327,6 +327,30 @@ TEST_CASE("numbers are decimal on every path: 032 is 32 in flags, config files, 
     fs::remove_all(d);
 }
 
+TEST_CASE("a value's control characters are escaped in error messages: one line each") {
+  const fs::path dir = scratch("ctl_values");
+  fs::create_directories(dir);
+  const fs::path cfg = dir / "c.toml";
+  // a config string with a newline and a tab, in a choice (ParamError) and a number (CLI11)
+  for (const auto& [line, shown] : std::vector<std::pair<std::string, std::string>>{
+           {"id = \"worm\\nhole\"\n", "--id = worm\\x0ahole is invalid"},
+           {"grid = \"uni\\tform\"\n", "--grid = uni\\x09form is invalid"},
+           {"rah-hAH-file = \"h\\n.dat\"\nrahA = 0.5\n", "h\\x0a.dat"},
+           {"N = \"6\\n4\"\n", "\\x0a"}}) {
+    INFO(line);
+    std::ofstream(cfg) << line;
+    const Result r =
+        run("evolve --tmax 0 --config " + cfg.string() + " --out " + (dir / "out").string());
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find(shown) != std::string::npos);
+    CHECK(r.err.find('\t') == std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "out"));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("config files read back every string exactly: '#', quotes, backslashes, newlines") {
   for (const std::string value :
        {"a#b", "q\"b", "back\\slash", "nl\nx", "tab\tx", "sq'x", "ctl\x01x", "trailing "}) {
