@@ -33,12 +33,12 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
           num(horizon), shift_on(p) ? ", --rah0" : "", trusted, finest_extent, p.N));
   }
   // Quadratic time interpolation loses its order at the default step (Sec. 11: six boxes,
-  // h = 2 M, orders 0.12, 1.03 at cfl 0.5 against 1.4 or more at 0.25)
+  // h = 2 M, orders 3.49, 1.76 at cfl 0.5 against 4.37, 3.92 at 0.25)
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && p.cfl > 0.25)
     w.push_back(fmt::format(
         "--time-interp quadratic with --cfl {}: its fine boundaries lose their order above cfl "
-        "0.25 (orders 0.1-1 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
+        "0.25 (order 1.8 at M/16-M/24 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
         "0.25, or the default rk-stages",
         num(p.cfl)));
   // A held h_AH makes beta_H jump in time at every search; quadratic time interpolation of a
