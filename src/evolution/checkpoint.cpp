@@ -21,11 +21,14 @@ std::uint64_t fnv1a(std::string_view bytes) {
 
 namespace {
 
-// Format 3: the magic line (with the format's number), the fields below in order (native byte
+// Format 4: the magic line (with the format's number), the fields below in order (native byte
 // order, as the file never leaves the machine type that wrote it), then the FNV-1a 64-bit hash
-// of every byte before it. Format 2 is format 3 without the box levels after level 0's state
-// (it is read as a single grid's); format 1 had no hash and is refused by name.
-constexpr std::string_view magic = "gbssn1d checkpoint 3\n";
+// of every byte before it. Format 3 is format 4 without the output files' body hashes after
+// their marks (a resume then checks their lengths alone); format 2 is format 3 without the box
+// levels after level 0's state (it is read as a single grid's); format 1 had no hash and is
+// refused by name.
+constexpr std::string_view magic = "gbssn1d checkpoint 4\n";
+constexpr std::string_view magic_3 = "gbssn1d checkpoint 3\n";
 constexpr std::string_view magic_2 = "gbssn1d checkpoint 2\n";
 constexpr std::string_view magic_prefix = "gbssn1d checkpoint ";
 /// The largest checkpoint read (16 GiB: a grid of 2e8 points); anything larger is not one.
@@ -78,7 +81,8 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   put(std::uint8_t{c.reported});
   put(c.evaluations);
   for (std::uint64_t v : {c.marks.series, c.marks.profiles, c.marks.horizons, c.marks.series_header,
-                          c.marks.profiles_header, c.marks.horizons_header})
+                          c.marks.profiles_header, c.marks.horizons_header, c.marks.series_hash,
+                          c.marks.profiles_hash, c.marks.horizons_hash})
     put(v);
   auto put_state = [&](const State& u) {
     put(std::uint64_t{u.size()});
@@ -115,8 +119,8 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
 namespace {
 
 /// The bytes of a checkpoint file whose magic line and checksum are right (the checksum
-/// removed), and whether it is of format 2; CheckpointError otherwise.
-std::pair<std::string, bool> checked_bytes(const std::filesystem::path& file) {
+/// removed), and its format (2, 3 or 4); CheckpointError otherwise.
+std::pair<std::string, int> checked_bytes(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw CheckpointError(fmt::format("{} is not a regular file", file.string()));
@@ -133,11 +137,14 @@ std::pair<std::string, bool> checked_bytes(const std::filesystem::path& file) {
       throw CheckpointError(fmt::format("cannot read {}", file.string()));
   }
   const std::string_view all(bytes);
-  const bool format_2 = all.substr(0, magic_2.size()) == magic_2;
-  if (all.substr(0, magic.size()) != magic && !format_2) {
+  const int format = all.substr(0, magic.size()) == magic       ? 4
+                     : all.substr(0, magic_3.size()) == magic_3 ? 3
+                     : all.substr(0, magic_2.size()) == magic_2 ? 2
+                                                                : 0;
+  if (format == 0) {
     if (all.substr(0, magic_prefix.size()) == magic_prefix)
       throw CheckpointError(fmt::format("{} was written in another checkpoint format ({}); this "
-                                        "version reads formats 2 and 3",
+                                        "version reads formats 2, 3 and 4",
                                         file.string(),
                                         all.substr(0, all.find('\n')).substr(magic_prefix.size())));
     throw CheckpointError(fmt::format("{} is not a gbssn1d checkpoint", file.string()));
@@ -152,16 +159,16 @@ std::pair<std::string, bool> checked_bytes(const std::filesystem::path& file) {
         "{} is corrupt: its checksum does not match (truncated, or changed since written)",
         file.string()));
   bytes.resize(body.size());
-  return {std::move(bytes), format_2};
+  return {std::move(bytes), format};
 }
 
 } // namespace
 
 Checkpoint read_checkpoint(const std::filesystem::path& file) {
-  const auto [bytes, format_2] = checked_bytes(file);
+  const auto [bytes, format] = checked_bytes(file);
   const std::string_view body(bytes);
 
-  Reader r(body.substr(magic.size()), file); // both magic lines have the same length
+  Reader r(body.substr(magic.size()), file); // the magic lines have the same length
   Checkpoint c;
   const auto n_config = r.get<std::uint64_t>();
   if (n_config > r.left())
@@ -190,6 +197,10 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
        {&c.marks.series, &c.marks.profiles, &c.marks.horizons, &c.marks.series_header,
         &c.marks.profiles_header, &c.marks.horizons_header})
     *v = r.get<std::uint64_t>();
+  c.marks.hashed = format >= 4;
+  if (c.marks.hashed)
+    for (std::uint64_t* v : {&c.marks.series_hash, &c.marks.profiles_hash, &c.marks.horizons_hash})
+      *v = r.get<std::uint64_t>();
   auto get_state = [&](State& u) {
     const auto n = r.get<std::uint64_t>();
     if (n > r.left() / sizeof(double))
@@ -209,7 +220,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
     return has ? std::optional<double>(v) : std::nullopt;
   };
   get_state(c.u);
-  if (!format_2) {
+  if (format >= 3) {
     c.finer.resize(get_count(sizeof(std::uint64_t)));
     for (State& u : c.finer)
       get_state(u);

@@ -142,6 +142,7 @@ DataFile::DataFile(const std::filesystem::path& path, const std::string& paramet
   const std::string text = header_with_columns(parameter_header, columns);
   std::fputs(text.c_str(), file_);
   header_size_ = text.size();
+  in_body_ = true;
   flush();
 }
 
@@ -165,6 +166,7 @@ DataFile::DataFile(const std::filesystem::path& path, const std::string& paramet
   const std::filesystem::path tmp = path.string() + ".resume";
   file_ = open_for_writing(tmp);
   write(head.data(), head.size());
+  in_body_ = true;
   write(body.data(), body.size());
   header_size_ = head.size();
   flush_buffer(); // (not flush(): the file is not at its path until renamed)
@@ -265,6 +267,25 @@ void Output::check_resumable(const std::filesystem::path& dir, const OutputMarks
       throw OutputError(fmt::format("{} is shorter than at the checkpoint ({} bytes, {} expected)",
                                     path.string(), size, mark.second));
   }
+  if (!m.hashed)
+    return; // a checkpoint of format 3 or earlier: lengths alone
+  const std::pair<const char*, std::uint64_t> hashes[] = {{"timeseries.dat", m.series_hash},
+                                                          {"profiles.dat", m.profiles_hash},
+                                                          {"horizon.dat", m.horizons_hash}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::filesystem::path path = dir / files[k].first;
+    const auto [from, to] = files[k].second;
+    std::ifstream in(path, std::ios::binary);
+    std::string rows(to - from, '\0');
+    if (!in.seekg(static_cast<std::streamoff>(from))
+        || !in.read(rows.data(), static_cast<std::streamsize>(rows.size())))
+      throw OutputError(fmt::format("cannot read {} to resume", path.string()));
+    if (fnv1a_continue(fnv1a_offset, rows) != hashes[k].second)
+      throw OutputError(fmt::format(
+          "{} is not what the run wrote up to its checkpoint (its rows were edited or replaced "
+          "since): the run cannot be resumed from it",
+          path.string()));
+  }
 }
 
 OutputMarks Output::marks() {
@@ -275,6 +296,10 @@ OutputMarks Output::marks() {
   m.series_header = series_.header_size();
   m.profiles_header = profiles_.header_size();
   m.horizons_header = horizons_.header_size();
+  m.series_hash = series_.body_hash();
+  m.profiles_hash = profiles_.body_hash();
+  m.horizons_hash = horizons_.body_hash();
+  m.hashed = true;
   return m;
 }
 

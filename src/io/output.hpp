@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -60,6 +61,17 @@ void append_scientific(fmt::memory_buffer& out, double v);
 
 /// A text file with the standard header. Closes on destruction. Every flush is checked: a
 /// failed write throws OutputError.
+/// FNV-1a 64-bit, continued over `bytes` from `hash` (start from fnv1a_offset): the output
+/// files' row hashes a checkpoint records.
+inline constexpr std::uint64_t fnv1a_offset = 14695981039346656037ULL;
+inline std::uint64_t fnv1a_continue(std::uint64_t hash, std::string_view bytes) {
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 1099511628211ULL;
+  }
+  return hash;
+}
+
 class DataFile {
 public:
   DataFile(const std::filesystem::path& path, const std::string& parameter_header,
@@ -77,25 +89,36 @@ public:
     const std::string text = fmt::format(format, std::forward<T>(args)...);
     write(text.data(), text.size());
   }
-  void write(const char* data, std::size_t size) { std::fwrite(data, 1, size, file_); }
+  void write(const char* data, std::size_t size) {
+    std::fwrite(data, 1, size, file_);
+    if (in_body_)
+      body_hash_ = fnv1a_continue(body_hash_, {data, size});
+  }
   /// Writes the buffer out (a failed write throws OutputError) and checks that the file is
   /// still the one at its path (a removed or replaced folder throws OutputError).
   void flush();
   /// Bytes written so far (after a flush), and the header's length.
   std::uint64_t size();
   std::uint64_t header_size() const { return header_size_; }
+  /// The FNV-1a 64-bit hash of every byte after the header written so far (the rows).
+  std::uint64_t body_hash() const { return body_hash_; }
 
 private:
   void flush_buffer();
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
   std::uint64_t header_size_ = 0;
+  bool in_body_ = false; ///< the header is written: write() hashes what follows
+  std::uint64_t body_hash_ = fnv1a_offset;
 };
 
-/// Where each output file stood at a checkpoint (bytes), and its header's length.
+/// Where each output file stood at a checkpoint (bytes), its header's length, and the FNV-1a
+/// hash of its rows (the bytes between the two) when `hashed` (checkpoints of format 4).
 struct OutputMarks {
   std::uint64_t series = 0, profiles = 0, horizons = 0;
   std::uint64_t series_header = 0, profiles_header = 0, horizons_header = 0;
+  std::uint64_t series_hash = 0, profiles_hash = 0, horizons_hash = 0;
+  bool hashed = false;
 };
 
 class Output {
@@ -108,8 +131,9 @@ public:
   Output(const std::filesystem::path& dir, const std::string& parameter_header,
          Formulation formulation, const OutputMarks& marks);
 
-  /// Throws OutputError unless every file of `dir` is there and at least as long as its mark
-  /// (what the resuming constructor needs); touches nothing. Call before changing any file.
+  /// Throws OutputError unless every file of `dir` is there, at least as long as its mark, and
+  /// (marks.hashed) its rows up to the mark are the bytes the run wrote: what the resuming
+  /// constructor keeps. Touches nothing. Call before changing any file.
   static void check_resumable(const std::filesystem::path& dir, const OutputMarks& marks);
 
   const std::filesystem::path& dir() const { return dir_; }

@@ -246,6 +246,60 @@ std::string patched(std::string bytes, std::size_t offset, const void* value, st
 
 } // namespace
 
+TEST_CASE("resume refuses output files whose rows were edited or replaced since the checkpoint "
+          "(same length), changing nothing, and a format-3 checkpoint resumes by lengths alone") {
+  const fs::path a = scratch("rows_a"), b = scratch("rows_b"), whole = scratch("rows_whole");
+  for (const auto& d : {a, b, whole})
+    fs::remove_all(d);
+  const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 64 --rmax 40 --rahA 0.5 "
+                            "--rah0 1.0 --dt-series 0.25 --dt-profiles 1 --checkpoint-every 1";
+  REQUIRE(run(flags + " --tmax 4 --out " + a.string()).status == 0);
+  REQUIRE(run(flags + " --ko-sigma 0.2 --tmax 4 --out " + b.string()).status == 0);
+  REQUIRE(run(flags + " --tmax 8 --out " + whole.string()).status == 0);
+  const auto original = folder(a);
+  // another run's rows, and one digit of one row: each file the same length as before
+  for (const char* file : {"timeseries.dat", "profiles.dat", "horizon.dat"}) {
+    std::string text = slurp(b / file);
+    if (std::string(file) == "horizon.dat") { // one digit changed in a's own file
+      text = original.at(file);
+      const auto row = text.find("\n0.5 ");
+      REQUIRE(row != std::string::npos);
+      char& digit = text[row + 8];
+      digit = digit == '1' ? '2' : '1';
+    }
+    REQUIRE(text.size() >= original.at(file).size() - 64);
+    std::ofstream(a / file, std::ios::binary | std::ios::trunc) << text;
+    const auto edited = folder(a);
+    const Result r = run("resume " + a.string() + " --tmax 8");
+    INFO(file << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(std::string(file) + " is not what the run wrote up to its checkpoint")
+          != std::string::npos);
+    CHECK(folder(a) == edited);
+    std::ofstream(a / file, std::ios::binary | std::ios::trunc) << original.at(file);
+  }
+  // the checkpoint as format 3 wrote it (no row hashes): resumed, bit for bit
+  std::string cp = slurp(a / "checkpoint.bin");
+  const std::string magic = "gbssn1d checkpoint 4\n";
+  REQUIRE(cp.rfind(magic, 0) == 0);
+  std::uint64_t n_config = 0;
+  std::memcpy(&n_config, cp.data() + magic.size(), 8);
+  const std::size_t marks_at = magic.size() + 8 + n_config + 8 + 8 + 8 + 8 + 8 + 1 + 8 + 1 + 1 + 8;
+  cp.erase(marks_at + 6 * 8, 3 * 8); // the three row hashes
+  cp[magic.size() - 2] = '3';
+  cp.resize(cp.size() - 8);
+  const std::uint64_t h = fnv1a64(cp);
+  cp.append(reinterpret_cast<const char*>(&h), 8);
+  std::ofstream(a / "checkpoint.bin", std::ios::binary | std::ios::trunc) << cp;
+  const Result r = run("resume " + a.string() + " --tmax 8");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  for (const char* f : {"timeseries.dat", "profiles.dat", "horizon.dat"})
+    CHECK(without_out(whole / f) == without_out(a / f));
+  for (const auto& d : {a, b, whole})
+    fs::remove_all(d);
+}
+
 TEST_CASE("a boxes run recorded before --box-taper existed resumes without the taper it never "
           "had, and today's default is another configuration") {
   const fs::path whole = scratch("whole"), parts = scratch("parts");
@@ -311,13 +365,13 @@ TEST_CASE("resume checks the checkpoint and every file before it changes any: co
   CHECK(folder(dir) == killed);
 
   // offsets of the fields after the magic line and the configuration text
-  const std::string magic = "gbssn1d checkpoint 3\n";
+  const std::string magic = "gbssn1d checkpoint 4\n";
   REQUIRE(good.rfind(magic, 0) == 0);
   std::uint64_t n_config = 0;
   std::memcpy(&n_config, good.data() + magic.size(), 8);
   const std::size_t step_at = magic.size() + 8 + n_config, t_at = step_at + 8;
   const std::size_t evaluations_at = t_at + 8 + 8 + 8 + 8 + 1 + 8 + 1 + 1;
-  const std::size_t count_at = evaluations_at + 8 + 6 * 8;
+  const std::size_t count_at = evaluations_at + 8 + 9 * 8; // 6 marks, 3 row hashes
   std::string flipped = good;
   for (std::size_t k = 0; k < 4; ++k) // 4 bytes inside the state
     flipped[count_at + 8 + 800 + k] ^= 0x5a;

@@ -42,7 +42,7 @@ import time
 
 LEAKS = ("terminate called", "what():", "std::", "filesystem error", "Assertion",
          "runtime error:", "AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSanitizer")
-MAGIC3 = b"gbssn1d checkpoint 3\n"
+MAGIC3 = b"gbssn1d checkpoint 4\n"  # the format written (the name kept: the magic's length)
 MAGIC2 = b"gbssn1d checkpoint 2\n"
 TIMEOUT = 60
 
@@ -56,7 +56,7 @@ def fnv1a(data):
 
 
 class Layout:
-    """The fields of a format-3 checkpoint: (offset, size, kind, name), kind one of
+    """The fields of a format-4 checkpoint: (offset, size, kind, name), kind one of
     'u64' (a count), 'i64', 'f64', 'u8' (a flag), 'bytes' (config text or a state's values)."""
 
     def __init__(self, data):
@@ -76,7 +76,7 @@ class Layout:
         self.take(1, "u8", "report flag")
         self.take(8, "u64", "evaluations")
         for name in ("series", "profiles", "horizons", "series header", "profiles header",
-                     "horizons header"):
+                     "horizons header", "series hash", "profiles hash", "horizons hash"):
             self.take(8, "u64", "mark " + name)
         self.state("u")
         for i in range(self.take(8, "u64", "finer count")):
