@@ -2,6 +2,7 @@
 
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
+#include "config/input_files.hpp"
 #include "config/param_rules.hpp"
 #include "config/params.hpp"
 #include "config/paths.hpp"
@@ -43,42 +44,6 @@ namespace gbssn1d {
 namespace {
 
 int run_and_report(Simulation& sim, Output& out, const Params& p);
-
-/// A run with --rah-hAH-file keeps a copy of the file as read at its start in its folder, and a
-/// resume continues with that copy: the file named by the flag may have been edited since, or a
-/// relative path may name another file from another folder.
-const char* const prescribed_horizon_copy = "rah-hAH-file.dat";
-
-/// The bytes of --rah-hAH-file when it is in use (rahA != 0), nothing otherwise.
-std::optional<std::string> prescribed_horizon_content(const Params& p) {
-  if (!uses_hAH_file(p))
-    return std::nullopt;
-  std::ifstream in(p.rah_hAH_file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof())
-    throw ParamError("--rah-hAH-file", printable(p.rah_hAH_file), "cannot be read");
-  return text.str();
-}
-
-/// The FNV-1a hash of the run's copy of --rah-hAH-file is recorded in the configuration text
-/// its checkpoints carry, on a line of its own (a '#' line: configurations are compared by
-/// their keys), so that a resume can tell the copy the run read from one changed since.
-constexpr std::string_view copy_hash_key = "# rah-hAH-file.dat fnv1a = ";
-
-std::string copy_hash(const std::string& bytes) {
-  return fmt::format("{:016x}", fnv1a(bytes));
-}
-
-/// The hash a checkpoint's configuration text records of the copy, if it records one (a
-/// checkpoint of an earlier version does not).
-std::optional<std::string> recorded_copy_hash(const std::string& checkpoint_config) {
-  std::istringstream lines(checkpoint_config);
-  for (std::string line; std::getline(lines, line);)
-    if (line.rfind(copy_hash_key, 0) == 0)
-      return line.substr(copy_hash_key.size());
-  return std::nullopt;
-}
 
 /// The bytes of a file ("" if it cannot be read: the caller's checks refuse such a file).
 std::string file_text(const std::filesystem::path& file) {
@@ -146,15 +111,14 @@ int evolve(Params p, bool print_config) {
     std::error_code ignored;
     std::filesystem::remove(dir / "checkpoint.bin", ignored);
     if (!hAH_content)
-      std::filesystem::remove(dir / prescribed_horizon_copy, ignored);
+      std::filesystem::remove(dir / std::string(prescribed_horizon_copy), ignored);
   }
   const std::string config = config_text(p);
   write_file_atomically(dir / "config.toml", header_text("") + config);
   if (hAH_content)
-    write_file_atomically(dir / prescribed_horizon_copy, *hAH_content);
+    write_file_atomically(dir / std::string(prescribed_horizon_copy), *hAH_content);
   Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation);
-  sim.checkpoint_config =
-      config + (hAH_content ? fmt::format("{}{}\n", copy_hash_key, copy_hash(*hAH_content)) : "");
+  sim.checkpoint_config = config + copy_hash_line(hAH_content);
   return run_and_report(sim, out, p);
 }
 
@@ -267,7 +231,7 @@ KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_n
   Params& run_params = run.params;
   if (!uses_hAH_file(p))
     return run;
-  const fs::path copy = fs::path(dir_name) / prescribed_horizon_copy;
+  const fs::path copy = fs::path(dir_name) / std::string(prescribed_horizon_copy);
   const auto refuse = [&](const std::string& why) {
     return ParamError(
         "DIR", printable(dir_name),
@@ -293,7 +257,7 @@ KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_n
   if (!in || in.bad())
     throw refuse("cannot be read");
   const std::string hash = copy_hash(kept.str());
-  run.hash_line = fmt::format("{}{}\n", copy_hash_key, hash);
+  run.hash_line = copy_hash_line(kept.str());
   if (const auto recorded = recorded_copy_hash(checkpoint_config)) {
     if (*recorded != hash)
       throw refuse("has changed since the run read it (its FNV-1a hash is not the one the "

@@ -1,6 +1,7 @@
 // A sweep's members from its axes: each axis parsed, the product's members named, each
 // member's inputs and run key, which members are the same run, and which cannot run.
 #include "config/config_file.hpp"
+#include "config/input_files.hpp"
 #include "config/params.hpp"
 #include "config/same_run.hpp"
 #include "core/text.hpp"
@@ -32,14 +33,15 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 /// A member's inputs and end time: its effective configuration (defaults resolved), as its
-/// config.toml would hold it, and its tmax; for a member that does not parse, its arguments
-/// (and no end time).
+/// config.toml would hold it, with the hash of the content of each file a flag names
+/// (--rah-hAH-file: an edited file is another input, as an edited flag is), and its tmax; for a
+/// member that does not parse, its arguments (and no end time).
 void set_inputs(SweepMember& m) {
   try {
     Params p = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // without --out, --force
     p.out.clear();
     resolve_defaults(p);
-    m.inputs = config_text(p);
+    m.inputs = config_text(p) + input_files_text(p);
     m.run_key = run_key(p);
     m.idle.clear();
     for (const auto& group : idle_flags(p))

@@ -1,6 +1,7 @@
 #include "study/sweep_store.hpp"
 
 #include "config/config_file.hpp"
+#include "config/input_files.hpp"
 #include "config/params.hpp"
 #include "config/paths.hpp"
 #include "core/decimal.hpp"
@@ -39,16 +40,20 @@ namespace fs = std::filesystem;
 namespace {
 
 /// What an earlier run of the sweep in `dir` ran member `m` with: the inputs file written when
-/// it started, or (for a member folder without one) the member's config.toml; empty if nothing
-/// of it is there.
-std::string earlier_inputs(const fs::path& dir, const SweepMember& m) {
+/// it started (`inputs_file`), or (for a member folder without one) the member's config.toml;
+/// empty if nothing of it is there.
+struct EarlierInputs {
+  std::string text;
+  bool inputs_file = false;
+};
+EarlierInputs earlier_inputs(const fs::path& dir, const SweepMember& m) {
   std::error_code ec; // a path that cannot be examined holds nothing (its creation is refused)
   for (const fs::path& file : {dir / "logs" / (m.name + ".inputs"), dir / m.name / "config.toml"})
     if (fs::is_regular_file(file, ec)) {
       std::ifstream in(file);
       std::stringstream s;
       s << in.rdbuf();
-      return s.str();
+      return {s.str(), file.extension() == ".inputs"};
     }
   return {};
 }
@@ -134,12 +139,18 @@ void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMemb
   std::vector<std::string> changed;
   std::map<std::string, std::set<std::string>> ran_with; // key -> the values the members had
   for (const SweepMember* m : members) {
-    const std::string before = earlier_inputs(dir, *m);
-    if (before.empty())
+    const EarlierInputs before = earlier_inputs(dir, *m);
+    if (before.text.empty())
       continue;
-    const auto diff = config_differences(before, m->inputs);
-    if (!diff.empty())
-      changed.push_back(fmt::format("{} ({})", m->name, fmt::join(diff, ", ")));
+    const auto diff = config_differences(before.text, m->inputs);
+    // and the content of the files flags name, as the inputs file records it (a member's
+    // config.toml, read when that file is gone, records none: its run's copy is resume's check)
+    std::vector<std::string> all = diff;
+    if (before.inputs_file)
+      for (const auto& d : input_file_differences(before.text, m->inputs))
+        all.push_back(d);
+    if (!all.empty())
+      changed.push_back(fmt::format("{} ({})", m->name, fmt::join(all, ", ")));
     for (const auto& d : diff) // "key: old -> new"
       if (const auto colon = d.find(": "), arrow = d.find(" -> ");
           colon != std::string::npos && arrow != std::string::npos)
