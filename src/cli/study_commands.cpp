@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
+#include "config/input_files.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
 #include "config/paths.hpp"
@@ -168,7 +169,7 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   // resumes only from a checkpoint of its own inputs). The same study (an interrupted one, as
   // its message says): its members continue from their checkpoints, each checked against its
   // own inputs.
-  if (!options.force && holds_this_study(options.out, config_text(base))) {
+  if (!options.force && holds_this_study(options.out, config_text(base), input_files_text(base))) {
     continuing = true;
     say("gbssn1d converge: {} holds this study (same inputs): members continue from their "
         "checkpoints; a member without one (one that completed keeps none) runs again\n",

@@ -9,6 +9,7 @@
 
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
+#include "config/input_files.hpp"
 #include "config/params.hpp"
 #include "core/registry.hpp"
 #include "evolution/observe.hpp"
@@ -41,7 +42,8 @@ namespace {
 /// fields); no other command writes it.
 constexpr std::string_view study_mark = "# converge: N = ";
 
-/// A member with a checkpoint of its own configuration, and the samples saved with it, is
+/// A member with a checkpoint of its own configuration (`config`, with the record of the
+/// content of --rah-hAH-file the member runs with), and the samples saved with it, is
 /// continued from there: `sim` restored, `rec` the saved samples; nothing otherwise, with the
 /// reason in `afresh` when a checkpoint was there but is not used.
 std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const std::string& config,
@@ -66,6 +68,9 @@ std::optional<Checkpoint> resume_member(Simulation& sim, const Params& p, const 
       Checkpoint c = read_checkpoint(checkpoint_file);
       if (!config_differences(c.config, config, {"tmax", "out", "force"}).empty() || c.t > p.tmax)
         afresh = "its checkpoint belongs to other inputs";
+      else if (const auto files = input_file_differences(c.config, config); !files.empty())
+        afresh = fmt::format("its checkpoint was made with another --rah-hAH-file ({})",
+                             fmt::join(files, ", "));
       else if (auto saved = read_samples(samples_file, samples_key, c.step)) {
         Output::check_resumable(p.out, c.marks);
         sim.restore(c);
@@ -101,8 +106,11 @@ void record_samples(Simulation& s, const std::vector<Var>& fields, const std::ve
 }
 
 /// Member k run (or continued) into its folder, recording into study.records[k]; a failure is
-/// recorded there, not thrown.
-void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
+/// recorded there, not thrown. `hAH` is the content of --rah-hAH-file as the study read it
+/// (nothing when not in use): the member keeps a copy in its folder, as evolve does, and runs
+/// from it, and its checkpoints record the copy's hash (`gbssn1d resume` checks it).
+void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::string>& hAH,
+                std::mutex& log_mutex) {
   const auto& members = study.members;
   const auto& fields = study.fields;
   const auto& radii = study.radii;
@@ -120,12 +128,21 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
   try {
     const Params& p = members[k];
     const FolderLock member_lock("--out", p.out); // one writer per member folder too
-    Simulation sim(evolution_config(p));
+    const fs::path copy = fs::path(p.out) / std::string(prescribed_horizon_copy);
+    Params from_copy = p;
+    if (hAH) {
+      write_file_atomically(copy, *hAH);
+      from_copy.rah_hAH_file = copy.string();
+    } else { // an earlier run's copy would be a curve this member does not follow
+      std::error_code ignored;
+      fs::remove(copy, ignored);
+    }
+    Simulation sim(evolution_config(from_copy));
     const std::string config = config_text(p); // the member's own configuration
     // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
     write_file_atomically(fs::path(p.out) / "config.toml", header_text("") + config);
     sim.on_series = [&](Simulation& s) { record_samples(s, fields, radii, rec); };
-    sim.checkpoint_config = config;
+    sim.checkpoint_config = config + copy_hash_line(hAH);
     sim.label = fmt::format(" converge N={}", p.N);
     const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
     sim.on_checkpoint = [&](const Checkpoint& c) {
@@ -133,7 +150,8 @@ void run_member(ConvergeStudy& study, std::size_t k, std::mutex& log_mutex) {
     };
     // A member with a checkpoint of this configuration, and its samples, continues from it.
     std::string afresh;
-    const std::optional<Checkpoint> from = resume_member(sim, p, config, samples_key, rec, afresh);
+    const std::optional<Checkpoint> from =
+        resume_member(sim, p, sim.checkpoint_config, samples_key, rec, afresh);
     if (!afresh.empty()) {
       const std::lock_guard lock(log_mutex);
       say("gbssn1d converge: member N = {} starts afresh: {}\n", p.N, afresh);
@@ -282,7 +300,8 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
   return members;
 }
 
-bool holds_this_study(const std::string& out, const std::string& base_config) {
+bool holds_this_study(const std::string& out, const std::string& base_config,
+                      const std::string& files_text) {
   const fs::path file = fs::path(out) / "config.toml";
   std::error_code ec; // a path that cannot be examined is refused by validate_output_dir
   if (!fs::is_regular_file(file, ec))
@@ -300,7 +319,9 @@ bool holds_this_study(const std::string& out, const std::string& base_config) {
                                  "member); nothing was changed: use another --out, or --force "
                                  "to run the study into it",
                                  study_mark));
-  const auto diff = config_differences(old, base_config, {"out", "force", "N"});
+  auto diff = config_differences(old, base_config, {"out", "force", "N"});
+  for (const auto& d : input_file_differences(old, files_text)) // an edited --rah-hAH-file
+    diff.push_back(d);
   if (!diff.empty())
     throw ParamError("--out", out,
                      fmt::format("holds a converge study of other inputs ({}); use another "
@@ -314,10 +335,13 @@ int run_converge(const Params& base, const ConvergeOptions& options,
   ConvergeStudy s = plan_study(base, options);
   if (const std::string w = hierarchy_step_warning(s.members); !w.empty())
     say("gbssn1d converge: warning: {}\n", w);
+  // --rah-hAH-file read once for every member, and its content's hash recorded with the study
+  const std::optional<std::string> hAH = prescribed_horizon_content(base);
+  const std::string files_text = copy_hash_line(hAH);
   const FolderLock lock("--out", options.out); // one writer per study folder
   // what the folder holds again, under the lock: another process may have written it since it
   // was checked (an evolve run of the same flags is no study to continue)
-  if (!options.force && !holds_this_study(options.out, base_config)
+  if (!options.force && !holds_this_study(options.out, base_config, files_text)
       && !folder_is_empty(options.out))
     throw ParamError("--out", options.out,
                      "exists and is not empty: another process wrote it meanwhile (use --force "
@@ -328,11 +352,12 @@ int run_converge(const Params& base, const ConvergeOptions& options,
       header_text("")
       + fmt::format("{}{}, fields {}\n", study_mark, fmt::join(options.N, ","),
                     fmt::join(options.fields, ","))
-      + base_config;
+      + base_config + files_text;
   write_file_atomically(fs::path(options.out) / "config.toml", study_config);
   std::mutex log_mutex;
   install_stop_handlers(); // members stop between steps; the partial files stay
-  run_tasks(s.members.size(), options.jobs, [&](std::size_t k) { run_member(s, k, log_mutex); });
+  run_tasks(s.members.size(), options.jobs,
+            [&](std::size_t k) { run_member(s, k, hAH, log_mutex); });
   // times common to all members
   s.n_times = s.records.front().rows.size();
   for (const auto& rec : s.records)

@@ -29,11 +29,13 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
 
 /// Whether the folder `out` holds this very study (an interrupted one, or one to extend): its
 /// config.toml is a converge study's (it has the "# converge: N = ..." line only converge
-/// writes) of the inputs `base_config` but N. False when it has no config.toml; ParamError
-/// naming --out when its config.toml is another command's (an evolve run of the same flags is
-/// no study) or another study's: without --force such a folder is refused, and nothing in it
-/// changed.
-bool holds_this_study(const std::string& out, const std::string& base_config);
+/// writes) of the inputs `base_config` but N, and of the content of the files flags name that
+/// `files_text` records (config/input_files.hpp: an edited --rah-hAH-file is another input). False
+/// when it has no config.toml; ParamError naming --out when its config.toml is another command's
+/// (an evolve run of the same flags is no study) or another study's: without --force such a folder
+/// is refused, and nothing in it changed.
+bool holds_this_study(const std::string& out, const std::string& base_config,
+                      const std::string& files_text);
 
 /// Runs the members and writes DIR/N<n>/ (each member's usual output), DIR/convergence.dat,
 /// DIR/scaled_H.dat and DIR/config.toml, and judges the study (study/verdict.hpp): the verdict

@@ -1,6 +1,7 @@
 // Studies and the files their flags name (--rah-hAH-file): a sweep records the content's hash
 // with each member's inputs, so that a rerun, a task line (--member) or --collect after the file
-// was edited is refused as any other changed input is.
+// was edited is refused as any other changed input is; a converge member keeps a copy as evolve
+// does, and the study records the content's hash.
 #include "cli_support.hpp"
 
 #include <doctest/doctest.h>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 using namespace gbssn1d::testing;
@@ -59,5 +61,43 @@ TEST_CASE(
     CHECK(snapshot(dir) == before);
   }
   fs::remove_all(dir);
+  fs::remove(file);
+}
+
+TEST_CASE("converge: each member keeps --rah-hAH-file as the study read it and resumes alone "
+          "from it, and a rerun after the file's content changed is refused as other inputs") {
+  const fs::path out = scratch("converge_hAH_content"), file = scratch("converge_hAH.dat");
+  write_history(file, 0.002, 81); // t up to 40
+  const std::string args = " converge --N 200,250,300 -j 3 --grid uniform --rmax 30 --id "
+                           "1log-trumpet --rahA 0.5 --rah0 0.89 --tmax 30 --checkpoint-every "
+                           "0.5 --rah-hAH-file "
+                           + file.string() + " --out " + out.string();
+  // stopped (SIGTERM) once every member has written a checkpoint
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
+                          + " 2>/dev/null & p=$!; for m in N200 N250 N300; do while [ ! -s "
+                          + out.string()
+                          + "/$m/checkpoint.bin ]; do sleep 0.02; done; done; kill -TERM $p;"
+                            " wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  REQUIRE(WEXITSTATUS(raw) == 128 + 15);
+  const std::string read = slurp(file);
+  for (const char* member : {"N200", "N250", "N300"})
+    CHECK(slurp(out / member / "rah-hAH-file.dat") == read);
+  CHECK(slurp(out / "config.toml").find("# rah-hAH-file.dat fnv1a = ") != std::string::npos);
+  const auto before = snapshot(out);
+  write_history(file, 0.003, 81); // the r_ah column edited, the path the same
+  const Result changed = run(args.substr(1));
+  INFO(changed.err);
+  CHECK(changed.status == 2);
+  CHECK(changed.err.find("holds a converge study of other inputs (rah-hAH-file content: fnv1a ")
+        != std::string::npos);
+  CHECK(snapshot(out) == before);
+  // a member continues alone from its checkpoint, with its copy (not the edited file)
+  const Result alone = run("resume " + (out / "N200").string());
+  INFO(alone.err);
+  CHECK(alone.status == 0);
+  CHECK(alone.err.find("it continues with the copy it took then") != std::string::npos);
+  fs::remove_all(out);
   fs::remove(file);
 }
