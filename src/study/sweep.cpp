@@ -62,10 +62,12 @@ int run_one_member(const SweepOptions& options, const std::vector<SweepAxis>& ax
                                  members.size() > 1 ? " ... " + members.back().name : ""));
   const SweepMember& m = *it;
   const fs::path dir(options.out);
+  refuse_links(dir, {&m}, options.out);
   check_earlier_inputs(dir, {&m}, options.out);
   // member tasks of one sweep run side by side; a whole sweep of the folder excludes them
   const FolderLock lock("--out", dir, LockMode::shared);
-  check_earlier_inputs(dir, {&m}, options.out); // again, under the lock
+  refuse_links(dir, {&m}, options.out); // again, under the lock
+  check_earlier_inputs(dir, {&m}, options.out);
   const fs::path status_file = dir / "logs" / (m.name + ".status");
   MemberOutcome o;
   if (member_done(dir, m)) {
@@ -233,10 +235,12 @@ void warn_of_unlisted_members(const fs::path& dir, const std::vector<SweepMember
 int run_members_here(const SweepOptions& options, const std::vector<SweepAxis>& axes,
                      const std::vector<SweepMember>& members, const std::string& exe) {
   const fs::path dir(options.out);
+  refuse_links(dir, all_of(members), options.out);
   check_earlier_inputs(dir, all_of(members), options.out);
-  // one sweep of a folder at a time (and no member tasks beside it); then the earlier inputs
-  // again, under the lock: a sweep of other inputs may have finished meanwhile
+  // one sweep of a folder at a time (and no member tasks beside it); then the links and the
+  // earlier inputs again, under the lock: a sweep of other inputs may have finished meanwhile
   const FolderLock lock("--out", dir);
+  refuse_links(dir, all_of(members), options.out);
   check_earlier_inputs(dir, all_of(members), options.out);
   create_output_dir("--out", dir / "logs");
   record_axis_order(options.out, axes);
@@ -315,6 +319,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
     return run_one_member(options, axes, members, exe);
   if (options.collect) {
     const fs::path dir(options.out);
+    refuse_links(dir, all_of(members), options.out);
     check_earlier_inputs(dir, all_of(members), options.out);
     const auto statuses = write_summary(dir, options, axes, members);
     say("gbssn1d sweep: {} collected from {} members (nothing was run)\n",

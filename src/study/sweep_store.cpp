@@ -58,6 +58,29 @@ EarlierInputs earlier_inputs(const fs::path& dir, const SweepMember& m) {
   return {};
 }
 
+/// Where member `m`'s folder differs from its inputs: the keys of its config.toml, and the
+/// content of its copy of --rah-hAH-file, each "... in its folder's ..." (nothing for a folder
+/// without them: a member not run yet, or invalid).
+std::vector<std::string> folder_differences(const fs::path& dir, const SweepMember& m) {
+  std::vector<std::string> diff;
+  std::error_code ec;
+  const auto text = [](const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  const fs::path config = dir / m.name / "config.toml";
+  if (fs::is_regular_file(config, ec))
+    for (const auto& d : config_differences(text(config), m.inputs))
+      diff.push_back(d + " in its folder's config.toml");
+  const fs::path copy = dir / m.name / std::string(prescribed_horizon_copy);
+  if (recorded_copy_hash(m.inputs) && fs::is_regular_file(copy, ec))
+    for (const auto& d : input_file_differences(copy_hash_line(text(copy)), m.inputs))
+      diff.push_back(d + " in its folder's " + std::string(prescribed_horizon_copy));
+  return diff;
+}
+
 /// The sweep's axes in their order (OUT/logs/axes): member folders are named in that order,
 /// so a rerun, --member or --collect with the axes in another order would find none of them.
 std::string axis_order_text(const std::vector<SweepAxis>& axes) {
@@ -149,6 +172,12 @@ void check_earlier_inputs(const fs::path& dir, const std::vector<const SweepMemb
     if (before.inputs_file)
       for (const auto& d : input_file_differences(before.text, m->inputs))
         all.push_back(d);
+    // the member's folder as its own config.toml (and copy of --rah-hAH-file) says it ran,
+    // where the inputs file agrees: a folder replaced by another run is not the member,
+    // whatever its status file says
+    if (before.inputs_file && all.empty())
+      for (const auto& d : folder_differences(dir, *m))
+        all.push_back(d);
     if (!all.empty())
       changed.push_back(fmt::format("{} ({})", m->name, fmt::join(all, ", ")));
     for (const auto& d : diff) // "key: old -> new"
@@ -189,6 +218,26 @@ std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members) 
   for (const auto& m : members)
     all.push_back(&m);
   return all;
+}
+
+void refuse_links(const fs::path& dir, const std::vector<const SweepMember*>& members,
+                  const std::string& out) {
+  std::vector<fs::path> paths{dir / "logs", dir / "summary.dat", dir / "logs" / "axes"};
+  for (const SweepMember* m : members) {
+    paths.push_back(dir / m->name);
+    for (const char* suffix : {".inputs", ".status", ".log", ".lock"})
+      paths.push_back(dir / "logs" / (m->name + suffix));
+  }
+  for (const fs::path& path : paths) {
+    std::error_code ec;
+    if (fs::is_symlink(fs::symlink_status(path, ec)))
+      throw ParamError(
+          "--out", printable(out),
+          fmt::format("holds a symbolic link, {}: a sweep writes no file through a link (a "
+                      "member run there would overwrite what it points at, or report it as the "
+                      "member); nothing was run or changed: remove the link, or give another --out",
+                      printable(path.lexically_relative(dir).string())));
+  }
 }
 
 void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {

@@ -54,10 +54,20 @@ std::vector<SameRun> same_runs(const std::vector<SweepMember>& members);
 std::optional<std::string> invalid_reason(const SweepMember& m);
 
 /// A folder that holds members run with other inputs is refused (naming them) before anything
-/// is written or launched: results of other inputs are never reused or mixed in.
+/// is written or launched: results of other inputs are never reused or mixed in. A member's
+/// inputs are read from logs/NAME.inputs, and its folder's own config.toml (and its copy of
+/// --rah-hAH-file) must agree with them too: a folder replaced by another run is not the
+/// member, whatever its status file says.
 void check_earlier_inputs(const std::filesystem::path& dir,
                           const std::vector<const SweepMember*>& members, const std::string& out);
 std::vector<const SweepMember*> all_of(const std::vector<SweepMember>& members);
+
+/// A sweep writes no file through a symbolic link: a member folder (or logs/, a member's log,
+/// status, inputs or lock file, summary.dat, logs/axes) that is a link would send the member's
+/// run, or its record, to what the link points at (another run's folder overwritten, or
+/// reported as the member). Refused, naming the link, before anything is written.
+void refuse_links(const std::filesystem::path& dir, const std::vector<const SweepMember*>& members,
+                  const std::string& out);
 
 /// The sweep's axes in their order, recorded in OUT/logs/axes: member folders are named in
 /// that order, so a rerun, --member or --collect with the axes in another order would find

@@ -462,3 +462,51 @@ TEST_CASE("converge rerun after completion: members without a checkpoint say the
   CHECK(again.err.find("member N = 50 starts afresh: it has no checkpoint") != std::string::npos);
   fs::remove_all(out);
 }
+
+TEST_CASE(
+    "sweep: a member folder that is a symbolic link is refused, naming it, and what it "
+    "points at is left alone, and a member folder replaced by a run of other inputs is refused "
+    "by its own config.toml, whatever its status file says") {
+  const fs::path dir = scratch("sweep_member_link"), other = scratch("sweep_member_other");
+  const std::string flags = "--id 1log-trumpet --grid uniform --rmax 20 --tmax 1 ";
+  const std::string sweep =
+      "sweep --progress-every 0 --sweep N=32,40 " + flags + "--out " + dir.string();
+  REQUIRE(run(sweep).status == 0);
+  REQUIRE(run("evolve --N 32 " + flags + "--out " + other.string()).status == 0);
+  const std::string status = slurp(dir / "logs" / "N=32.status");
+  auto snapshot = [](const fs::path& d) {
+    std::map<std::string, std::string> all;
+    for (const auto& e : fs::recursive_directory_iterator(d))
+      if (e.is_regular_file())
+        all[fs::relative(e.path(), d).string()] = slurp(e.path());
+    return all;
+  };
+  const auto other_before = snapshot(other);
+  fs::remove_all(dir / "N=32");
+  fs::create_directory_symlink(other, dir / "N=32");
+  fs::remove(dir / "logs" / "N=32.status");
+  for (const char* extra : {"", " --member N=32", " --collect"}) {
+    const Result r = run(sweep + extra);
+    INFO(extra << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("holds a symbolic link, N=32") != std::string::npos);
+    CHECK(snapshot(other) == other_before);
+    CHECK_FALSE(fs::exists(dir / "logs" / "N=32.status"));
+  }
+  // the folder replaced by a finished run of other inputs, its status kept
+  fs::remove(dir / "N=32");
+  REQUIRE(run("evolve --N 32 --cfl 0.25 " + flags + "--out " + (dir / "N=32").string()).status
+          == 0);
+  std::ofstream(dir / "logs" / "N=32.status") << status;
+  const auto before = snapshot(dir);
+  for (const char* extra : {"", " --member N=32", " --collect"}) {
+    const Result r = run(sweep + extra);
+    INFO(extra << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("N=32 (cfl: 0.25 -> ") != std::string::npos);
+    CHECK(r.err.find("in its folder's config.toml") != std::string::npos);
+    CHECK(snapshot(dir) == before);
+  }
+  fs::remove_all(dir);
+  fs::remove_all(other);
+}

@@ -57,9 +57,10 @@ left out). Four surfaces:
                 intact copy's exit status and outputs; never another success;
   sweep-edits   a member's folder deleted, its timeseries.dat emptied or truncated, its
                 config.toml edited or deleted, its status file deleted, then --collect and/or a
-                rerun: --collect lists a member whose output is gone or cut short as missing
-                (exit 1), never ok with nan, and every member it lists ok with the clean sweep's
-                numbers; a rerun runs such members again and ends (exit 0) with the clean
+                rerun: a member whose config.toml was edited is refused by both (exit 2,
+                nothing changed); --collect lists a member whose output is gone or cut short as
+                missing (exit 1), never ok with nan, and every member it lists ok with the clean
+                sweep's numbers; a rerun runs such members again and ends (exit 0) with the clean
                 sweep's summary.dat and .dat files.
 
 KNOWN_DEFECTS lists violations the program still has (issue 37): found, they are printed and
@@ -1571,7 +1572,9 @@ def check_sweep_edits(lab, s):
     """A sweep folder edited between runs: --collect lists a member whose output is gone or
     cut short as missing (exit 1), never 'ok' (with nan), and every member it lists ok with the
     clean sweep's numbers; a rerun runs such a member again and ends with the clean sweep's
-    summary and outputs."""
+    summary and outputs. A member whose config.toml was edited (to other inputs) is not the
+    member's run: --collect and a rerun refuse the folder (exit 2), naming it, and change
+    nothing."""
     p = s.params
     _, clean = lab.reference((SWEEP_DIR,), [SWEEP_ARGS], SWEEP_DIR)
     clean = {rel: v for rel, v in clean.items() if rel.endswith(".dat")}
@@ -1585,10 +1588,23 @@ def check_sweep_edits(lab, s):
         end_cut = {member for member, edit, frac in p["edits"]
                    if edit_sweep(cwd, member, edit, frac)}
         damaged = {member for member, edit, _ in p["edits"] if edit in DAMAGING}
+        edited = {member for member, edit, _ in p["edits"] if edit == "config-edited"}
         for action in p["actions"]:
             args = SWEEP_ARGS + (["--collect"] if action == "collect" else [])
+            before = fingerprint(os.path.join(cwd, SWEEP_DIR))
             status, err, _, timed_out = run(lab.exe, args, cwd, os.path.join(base, "capture"))
             problems += common_problems("sweep", status, err, timed_out)
+            if edited:
+                if status != 2 or not any(f"{m} (" in err and "in its folder's config.toml" in err
+                                          for m in edited):
+                    problems.append(("sweep-config-edited", f"{action}: exit {status}, wanted 2 "
+                                     f"naming {', '.join(sorted(edited))}: {last_line(err)}"))
+                elif fingerprint(os.path.join(cwd, SWEEP_DIR)) != before:
+                    problems.append(("refusal-wrote", f"{action}: refused (exit 2) but "
+                                     f"{SWEEP_DIR} changed"))
+                if problems:
+                    break
+                continue
             rows = summary_rows(os.path.join(cwd, SWEEP_DIR, "summary.dat")) or {}
             for member, cols in rows.items():
                 name = "ko-sigma=" + member
@@ -1613,7 +1629,7 @@ def check_sweep_edits(lab, s):
                     problems.append(("sweep-collect-exit", f"collect: exit {status}, wanted "
                                      f"{want}: {last_line(err)}"))
             else:
-                # the results (a member's config.toml edited by hand may stay so: the sweep
+                # the results (a member's config.toml deleted by hand may stay so: the sweep
                 # keeps each member's inputs in logs/)
                 got = {rel: v for rel, v in outputs(os.path.join(cwd, SWEEP_DIR)).items()
                        if rel.endswith(".dat")}
