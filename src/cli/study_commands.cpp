@@ -171,9 +171,15 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   // own inputs.
   if (!options.force && holds_this_study(options.out, config_text(base), input_files_text(base))) {
     continuing = true;
-    say("gbssn1d converge: {} holds this study (same inputs): members continue from their "
+    // another list of N (a study extended, or a member dropped) is said: a member folder of
+    // the earlier list that this one does not name is left beside the new ones (run_converge
+    // names it)
+    const std::string earlier = study_resolutions(options.out);
+    const std::string now = fmt::format("{}", fmt::join(options.N, ","));
+    say("gbssn1d converge: {} holds this study (same inputs{}): members continue from their "
         "checkpoints; a member without one (one that completed keeps none) runs again\n",
-        options.out);
+        options.out,
+        earlier == now ? "" : fmt::format(" but N: {} where it ran N = {}", now, earlier));
   }
   validate_output_dir([&] {
     Params o = base;

@@ -5,6 +5,7 @@
 #include "study/converge_report.hpp"
 
 #include "core/console.hpp"
+#include "core/decimal.hpp"
 #include "core/stop_signal.hpp"
 
 #include "config/config_file.hpp"
@@ -21,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -103,6 +105,30 @@ void record_samples(Simulation& s, const std::vector<Var>& fields, const std::ve
   for (double r : radii)
     H_samples.push_back(s.H_at_radius(levels_d, r));
   rec.H_samples.push_back(std::move(H_samples));
+}
+
+/// Member folders (N<n>/ with a config.toml) of an earlier study into the same folder that this
+/// one does not list: said, since convergence.dat will not hold them; left as they are.
+void warn_of_unlisted_members(const std::string& out, const std::vector<int>& N) {
+  std::vector<std::string> unlisted;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 2 || name[0] != 'N'
+        || name.find_first_not_of("0123456789", 1) != std::string::npos || !entry.is_directory(ec)
+        || !fs::is_regular_file(entry.path() / "config.toml", ec))
+      continue;
+    const auto n = parse_decimal<int>(name.substr(1));
+    if (!n || std::find(N.begin(), N.end(), *n) == N.end())
+      unlisted.push_back(name);
+  }
+  if (unlisted.empty())
+    return;
+  std::sort(unlisted.begin(), unlisted.end());
+  say("gbssn1d converge: warning: {} holds {} member folder{} of an earlier study that this one "
+      "(N = {}) does not list ({}): left as {}, and not in convergence.dat or scaled_H.dat\n",
+      out, unlisted.size(), unlisted.size() == 1 ? "" : "s", fmt::join(N, ","),
+      fmt::join(unlisted, ", "), unlisted.size() == 1 ? "it is" : "they are");
 }
 
 /// Member k run (or continued) into its folder, recording into study.records[k]; a failure is
@@ -300,6 +326,16 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
   return members;
 }
 
+std::string study_resolutions(const std::string& out) {
+  std::ifstream in(fs::path(out) / "config.toml", std::ios::binary);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(study_mark, 0) == 0) {
+      line = line.substr(study_mark.size());
+      return line.substr(0, line.find(", fields"));
+    }
+  return {};
+}
+
 bool holds_this_study(const std::string& out, const std::string& base_config,
                       const std::string& files_text) {
   const fs::path file = fs::path(out) / "config.toml";
@@ -354,6 +390,7 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                     fmt::join(options.fields, ","))
       + base_config + files_text;
   write_file_atomically(fs::path(options.out) / "config.toml", study_config);
+  warn_of_unlisted_members(options.out, options.N);
   std::mutex log_mutex;
   install_stop_handlers(); // members stop between steps; the partial files stay
   run_tasks(s.members.size(), options.jobs,

@@ -37,6 +37,10 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
 bool holds_this_study(const std::string& out, const std::string& base_config,
                       const std::string& files_text);
 
+/// The resolutions of the converge study whose config.toml is in `out`, as its "# converge: N =
+/// ..." line lists them ("64,96,128"); "" if there is none.
+std::string study_resolutions(const std::string& out);
+
 /// Runs the members and writes DIR/N<n>/ (each member's usual output), DIR/convergence.dat,
 /// DIR/scaled_H.dat and DIR/config.toml, and judges the study (study/verdict.hpp): the verdict
 /// goes into convergence.dat's header and onto stderr. Returns 0 (completed; converges, or

@@ -510,3 +510,25 @@ TEST_CASE(
   fs::remove_all(dir);
   fs::remove_all(other);
 }
+
+TEST_CASE("converge into a folder of the same study with another N list says so, and names the "
+          "earlier members it leaves beside the new ones") {
+  const fs::path out = scratch("converge_other_N");
+  const std::string cmd = "converge --id 1log-trumpet --grid uniform --rmax 20 --tmax 1 --out "
+                          + out.string() + " --N ";
+  REQUIRE(run(cmd + "40,50,60").status != 2);
+  const Result again = run(cmd + "40,50,70");
+  INFO(again.err);
+  CHECK(again.status != 2);
+  CHECK(again.err.find("(same inputs but N: 40,50,70 where it ran N = 40,50,60)")
+        != std::string::npos);
+  CHECK(again.err.find("holds 1 member folder of an earlier study that this one (N = 40,50,70) "
+                       "does not list (N60): left as it is")
+        != std::string::npos);
+  CHECK(fs::exists(out / "N70" / "config.toml"));
+  // the same list again: nothing to say about N
+  const Result same = run(cmd + "40,50,70");
+  INFO(same.err);
+  CHECK(same.err.find("(same inputs):") != std::string::npos);
+  fs::remove_all(out);
+}
