@@ -38,7 +38,8 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
       && p.time_interp == mesh::TimeInterpolation::quadratic && p.cfl > 0.25)
     w.push_back(fmt::format(
         "--time-interp quadratic with --cfl {}: its fine boundaries lose their order above cfl "
-        "0.25 (order 1.8 at M/16-M/24 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use --cfl "
+        "0.25 (order 1.8 at M/16-M/24 measured at 0.5: docs/horizon-shift-study.md, Sec. 11); use "
+        "--cfl "
         "0.25, or the default rk-stages",
         num(p.cfl)));
   // A held h_AH makes beta_H jump in time at every search; quadratic time interpolation of a

@@ -349,7 +349,7 @@ TEST_CASE("a horizon stretched to 2 M on six boxes: RK4 stage values converge at
   // Measured (2026-11-28, with the start's pilot, Simulation::seed_horizon_start): stage values
   // 3.64, 3.62 at cfl 0.25 and 0.5; quadratic 4.37, 3.92 at cfl 0.25 and 3.49, 1.76 at cfl 0.5
   // (its error at M/24 7 times the stage values'); quadratic without subcycling 4.39, 4.17.
-  // Before the pilot the quadratic's were 2.83, 1.82 and 0.12, 1.03: the first steps'
+  // Before the pilot the quadratic's were 2.82, 1.62 and 0.12, 1.03: the first steps'
   // extrapolation of h_AH from one, two and three radii made beta_H jump at each step of the
   // hierarchy, and the quadratic's parabola through three time levels straddled the jumps. At
   // cfl 0.5 the later steps' jumps (the cubic extrapolation's error over a step twice as long)
