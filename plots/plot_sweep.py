@@ -6,9 +6,12 @@ the final horizon's miss |r_AH / h - 1|, the largest |M_AH - M| / M, and the lar
 from the members' recorded parameters next to summary.dat). Members that did not finish are
 crossed out and named by their status.
 
-  plot_sweep.py out/sweep/summary.dat -o sweep.png [-x rahA] [-y rah0]
+  plot_sweep.py out/sweep/summary.dat -o sweep.png [-x rahA] [-y rah0] [--where N=400 ...]
 
 Any two swept columns may be the axes (-x, -y); a sweep over one flag gives curves instead.
+A map holds one member per cell: a sweep over a third flag (e.g. N) needs --where COLUMN=VALUE
+for it, which picks the members of that value (the title says which); without it the script
+refuses, naming the column and its values, rather than draw one member per cell unsaid.
 """
 import argparse
 import glob
@@ -97,6 +100,8 @@ def main():
     ap.add_argument('summary')
     ap.add_argument('-x', default='rahA', help='swept column on the x axis (default rahA)')
     ap.add_argument('-y', default='rah0', help='swept column on the y axis (default rah0)')
+    ap.add_argument('--where', action='append', default=[], metavar='COLUMN=VALUE',
+                    help='keep the members with this value of a third swept column (repeatable)')
     ap.add_argument('-o', '--output', required=True)
     a = ap.parse_args()
     names, rows, text = load(a.summary)
@@ -105,6 +110,28 @@ def main():
     for axis in (a.x, a.y):
         if axis not in swept:
             raise SystemExit(f"'{axis}' is not a swept column; swept: {' '.join(swept)}")
+    chosen = {}
+    for item in a.where:
+        name, _, value = item.partition('=')
+        if name not in swept or name in (a.x, a.y):
+            raise SystemExit(f"--where {item}: '{name}' is not a swept column besides the axes; "
+                             f"swept: {' '.join(swept)}")
+        if not value or math.isnan(number(value)):
+            raise SystemExit(f"--where {item}: the value is not a number")
+        chosen[name] = number(value)
+    for name in swept:
+        values = sorted({number(r[col[name]]) for r in rows})
+        if name not in (a.x, a.y) and len(values) > 1 and name not in chosen:
+            raise SystemExit(
+                f"the sweep varies {name} too ({', '.join(f'{v:g}' for v in values)}): a map "
+                f"over {a.x} and {a.y} holds one member per cell; pick one with "
+                f"--where {name}=VALUE")
+    rows = [r for r in rows if all(number(r[col[n]]) == v for n, v in chosen.items())]
+    if not rows:
+        raise SystemExit(f"no member has {', '.join(a.where)}")
+    cells = [(r[col[a.x]], r[col[a.y]]) for r in rows]
+    if len(set(cells)) != len(cells):
+        raise SystemExit(f"two members share a cell of {a.x} and {a.y}: not a map")
     xs = sorted({number(r[col[a.x]]) for r in rows})
     ys = sorted({number(r[col[a.y]]) for r in rows})
     h_of = (lambda r: number(r[col['rah0']])) if 'rah0' in col else None
@@ -181,8 +208,10 @@ def main():
     ends = {p.get('tmax') for p in members}
     if ran and len(ends) == 1 and None not in ends:
         ran += f'; to t = {ends.pop()} M'
-    fig.suptitle((header[0][2:] if header else a.summary) + (f'\n{ran}' if ran else ''),
-                 fontsize=10)
+    picked = ', '.join(f'{n} = {v:g}' for n, v in chosen.items())
+    fig.suptitle((header[0][2:] if header else a.summary) + (f' (members with {picked})'
+                                                              if picked else '')
+                 + (f'\n{ran}' if ran else ''), fontsize=10)
     fig.tight_layout()
     save_figure(fig, a.output)
     bad = [r for r in rows if r[col['status']] != 'ok']

@@ -177,7 +177,8 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     const std::string earlier = study_resolutions(options.out);
     const std::string now = fmt::format("{}", fmt::join(options.N, ","));
     say("gbssn1d converge: {} holds this study (same inputs{}): members continue from their "
-        "checkpoints; a member without one (one that completed keeps none) runs again\n",
+        "last checkpoints (a completed member from its last one before tmax, which it redoes "
+        "bit for bit); a member without one runs again\n",
         options.out,
         earlier == now ? "" : fmt::format(" but N: {} where it ran N = {}", now, earlier));
   }

@@ -304,9 +304,13 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
   summary.flush(); // checked: a failed write throws OutputError
   for (const auto& sp : spikes)
     say("gbssn1d sweep: spike: {} has max H_L2_R = {:.2e}, {:.0f} times the median {:.2e} of its "
-        "{} neighbour(s) along {}; flagged in summary.dat\n",
+        "{} neighbour(s) along {}; flagged in summary.dat{}\n",
         members[sp.member].name, results[sp.member].H_R_max, sp.factor, sp.median, sp.neighbours,
-        sp.axis);
+        sp.axis,
+        sp.neighbours == 1 ? fmt::format(" (with two values of {} a spike and a trend look alike: "
+                                         "a third value tells them apart)",
+                                         sp.axis)
+                           : std::string());
   report_warnings(dir, members);
   return statuses;
 }

@@ -93,6 +93,15 @@ if "$py" "$plots/plot_sweep.py" "$dir/loaders_sweep/summary.dat" -x N -o "$dir/x
   echo "an axis that was not swept accepted"; exit 1
 fi
 grep -q "not a swept column" "$dir/err"
+# a third swept column: refused without --where, naming it; with it, the chosen members' map
+"$gbssn1d" sweep --out "$dir/sweep3" --sweep rahA=0,0.5 --sweep rah0=0.9,1 --sweep N=60,80 \
+  --id 1log-trumpet --grid uniform --rmax 20 --tmax 0.5 --dt-series 0.5 >/dev/null 2>&1
+if "$py" "$plots/plot_sweep.py" "$dir/sweep3/summary.dat" -o "$dir/x.png" 2>"$dir/err"; then
+  echo "a third swept column drawn without --where"; exit 1
+fi
+grep -q "the sweep varies N too (60, 80)" "$dir/err"
+"$py" "$plots/plot_sweep.py" "$dir/sweep3/summary.dat" --where N=80 -o "$dir/sweep3.png"
+head -c 8 "$dir/sweep3.png" | grep -q PNG
 # ... and ordered curves (resolutions, times) darken monotonically along the sequential map
 PYTHONPATH="$plots" "$py" - <<'PY'
 import numpy as np
