@@ -25,7 +25,7 @@ cd "$(dirname "$0")/.."
 py=/usr/bin/python3
 out=out/box-interfaces
 mkdir -p "$out"
-jobs=$(nproc)
+jobs=${GBSSN1D_JOBS:-$(nproc)}
 
 # the tapers compared: name and flags
 tapers=("off:--box-taper 0" "half-all:--box-taper 0.5 --box-taper-from 0"

@@ -22,7 +22,7 @@ cd "$(dirname "$0")/.."
 py=/usr/bin/python3
 out=out/boxes
 mkdir -p "$out"
-jobs=$(nproc)
+jobs=${GBSSN1D_JOBS:-$(nproc)}
 
 # The tables of the study doc's Sec. 6 and 7.3 were made at cfl 0.25, the boxes' default until
 # 2026-11-26 (their stage-value errors are the same at 0.5, the default since: Sec. 11); the

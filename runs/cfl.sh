@@ -14,7 +14,7 @@ py=/usr/bin/python3
 out=out/cfl
 rm -rf "$out"
 mkdir -p "$out"
-jobs=$(nproc)
+jobs=${GBSSN1D_JOBS:-$(nproc)}
 cfls="0.25 0.35 0.5 0.6 0.7 0.8 0.9 1"
 grids=("sinh-wormhole:--id wormhole" "sinh-trumpet:--id 1log-trumpet"
        "uniform-trumpet:--id 1log-trumpet --grid uniform --rmax 200 --N 1600"

@@ -35,7 +35,7 @@ family() { # family NAME "N list" [evolve flags]: one converge run, kept if alre
     return 0
   fi
   rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
+  build/gbssn1d converge --N "$Ns" -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
     >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
 }
 table() { $py plots/horizon_study.py table "$@"; }

@@ -20,7 +20,7 @@ for v in "${variants[@]}"; do
   # one `gbssn1d converge` per run (members in out/horizon-convergence/<tag>/N<n>/); a member
   # that blows up is a result, not a reason to stop: its stderr says where and when
   # shellcheck disable=SC2086
-  build/gbssn1d converge --N 400,800,1600 -j "$(nproc)" --out "$out/$tag" \
+  build/gbssn1d converge --N 400,800,1600 -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$tag" \
     --config "runs/horizon-maximal-$cfg.toml" $flags --dt-series 1 --dt-profiles 100 \
     >/dev/null 2>>"$out/stderr.log" || true
 done

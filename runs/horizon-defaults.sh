@@ -13,7 +13,7 @@ for h in 0.5 0.6 0.89 1.2 1.5 2; do
   rm -rf "${out:?}/h$h"
   build/gbssn1d evolve --rahA 0.5 --rah0 "$h" --tmax 1000 --dt-series 1 --dt-profiles 1000 \
     --out "$out/h$h" 2>"$out/h$h.log" &
-  if [ "$(jobs -r | wc -l)" -ge "$(nproc)" ]; then wait -n || true; fi
+  if [ "$(jobs -r | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; then wait -n || true; fi
 done
 wait || true
 for h in 0.5 0.6 0.89 1.2 1.5 2; do

@@ -11,7 +11,7 @@ out=out/horizon
 rm -rf "$out" && mkdir -p "$out"
 for cfg in runs/horizon-*.toml; do
   # a member that blows up is a result, not a reason to stop: the sweep's summary says so
-  build/gbssn1d sweep -j "$(nproc)" --out "$out/$(basename "$cfg" .toml)" --config "$cfg" \
+  build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$(basename "$cfg" .toml)" --config "$cfg" \
     --sweep N=400,800 2>>"$out/stderr.log" || true
 done
 for data in maximal 1log; do

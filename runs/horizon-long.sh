@@ -13,7 +13,7 @@ rm -rf "$out" && mkdir -p "$out"
 for cfg in standard stretch shrink; do
   # one `gbssn1d converge` per configuration (members in out/horizon-long/<cfg>/N<n>/); a
   # member that blows up is a result, not a reason to stop: its stderr says where and when
-  build/gbssn1d converge --N 400,800,1600 -j "$(nproc)" --out "$out/$cfg" \
+  build/gbssn1d converge --N 400,800,1600 -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$cfg" \
     --config "runs/horizon-maximal-$cfg.toml" --rmax 1600 --tmax 1000 --dt-series 5 \
     --dt-profiles 500 >/dev/null 2>>"$out/stderr.log" || true
 done

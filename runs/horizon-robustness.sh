@@ -18,14 +18,14 @@ mkdir -p "$out"
 axes=(--sweep id=1log-trumpet,maximal-trumpet,wormhole
   --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6,0.5:0.89,0.5:1.2,0.5:1.5,0.5:2.0)
 run=(--tmax "$tmax" --dt-series 1 --dt-profiles "$tmax")
-build/gbssn1d sweep -j "$(nproc)" --out "$out/uniform" "${axes[@]}" "${run[@]}" \
+build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/uniform" "${axes[@]}" "${run[@]}" \
   --sweep N=1600,3200 --grid uniform --rmax 200 || true
-build/gbssn1d sweep -j "$(nproc)" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
+build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
   --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
 shrinks=(--id wormhole --eta 1 --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6)
-build/gbssn1d sweep -j "$(nproc)" --out "$out/wormhole-eta1-uniform" "${shrinks[@]}" "${run[@]}" \
+build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/wormhole-eta1-uniform" "${shrinks[@]}" "${run[@]}" \
   --sweep N=1600,3200 --grid uniform --rmax 200 || true
-build/gbssn1d sweep -j "$(nproc)" --out "$out/wormhole-eta1-default-grid" "${shrinks[@]}" \
+build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/wormhole-eta1-default-grid" "${shrinks[@]}" \
   "${run[@]}" --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
 for s in uniform default-grid wormhole-eta1-uniform wormhole-eta1-default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"

@@ -60,7 +60,7 @@ row() {
   local shift_flags=()
   [ "$h" = std ] || shift_flags=(--rahA 0.5 --rah0 "$h")
   rm -rf "${out:?}/$name"
-  local cmd=(build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" --id "$id"
+  local cmd=(build/gbssn1d converge --N "$Ns" -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$name" --id "$id"
              "${shift_flags[@]}" "${common[@]}" "$@")
   printf '%q ' "${cmd[@]}" >"$out/$name.cmd"
   local status=0

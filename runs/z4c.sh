@@ -29,7 +29,7 @@ boxes_trumpet=(--id 1log-trumpet --grid boxes --levels 10 --rmax 2048 --N 64)
 sinh_wormhole=(--id wormhole --N 160)
 kappas="0 0.02 0.05 0.1 0.2 0.3 0.5 0.7 1 1.5 2 3 5"
 
-# run NAME FLAGS...: one evolve into $out/NAME (in the background, at most $(nproc) at once),
+# run NAME FLAGS...: one evolve into $out/NAME (in the background, at most ${GBSSN1D_JOBS:-$(nproc)} at once),
 # kept if it completed with these very inputs (config.toml as `evolve --print-config` writes it
 # now: other flags, or defaults changed since, redo it); a run that stops is reported.
 run() {
@@ -40,7 +40,7 @@ run() {
       <(grep -v '^#' "$out/$name/config.toml"); then
     return 0
   fi
-  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n; done
+  while [ "$(jobs -rp | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; do wait -n; done
   { rm -rf "${out:?}/$name"
     build/gbssn1d evolve --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
       echo "  ($name stopped: $(tail -1 "$out/$name.log"))"; } &
@@ -57,7 +57,7 @@ family() {
     return 0
   fi
   rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$(nproc)" --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
+  build/gbssn1d converge --N "$Ns" -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$name" "$@" >"$out/$name.log" 2>&1 ||
     echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
 }
 
