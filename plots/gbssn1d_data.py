@@ -341,7 +341,10 @@ def several_label(names, params=None):
         units = {c[1] for c in composed}
         if len(wheres) == 1 and len(units) == 1:
             return f'L2 norm over {wheres.pop()} ({units.pop()})'
-    return ', '.join(axis_label(n, params) for n in names)
+    labels = [axis_label(n, params) for n in names]
+    joined = ', '.join(labels)
+    # one per line when they would run past the axis (two are about 60 characters)
+    return ',\n'.join(labels) if len(joined) > 45 else joined
 
 
 _PARAM = re.compile(r'#?\s*([A-Za-z][\w.-]*)\s*=\s*(.*)$')

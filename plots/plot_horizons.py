@@ -14,6 +14,7 @@ sequential map (darker: later). Curves that coincide are drawn in different line
 named in a note. --target draws each shifted run's target radius rah0 as a dotted line.
 """
 import argparse
+import textwrap
 import math
 import sys
 
@@ -146,8 +147,11 @@ def main():
                     lw=1.6 if run['ls'] == '-' else 2.0)
             if a.target and 'rah0' in run['params'] and shifted(run['params']):
                 targets.setdefault(float(run['params']['rah0']), set()).add(run['color'])
+        target_colors = set()
         for h, colors in targets.items():
-            ax.axhline(h, color=colors.pop() if len(colors) == 1 else 'dimgray', ls=':', lw=1.2)
+            color = colors.pop() if len(colors) == 1 else 'dimgray'
+            target_colors.add(color)
+            ax.axhline(h, color=color, ls=':', lw=1.2)
         notes = [f'identical curves: {", ".join(r["label"] for r in group)}' for group in same]
         if notes:
             ax.text(0.98, 0.03, '\n'.join(notes), transform=ax.transAxes, ha='right',
@@ -155,7 +159,10 @@ def main():
         if panel_title:
             ax.set_title(panel_title, fontsize=10)
         if handles is None:
-            extra = ([mlines.Line2D([], [], color='dimgray', ls=':', label='target h = rah0')]
+            # drawn in its run's colour: so is the legend's entry when there is one colour
+            extra = ([mlines.Line2D([], [], ls=':', label='target h = rah0',
+                                    color=(next(iter(target_colors))
+                                           if len(target_colors) == 1 else 'dimgray'))]
                      if targets else [])
             ax.legend(handles=ax.get_legend_handles_labels()[0] + extra, fontsize=7)
         ax.tick_params(labelbottom=True)  # also above an empty slot and in shared columns
@@ -170,10 +177,13 @@ def main():
     description = run_description(params_list)
     if handles is not None:
         if a.target:
-            handles.append(mlines.Line2D([], [], color='dimgray', ls=':', label='target h = rah0'))
+            handles.append(mlines.Line2D([], [], color='dimgray', ls=':',
+                                         label="target h = rah0 (in its run's colour)"))
         legend = fig.legend(handles=handles, loc='center right', fontsize=8)
+    # the description wrapped to the figure's width (about 10 characters an inch at 11 pt)
+    wrapped = textwrap.fill(description, width=int(fig.get_figwidth() * 10)) if description else ''
     fig.suptitle(title + (f' ({len(runs)} runs)' if n > 1 else '')
-                 + (f'\n{description}' if description else ''), fontsize=11)
+                 + (f'\n{wrapped}' if wrapped else ''), fontsize=11)
     fig.tight_layout()
     if handles is not None:  # make room for the figure's legend on the right
         fig.canvas.draw()
