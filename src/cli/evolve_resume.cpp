@@ -43,6 +43,31 @@ namespace gbssn1d {
 
 namespace {
 
+/// With --force into a folder that is not empty: the entries an evolve run does not write (its
+/// files, their temporary names, the lock), named for a warning; empty otherwise.
+std::string leftovers_of_force(const Params& p) {
+  namespace fs = std::filesystem;
+  if (!p.force)
+    return {};
+  static const std::set<std::string> own = {"timeseries.dat", "profiles.dat",   "horizon.dat",
+                                            "config.toml",    "checkpoint.bin", "rah-hAH-file.dat",
+                                            folder_lock_name};
+  std::vector<std::string> left;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(p.out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!own.count(name) && !name.ends_with(".tmp") && !name.ends_with(".resume"))
+      left.push_back(printable(name) + (entry.is_directory(ec) ? "/" : ""));
+  }
+  std::sort(left.begin(), left.end());
+  if (left.size() > 6) {
+    const std::size_t more = left.size() - 5;
+    left.resize(5);
+    left.push_back(fmt::format("and {} more", more));
+  }
+  return fmt::format("{}", fmt::join(left, ", "));
+}
+
 int run_and_report(Simulation& sim, Output& out, const Params& p);
 
 /// The bytes of a file ("" if it cannot be read: the caller's checks refuse such a file).
@@ -82,6 +107,10 @@ int evolve(Params p, bool print_config) {
   validate_output_dir(p);
   for (const auto& w : warnings(p))
     say("gbssn1d: warning: {}\n", w);
+  if (const std::string left = leftovers_of_force(p); !left.empty())
+    say("gbssn1d: warning: --force: {} also holds {}, which this run does not write: left as "
+        "they are, beside its own files (another command's output, e.g. a study's?)\n",
+        printable(p.out), left);
 
   Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
