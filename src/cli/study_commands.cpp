@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
+#include "config/folder_lock.hpp"
 #include "config/input_files.hpp"
 #include "config/numbers.hpp"
 #include "config/params.hpp"
@@ -187,6 +188,24 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     o.force = options.force || continuing;
     return o;
   }());
+  if (options.force && !continuing) { // what --force leaves of another command's output
+    std::set<std::string> own = {"config.toml", "convergence.dat", "scaled_H.dat",
+                                 folder_lock_name};
+    for (int n : options.N)
+      own.insert(fmt::format("N{}", n));
+    std::vector<std::string> left;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(options.out, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (!own.count(name) && !name.ends_with(".tmp"))
+        left.push_back(printable(name) + (entry.is_directory(ec) ? "/" : ""));
+    }
+    std::sort(left.begin(), left.end());
+    if (!left.empty())
+      say("gbssn1d converge: warning: --force: {} also holds {}, which this study does not "
+          "write: left as they are, beside its own files\n",
+          printable(options.out), fmt::join(left, ", "));
+  }
   // validates every member before anything is written; their warnings (as evolve's), each
   // once, naming the members it concerns when not all
   const std::vector<Params> members = converge_members(base, options);
