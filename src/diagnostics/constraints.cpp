@@ -16,13 +16,14 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
   out.G_r.resize(n);
   out.R_areal.resize(n);
   out.Theta_plus.resize(n);
+  out.m_ms.resize(n);
   if (formulation_of(u, grid) == Formulation::z4c) {
     const auto theta = field(u, grid, Var::Theta).subspan(grid.first_interior(), n);
     out.Theta.assign(theta.begin(), theta.end());
   }
-  diagnostic_rows(
-      u, grid,
-      {out.H.data(), out.M_r.data(), out.G_r.data(), out.R_areal.data(), out.Theta_plus.data()});
+  diagnostic_rows(u, grid,
+                  {out.H.data(), out.M_r.data(), out.G_r.data(), out.R_areal.data(),
+                   out.Theta_plus.data(), out.m_ms.data()});
   return out;
 }
 

@@ -12,6 +12,7 @@ namespace gbssn1d {
 /// Derived profiles on the interior points (index 0 ... N-1 = grid point first_interior()...).
 struct DerivedProfiles {
   std::vector<double> H, M_r, G_r, R_areal, Theta_plus;
+  std::vector<double> m_ms;  ///< (T4) the Misner-Sharp mass
   std::vector<double> Theta; ///< Z4c's Theta (Sec. 17); empty for a BSSN state
 };
 

@@ -54,6 +54,7 @@ DerivedProfiles composite_profiles(const mesh::MeshLayout& layout, const mesh::C
   c.G_r = gather(&DerivedProfiles::G_r);
   c.R_areal = gather(&DerivedProfiles::R_areal);
   c.Theta_plus = gather(&DerivedProfiles::Theta_plus);
+  c.m_ms = gather(&DerivedProfiles::m_ms);
   if (!levels.front().Theta.empty())
     c.Theta = gather(&DerivedProfiles::Theta);
   return c;

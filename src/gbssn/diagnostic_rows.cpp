@@ -45,6 +45,7 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
       out.H[k] = c.H;
       out.M_r[k] = c.M_r;
       out.G_r[k] = c.G_r;
+      out.m_ms[k] = misner_sharp_mass(pd);
     }
     out.R_areal[k] = areal_radius(pd);
     out.Theta_plus[k] = expansion_plus(pd);
@@ -54,7 +55,7 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
 template <int p, Formulation formulation>
 void diagnostic_rows_as(const State& u, const Grid& grid, const DiagnosticRows& out,
                         std::size_t k_begin, std::size_t k_end) {
-  if (out.H || out.M_r || out.G_r)
+  if (out.H)
     diagnostic_rows_at<p, formulation, true>(u, grid, out, k_begin, k_end);
   else
     diagnostic_rows_at<p, formulation, false>(u, grid, out, k_begin, k_end);
@@ -76,9 +77,9 @@ void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out
   if (k_begin > k_end || k_end > grid.n_interior())
     throw std::out_of_range("diagnostic_rows: points outside the interior");
   if (!out.R_areal || !out.Theta_plus
-      || (out.H || out.M_r || out.G_r) != (out.H && out.M_r && out.G_r))
-    throw std::invalid_argument(
-        "diagnostic_rows: R_areal and Theta_plus, and all three constraints or none");
+      || (out.H || out.M_r || out.G_r || out.m_ms) != (out.H && out.M_r && out.G_r && out.m_ms))
+    throw std::invalid_argument("diagnostic_rows: R_areal and Theta_plus, and all three "
+                                "constraints with the Misner-Sharp mass or none of them");
   switch (grid.fd_order()) {
   case 2:
     return diagnostic_rows_of<2>(u, grid, out, k_begin, k_end);

@@ -219,4 +219,17 @@ inline double areal_radius(const PointData& p) {
   return p.r * std::sqrt(p.f[b] / p.f[chi]);
 }
 
+/// (T4) the Misner-Sharp mass (R_A/2) [1 - (chi/a) R_A'^2 + R_A^2 (K^th_th)^2], with
+/// R_A' = R_A (1/r + b'/(2b) - chi'/(2chi)) from (T2) and K^th_th = A_b + K/3 = K/3 - A_a/2: the
+/// mass inside the sphere through the point, M at every point of any slice of Schwarzschild.
+inline double misner_sharp_mass(const PointData& p) {
+  using enum Var;
+  const MetricPieces m = metric_pieces(p);
+  const double R = areal_radius(p);
+  const double dR_R = p.inv_r + 0.5 * (m.db_b - m.dchi_chi); // R_A'/R_A
+  const double K_thth = p.f[K] / 3.0 - 0.5 * p.f[A_a];
+  const double RR = R * R;
+  return 0.5 * R * (1.0 - RR * (p.f[chi] * m.inv_a * dR_R * dR_R - K_thth * K_thth));
+}
+
 } // namespace gbssn1d

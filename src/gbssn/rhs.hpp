@@ -40,9 +40,10 @@ PointData adm_point_data(const State& u, const Grid& grid, std::size_t i);
 /// Rows of values of interior points: out[k - k_begin] for point k (grid point
 /// first_interior() + k).
 struct DiagnosticRows {
-  double *H, *M_r, *G_r; ///< the constraints (Sec. 5); all three null: not computed
-  double* R_areal;       ///< (T2) the areal radius
-  double* Theta_plus;    ///< (T1) the outgoing expansion
+  double *H, *M_r, *G_r;  ///< the constraints (Sec. 5); all three null: not computed
+  double* R_areal;        ///< (T2) the areal radius
+  double* Theta_plus;     ///< (T1) the outgoing expansion
+  double* m_ms = nullptr; ///< (T4) the Misner-Sharp mass; computed with the constraints
 };
 /// The constraints, areal radius and expansion at the interior points [k_begin, k_end), from
 /// adm_point_data's values at the grid's order: one vectorised loop (diagnostic_rows.cpp)

@@ -46,7 +46,7 @@ std::vector<std::string> profile_columns(Formulation formulation) {
   for (const auto& entry : evolved(formulation))
     cols.emplace_back(entry.name);
   for (const char* name :
-       {"H", "M_r", "G_r", "R_areal", "Theta_plus", "beta_GD", "beta_H", "level"})
+       {"H", "M_r", "G_r", "R_areal", "Theta_plus", "m_ms", "beta_GD", "beta_H", "level"})
     cols.emplace_back(name);
   return cols;
 }
@@ -369,8 +369,8 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
       line.push_back(' ');
       append_scientific(line, v);
     }
-    for (double v :
-         {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], beta_GD, beta_H[i]}) {
+    for (double v : {d.H[k], d.M_r[k], d.G_r[k], d.R_areal[k], d.Theta_plus[k], d.m_ms[k], beta_GD,
+                     beta_H[i]}) {
       line.push_back(' ');
       append_scientific(line, v);
     }

@@ -3,6 +3,7 @@
 #include "config/params.hpp"
 #include "diagnostics/constraints.hpp"
 #include "evolution/simulation.hpp"
+#include "initial_data/initial_data.hpp"
 
 #include "../test_support.hpp"
 
@@ -92,4 +93,54 @@ TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   const auto s = gbssn1d::testing::read_table((dir / "timeseries.dat").string());
   CHECK(s.at(2, "r_ah") == h.at(2, "r_ah"));
   fs::remove_all(dir);
+}
+
+// (T4) The Misner-Sharp mass is the mass inside each sphere: M at every point of every slice of
+// Schwarzschild, whatever the coordinates (wormhole data's two sheets, both trumpets), so its
+// error on exact data is the finite differences' alone and falls at their order. A Gaussian
+// bump added to K (a slice no longer of Schwarzschild, momentarily) moves it where the bump is.
+TEST_CASE("profiles' m_ms: M at every point of Schwarzschild slices, at the differences' order") {
+  for (const InitialDataKind kind : {InitialDataKind::wormhole, InitialDataKind::onelog_trumpet,
+                                     InitialDataKind::maximal_trumpet}) {
+    InitialDataParams id;
+    id.kind = kind;
+    id.M = 1.5;
+    INFO("initial data " << static_cast<int>(kind));
+    std::vector<double> worst;
+    for (const int N : {200, 400, 800}) {
+      const Grid g(RadialMap::uniform(20.0), N);
+      const State u = initial_data(g, id, Formulation::bssn);
+      const DerivedProfiles d = derived_profiles(u, g);
+      double e = 0.0; // over 0.5 M <= r <= 10 M: away from the puncture's stencils and the edge
+      for (std::size_t k = 0; k < d.m_ms.size(); ++k) {
+        const double r = g.r()[g.first_interior() + k];
+        if (r >= 0.5 * id.M && r <= 10.0 * id.M)
+          e = std::max(e, std::abs(d.m_ms[k] - id.M));
+      }
+      worst.push_back(e);
+    }
+    INFO("max |m_ms - M| at N = 200, 400, 800: " << worst[0] << ", " << worst[1] << ", "
+                                                 << worst[2]);
+    CHECK(worst[0] < 1e-4);
+    CHECK(std::log2(worst[0] / worst[1]) > 3.5);
+    CHECK(std::log2(worst[1] / worst[2]) > 3.5);
+  }
+  const Grid g(RadialMap::uniform(20.0), 400);
+  InitialDataParams id;
+  id.kind = InitialDataKind::onelog_trumpet;
+  State u = initial_data(g, id, Formulation::bssn);
+  auto K = field(u, g, Var::K);
+  for (std::size_t i = 0; i < g.n_total(); ++i)
+    K[i] += 0.1 * std::exp(-(g.r()[i] - 5.0) * (g.r()[i] - 5.0));
+  const DerivedProfiles d = derived_profiles(u, g);
+  double at5 = 0.0, at15 = 0.0;
+  for (std::size_t k = 0; k < d.m_ms.size(); ++k) {
+    const double r = g.r()[g.first_interior() + k];
+    if (std::abs(r - 5.0) < 0.03)
+      at5 = d.m_ms[k] - 1.0;
+    if (std::abs(r - 15.0) < 0.03)
+      at15 = d.m_ms[k] - 1.0;
+  }
+  CHECK(std::abs(at5) > 1e-2);
+  CHECK(std::abs(at15) < 1e-6);
 }

@@ -83,6 +83,7 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
     check(c.G_r, ref("G_r"), "G_r", r);
     check(expansion_plus(p), ref("Theta_plus"), "Theta_plus", r);
     check(areal_radius(p), ref("R_areal"), "R_areal", r);
+    check(misner_sharp_mass(p), ref("m_ms"), "m_ms", r);
   }
 }
 
@@ -117,6 +118,7 @@ TEST_CASE("Z4c: point-wise RHS agrees with the symbolic reference (Sec. 17, V8)"
     check(c.M_r, ref("M_r"), "M_r", r);
     check(c.G_r, ref("G_r"), "G_r", r);
     check(expansion_plus(adm), ref("Theta_plus"), "Theta_plus", r);
+    check(misner_sharp_mass(adm), ref("m_ms"), "m_ms", r);
   }
 }
 

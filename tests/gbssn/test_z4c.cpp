@@ -208,6 +208,7 @@ TEST_CASE("Z4c: the constraints and the expansion read K-hat + 2 Theta, the ADM 
                                {a.M_r[k], b.M_r[k]},
                                {a.G_r[k], b.G_r[k]},
                                {a.Theta_plus[k], b.Theta_plus[k]},
+                               {a.m_ms[k], b.m_ms[k]},
                                {a.R_areal[k], b.R_areal[k]}})
       worst = std::max(worst, std::abs(x - y) / (1.0 + std::abs(x)));
   CHECK(worst < 1e-12);
@@ -236,16 +237,16 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
         }
       }
       const std::size_t n = g.n_interior();
-      std::vector<double> rows(5 * n);
-      const DiagnosticRows all{rows.data(), rows.data() + n, rows.data() + 2 * n,
-                               rows.data() + 3 * n, rows.data() + 4 * n};
+      std::vector<double> rows(6 * n);
+      const DiagnosticRows all{rows.data(),         rows.data() + n,     rows.data() + 2 * n,
+                               rows.data() + 3 * n, rows.data() + 4 * n, rows.data() + 5 * n};
       diagnostic_rows(u, g, all);
-      std::vector<double> part(5 * 30);
+      std::vector<double> part(6 * 30);
       const std::size_t k0 = 50;
-      diagnostic_rows(
-          u, g,
-          {part.data(), part.data() + 30, part.data() + 60, part.data() + 90, part.data() + 120},
-          k0, k0 + 30);
+      diagnostic_rows(u, g,
+                      {part.data(), part.data() + 30, part.data() + 60, part.data() + 90,
+                       part.data() + 120, part.data() + 150},
+                      k0, k0 + 30);
       // the horizon finder's rows: R and Theta_+ alone, the constraints null
       std::vector<double> finder(2 * n);
       diagnostic_rows(u, g, {nullptr, nullptr, nullptr, finder.data(), finder.data() + n}, 0, n);
@@ -253,14 +254,15 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
       for (std::size_t k = 0; k < n; ++k) {
         const PointData p = adm_point_data(u, g, g.first_interior() + k);
         const Constraints c = constraints(p);
-        const std::array<double, 5> expected{c.H, c.M_r, c.G_r, areal_radius(p), expansion_plus(p)};
-        for (std::size_t q = 0; q < 5; ++q) {
+        const std::array<double, 6> expected{
+            c.H, c.M_r, c.G_r, areal_radius(p), expansion_plus(p), misner_sharp_mass(p)};
+        for (std::size_t q = 0; q < 6; ++q) {
           const double scale = 1.0 + std::abs(expected[q]);
           worst = std::max(worst, std::abs(rows[q * n + k] - expected[q]) / scale);
           if (k >= k0 && k < k0 + 30)
             worst_part =
                 std::max(worst_part, std::abs(part[q * 30 + k - k0] - expected[q]) / scale);
-          if (q >= 3)
+          if (q == 3 || q == 4)
             worst_finder =
                 std::max(worst_finder, std::abs(finder[(q - 3) * n + k] - expected[q]) / scale);
         }
@@ -271,14 +273,19 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
       CHECK(worst_finder < 1e-12);
     }
   const Grid g(RadialMap::uniform(10.0), 40);
-  std::vector<double> out(5);
+  std::vector<double> out(6);
   InitialDataParams id;
   const State u = initial_data(g, id, Formulation::bssn);
   CHECK_THROWS_AS(diagnostic_rows(u, g, {&out[0], &out[1], &out[2], &out[3], &out[4]}, 39, 41),
                   std::out_of_range);
-  // the constraints all three or none; R and Theta_+ always
-  CHECK_THROWS_AS(diagnostic_rows(u, g, {&out[0], nullptr, &out[2], &out[3], &out[4]}, 0, 1),
+  // the constraints all three with the Misner-Sharp mass, or none; R and Theta_+ always
+  CHECK_THROWS_AS(
+      diagnostic_rows(u, g, {&out[0], nullptr, &out[2], &out[3], &out[4], &out[5]}, 0, 1),
+      std::invalid_argument);
+  CHECK_THROWS_AS(diagnostic_rows(u, g, {&out[0], &out[1], &out[2], &out[3], &out[4]}, 0, 1),
                   std::invalid_argument);
+  CHECK_NOTHROW(
+      diagnostic_rows(u, g, {&out[0], &out[1], &out[2], &out[3], &out[4], &out[5]}, 0, 1));
   CHECK_THROWS_AS(diagnostic_rows(u, g, {nullptr, nullptr, nullptr, &out[3], nullptr}, 0, 1),
                   std::invalid_argument);
 }

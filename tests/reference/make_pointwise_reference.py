@@ -68,6 +68,7 @@ outputs = {
     'G_r': ns['gconstraint'](a, b, L),
     'Theta_plus': ns['expansion'](a, b, phi, K, Aa),
     'R_areal': ns['areal_radius'](b, phi),
+    'm_ms': ns['misner_sharp'](a, b, phi, K, Ab),
 }
 
 radii = [sp.Rational(3, 10), sp.Rational(7, 10), sp.Rational(11, 10), sp.Rational(19, 10),
@@ -129,6 +130,7 @@ z4c_outputs = {
     'M_r': ns['momentum'](a, b, phi, K_adm, Aa, Ab),
     'G_r': ns['gconstraint'](a, b, L),
     'Theta_plus': ns['expansion'](a, b, phi, K_adm, Aa),
+    'm_ms': ns['misner_sharp'](a, b, phi, K_adm, Ab),
 }
 write_table('pointwise_reference_z4c.dat', 'Z4c', z4c_fields,
             {'eta': eta, 'kappa1': kappa1, 'kappa2': kappa2}, z4c_outputs)
