@@ -526,15 +526,17 @@ TEST_CASE("the tapered buffer relaxes a box's outer cells towards its parent, we
 // the first are left alone.
 namespace {
 /// sum_m w[m] a[m][k], summed in the order m = 0, 1, ... as the library's sums are: each term
-/// added as it is formed, which GCC contracts into an FMA where the target has one, as in the
-/// library's loops across cells. Not vectorised across m: with 256-bit vectors GCC 12 turned
-/// this loop, at 5 arrays, into an in-order reduction of products rounded before they were
-/// added (138 of 378 cells differed from an FMA chain in their last bit).
+/// added as it is formed, an FMA chain, as GCC contracts the library's loops across cells where
+/// the target has FMA (-march=native on every host so far). Written with std::fma, not left to
+/// contraction: on a Zen 4 host (-march=znver3) GCC 12 compiled `s += w[m] * a` here into
+/// products rounded before they were added, while the library's loops kept the FMA chain (every
+/// multi-array case differed in its last bit); with 256-bit vectors on Ice Lake it had turned
+/// this loop into an in-order reduction of rounded products, hence no vectorisation either.
 [[gnu::optimize("no-tree-vectorize")]] double
 combination_at(const std::vector<const State*>& a, std::span<const double> w, std::size_t k) {
   double s = 0.0;
   for (std::size_t m = 0; m < a.size(); ++m)
-    s += w[m] * (*a[m])[k];
+    s = std::fma(w[m], (*a[m])[k], s);
   return s;
 }
 } // namespace
