@@ -223,6 +223,11 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
        "RK stages from the last four radii; on two or more boxes the same as substage), step, "
        "or a number of steps (held in between); with --rahA != 0 and no --rah-hAH-file",
        Acts::with_searches},
+      {"ah-interval", &Params::ah_interval, "Horizon",
+       "T: a horizon search every T of evolution time (after the first step of the hierarchy at "
+       "or past each multiple of T), h_AH held in between: the same hold at every resolution, as "
+       "a 3D code calls its finder; refused with --ah-every other than substage",
+       Acts::with_searches},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches for the shift before this time",
        Acts::with_searches},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches for the shift after this time",
@@ -282,6 +287,7 @@ const std::map<std::string, std::string>& default_rules() {
       {"kappa1", "0.02/M"},
       {"norm-rmax", "min(10 M, rmax/2)"},
       {"ah-tmax", "none"},
+      {"ah-interval", "none (--ah-every)"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
       {"box-taper", "0.5 on two or more boxes (0 with Z4c's damping)"}};

@@ -87,6 +87,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.norms.Rint = p.norm_Rint * p.M;
   c.horizon_search.every_steps = ah_every_steps(p);
   c.horizon_search.extrapolate = p.ah_every == SearchEvery::extrapolated;
+  c.horizon_search.interval = p.ah_interval.value_or(0.0);
   c.horizon_search.schedule = search_schedule(p.rah_variant.value());
   c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());

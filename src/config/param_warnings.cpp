@@ -2,6 +2,8 @@
 
 #include "config/param_rules.hpp"
 #include "config/same_run.hpp"
+#include "evolution/levels.hpp"
+#include "mesh/hierarchy.hpp"
 
 #include <fmt/format.h>
 
@@ -43,21 +45,25 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
         "0.25, or the default rk-stages",
         num(p.cfl)));
   // A held h_AH makes beta_H jump in time at every search; quadratic time interpolation of a
-  // subcycled fine box's boundary straddles the jumps, an error of first order in dt that
-  // takes over under refinement (docs/horizon-shift-study.md, Sec. 13: the published stretch
-  // to 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the
-  // finer run's H above the coarser one's from 2.75 M; 3.62 with h_AH at every substage)
+  // subcycled fine box's boundary straddles the jumps, an error that does not fall with the
+  // spacing at a fixed Courant number (second order in dt at a fixed spacing) and takes over
+  // under refinement (docs/horizon-shift-study.md, Sec. 13, 13.1: the published stretch to
+  // 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the finer
+  // run's H above the coarser one's from 2.75 M; 3.92 with h_AH at every substage)
   if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && shift_on(p)
-      && !uses_hAH_file(p) && p.ah_every != SearchEvery::substage
-      && p.ah_every != SearchEvery::extrapolated)
+      && !uses_hAH_file(p)
+      && (p.ah_interval
+          || (p.ah_every != SearchEvery::substage && p.ah_every != SearchEvery::extrapolated)))
     w.push_back(fmt::format(
-        "--time-interp quadratic with --ah-every {}: h_AH held between searches makes beta_H "
-        "jump in time, and the fine boxes' quadratic time interpolation across the jumps is "
-        "first order in dt (the stretch to 0.89 M loses convergence from M/24-M/32: "
-        "docs/horizon-shift-study.md, Sec. 13); use --ah-every substage (the default), "
+        "--time-interp quadratic with {}: h_AH held between searches makes beta_H "
+        "jump in time, and the fine boxes' quadratic time interpolation across the jumps adds an "
+        "error that does not fall with the spacing at a fixed Courant number (the stretch to "
+        "0.89 M loses convergence from M/24-M/32: docs/horizon-shift-study.md, Sec. 13, 13.1); "
+        "use --ah-every substage (the default), "
         "--time-interp rk-stages, or --no-subcycling",
-        p.ah_every.name()));
+        p.ah_interval ? "--ah-interval " + num(*p.ah_interval)
+                      : "--ah-every " + p.ah_every.name()));
   // A taper radius given beyond every fine box: the taper acts on the boxes that reach beyond
   // it (the largest fine box ends at rmax/2), so it would taper none (the default radius, 16 M,
   // leaves the small grids of tests and short runs untapered by design: not warned about)
@@ -205,6 +211,18 @@ void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
         "for, and h_AH(t) comes from the file (no searches); the run is --rah-variant "
         "consistent's",
         p.rah_variant.name()));
+  // --ah-interval T: a search after the first step at or past each multiple of T, so a T below
+  // the step holds h_AH for a step, not for T
+  if (p.ah_interval && !uses_hAH_file(p)) {
+    const EvolutionConfig c = evolution_config(p);
+    const double dt = mesh::hierarchy_dt(make_layout(c), c.stepping);
+    if (*p.ah_interval < dt * (1.0 - 1e-9))
+      w.push_back(fmt::format(
+          "--ah-interval {} is shorter than the {} step, {:.6g} M: a search follows every step, "
+          "so h_AH is held for {:.6g} M, not {}",
+          num(*p.ah_interval), p.grid == RadialGrid::boxes ? "hierarchy's" : "time", dt, dt,
+          num(*p.ah_interval)));
+  }
   if (p.rah_hAH_file.empty() && p.tmax > 0.0 && p.ah_tmin >= p.tmax)
     w.push_back(fmt::format(
         "--ah-tmin {} is at or after --tmax {}: no horizon search runs, so the horizon-adjusting "

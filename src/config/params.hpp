@@ -105,6 +105,9 @@ struct Params {
   DriverStencilChoice driver_advection = AdvectionStencil::matched;
   StencilChoice delta_advection = AdvectionStencil::upwind_full; ///< beta d_r Delta^r in (E6)
   AhEvery ah_every = SearchEvery::substage; ///< substage | extrapolated | step | n (every n steps)
+  /// T: a search after the first step of the hierarchy at or past each multiple of T of
+  /// evolution time, h_AH held in between (the same hold for every resolution); unset: --ah-every
+  std::optional<double> ah_interval;
   double ah_tmin =
       evolution_defaults().horizon_search.t_min; ///< searches are made for ah-tmin <= t ...
   std::optional<double> ah_tmax;                 ///< ... <= ah-tmax; unset: until the end

@@ -202,10 +202,6 @@ void validate_horizon_shift(const Params& p) {
                                    "rmax/2: a larger --rmax, or a smaller --rah0)",
                                    num(4.0 * std::max(p.rah0, p.M)), num(p.rah0)));
   }
-  if (!p.ah_every.valid())
-    throw ParamError("--ah-every", printable(p.ah_every.name()),
-                     "must be 'substage', 'extrapolated', 'step' or a whole number of steps "
-                     ">= 1");
   require_choice("--rah-profile", p.rah_profile);
   require_choice("--rah-normal", p.rah_normal);
   if (p.rah_taper)
@@ -250,6 +246,30 @@ void validate_horizon_shift(const Params& p) {
                                  "box-substage; --rah-variant {} is a study variant of the "
                                  "published study's equations, built at --fd-order 4 only",
                                  p.rah_variant.name()));
+  require_positive("--ah-tol", p.ah_tol);
+  require_choice("--rah-variant", p.rah_variant);
+}
+
+/// When the horizon is searched for: --ah-every's forms, the fixed interval in time (which
+/// replaces --ah-every's schedule and needs searches), the window, and the study variants that
+/// change where the searches happen.
+void validate_search_schedule(const Params& p) {
+  if (!p.ah_every.valid())
+    throw ParamError("--ah-every", printable(p.ah_every.name()),
+                     "must be 'substage', 'extrapolated', 'step' or a whole number of steps "
+                     ">= 1");
+  if (p.ah_interval) {
+    require_positive("--ah-interval", *p.ah_interval);
+    if (p.ah_every != SearchEvery::substage)
+      throw ParamError("--ah-interval", num(*p.ah_interval),
+                       fmt::format("sets when the horizon is searched for, as --ah-every {} "
+                                   "does: give one of the two",
+                                   p.ah_every.name()));
+    if (shift_on(p) && uses_hAH_file(p))
+      throw ParamError("--ah-interval", num(*p.ah_interval),
+                       "schedules horizon searches, and with --rah-hAH-file h_AH(t) comes from "
+                       "the file (no searches): give one of the two");
+  }
   require_finite("--ah-tmin", p.ah_tmin);
   if (p.ah_tmin < 0.0)
     throw ParamError("--ah-tmin", num(p.ah_tmin), "must be >= 0");
@@ -259,12 +279,10 @@ void validate_horizon_shift(const Params& p) {
       throw ParamError("--ah-tmax", num(*p.ah_tmax),
                        "must be >= --ah-tmin (leave it out for no limit)");
   }
-  require_positive("--ah-tol", p.ah_tol);
-  require_choice("--rah-variant", p.rah_variant);
   if (p.rah_variant == ShiftVariant::box_substage
-      && (p.grid != RadialGrid::boxes || p.ah_every != SearchEvery::substage))
+      && (p.grid != RadialGrid::boxes || p.ah_every != SearchEvery::substage || p.ah_interval))
     throw ParamError("--rah-variant", p.rah_variant.name(),
-                     "needs --grid boxes and --ah-every substage");
+                     "needs --grid boxes and --ah-every substage (no --ah-interval)");
   if (p.rah_variant == ShiftVariant::midstep_update
       && (p.ah_every == SearchEvery::substage || p.ah_every == SearchEvery::extrapolated))
     throw ParamError("--rah-variant", p.rah_variant.name(),
@@ -371,6 +389,7 @@ void validate(const Params& p) {
   validate_grid_flags(p);
   validate_evolution_numbers(p);
   validate_horizon_shift(p);
+  validate_search_schedule(p);
   validate_grid_and_steps(p);
 }
 

@@ -36,6 +36,9 @@ struct HorizonSearchSettings {
   };
   /// 0: at every RK substage (inside the RHS); n >= 1: every n steps
   long every_steps = 0;
+  /// T > 0: a search after the first step at or past each multiple of T of evolution time,
+  /// h_AH held in between (`--ah-interval`; every_steps is then 0); 0: as every_steps says
+  double interval = 0.0;
   /// every_steps = 0 on a single grid: a search after every step instead, h_AH at each RK
   /// stage's time extrapolated from the last four radii, as boxes always do
   /// (`--ah-every extrapolated`; HorizonTracker::Mode::extrapolated)

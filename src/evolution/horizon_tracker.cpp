@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace gbssn1d {
 
@@ -17,7 +18,7 @@ HorizonTracker::Mode decide_mode(const EvolutionConfig& config, const mesh::Mesh
     return Mode::off;
   if (config.horizon_search.prescribed)
     return Mode::prescribed;
-  if (config.horizon_search.every_steps > 0)
+  if (config.horizon_search.every_steps > 0 || config.horizon_search.interval > 0.0)
     return Mode::held;
   if (config.horizon_search.extrapolate
       || (layout.levels() > 1 && config.horizon_search.schedule != SearchSchedule::box_substage))
@@ -218,8 +219,19 @@ void HorizonTracker::start(double t) {
   }
 }
 
-void HorizonTracker::after_step(long n, double t) {
-  if (const long every = config_.horizon_search.every_steps; every > 0 && n % every == 0)
+bool HorizonTracker::held_search_due(long n, double t_before, double t) const {
+  const HorizonSearchSettings& s = config_.horizon_search;
+  if (s.interval > 0.0) {
+    // the first step ending at or past a multiple of T (within round-off of the step's times,
+    // which are n dt: 3 x (1/3) must reach 1)
+    const auto multiples = [&](double time) { return std::floor(time / s.interval + 1e-9); };
+    return multiples(t) > multiples(t_before);
+  }
+  return s.every_steps > 0 && n % s.every_steps == 0;
+}
+
+void HorizonTracker::after_step(long n, double t_before, double t) {
+  if (held_search_due(n, t_before, t))
     update_held(t);
   search_at_step(t);
 }

@@ -5,8 +5,10 @@
 // the control they feed:
 //   off           no horizon shift (rahA = 0): h_AH is never needed;
 //   prescribed    open loop, h_AH(t) from a file, no searches;
-//   held          a search every n steps (or once a step), the radius held between them (the
-//                 midstep-update variant: inside the RHS, at the 2nd substage of every n-th step);
+//   held          a search every n steps (or once a step), or after the first step at or past
+//                 each multiple of a fixed interval T of evolution time (--ah-interval), the
+//                 radius held between them (the midstep-update variant: inside the RHS, at the
+//                 2nd substage of every n-th step);
 //   substage      a single grid, or boxes with the box-substage variant: the RHS of the level
 //                 holding the horizon searches on every RK stage's state, the others read it;
 //   extrapolated  boxes, searches every substage (the default), or any grid with
@@ -56,9 +58,9 @@ public:
   /// Before the first step at time t: the first searches of the held and extrapolated modes,
   /// and with box-substage every box's starting radius.
   void start(double t);
-  /// After step n of the hierarchy, at time t: the searches due (held every n steps; the
-  /// extrapolated mode's search).
-  void after_step(long n, double t);
+  /// After step n of the hierarchy, from t_before to t: the searches due (held every n steps
+  /// or every interval T; the extrapolated mode's search).
+  void after_step(long n, double t_before, double t);
 
   /// h_AH for the state at time t, as the evolution's RHS would use it now (a search for the
   /// substage mode); nullopt: no horizon, beta_H = 0.
@@ -98,6 +100,10 @@ private:
   std::optional<double> extrapolated_at(double t) const;
   /// A search near `seed` on level l's state; a HorizonFinderError gets the time added.
   std::optional<MarginalSurface> search(std::size_t l, double seed, double t) const;
+  /// Whether the held mode searches after step n (from t_before to t): every n-th step, or the
+  /// first step at or past a multiple of the interval. From the times alone, so that a resumed
+  /// run searches where an uninterrupted one does.
+  bool held_search_due(long n, double t_before, double t) const;
   void update_held(double t);
   void search_at_step(double t);
   /// Throws HorizonLostError: at time t no horizon was found on level l, last at radius `last`.

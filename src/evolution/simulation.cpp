@@ -310,11 +310,12 @@ void Simulation::run(Output* out) {
     const bool dense = clock_.before(t_next);
     if (dense)
       dense_.prepare(clock_.times_inside(t_, t_next));
+    const double t_before = t_;
     step(t_next - t_, dudt_now_);
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
     check_finite();
-    tracker_.after_step(n, t_);
+    tracker_.after_step(n, t_before, t_);
     if (on_step)
       on_step(tracker_);
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)

@@ -11,6 +11,7 @@
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
 #include "config/input_files.hpp"
+#include "config/param_rules.hpp"
 #include "config/params.hpp"
 #include "core/registry.hpp"
 #include "evolution/observe.hpp"
@@ -265,13 +266,15 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
 /// Members on subcycled boxes whose hierarchies step by different dt, with a horizon shift that
 /// follows the searches: h_AH(t) is held or extrapolated over a step of the hierarchy, so each
 /// such step is a slightly different gauge, a floor under the fields' differences
-/// (docs/horizon-shift-study.md, Sec. 6.7). Empty when the steps agree or do not matter.
+/// (docs/horizon-shift-study.md, Sec. 6.7); held every n steps, each member holds it for its own
+/// time (Sec. 13). With --ah-interval T every member holds it for T, unless T is no whole number
+/// of some member's step. Empty when the steps agree or do not matter.
 std::string hierarchy_step_warning(const std::vector<Params>& members) {
   const Params& p = members.front();
   if (p.grid != RadialGrid::boxes || !p.levels || *p.levels < 2 || p.no_subcycling || !shift_on(p)
       || uses_hAH_file(p))
     return {};
-  std::vector<std::string> steps;
+  std::vector<std::string> steps, uneven;
   bool differ = false;
   double first = 0.0;
   for (const Params& m : members) {
@@ -281,9 +284,30 @@ std::string hierarchy_step_warning(const std::vector<Params>& members) {
       first = dt;
     differ = differ || std::abs(dt - first) > 1e-12 * first;
     steps.push_back(fmt::format("N = {}: {:.4g} M", m.N, dt));
+    if (m.ah_interval) {
+      const double k = *m.ah_interval / dt;
+      if (std::abs(k - std::round(k)) > 1e-9 * std::max(1.0, k))
+        uneven.push_back(fmt::format("N = {}: {:.4g} M", m.N, dt));
+    }
+  }
+  if (p.ah_interval) {
+    if (uneven.empty())
+      return {};
+    return fmt::format(
+        "--ah-interval {} is no whole number of the hierarchy's step of {}: those members hold "
+        "h_AH for whole steps, so their holds alternate around {} and differ from the others'; "
+        "a T that every member's step divides holds it equally long in every member",
+        num(*p.ah_interval), fmt::join(uneven, ", "), num(*p.ah_interval));
   }
   if (!differ)
     return {};
+  if (p.ah_every != SearchEvery::substage && p.ah_every != SearchEvery::extrapolated)
+    return fmt::format(
+        "the members' hierarchies step by different dt ({}): with --ah-every {} each member "
+        "holds h_AH for its own number of steps, a different time in each, so the members evolve "
+        "different gauges (docs/horizon-shift-study.md, Sec. 13); --ah-interval T holds it for "
+        "the same time in every member",
+        fmt::join(steps, ", "), p.ah_every.name());
   return fmt::format(
       "the members' hierarchies step by different dt ({}): on subcycled boxes the coarse boxes "
       "extrapolate h_AH over a step of the hierarchy, so each member's gauge differs from the "

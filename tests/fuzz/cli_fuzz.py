@@ -173,6 +173,7 @@ EVOLVE = {
     "--rah-hAH-file": Flag(TEXT, path=True),
     "--ah-every": Flag(TEXT, choices=("substage", "step", "1", "2", "032"),
                        edge=("0", "-3", "99999999999999999999", "1.5")),
+    "--ah-interval": Flag(FLOAT, ("1", "0.5"), ("0", "-1", "1e308", "1e-320")),
     "--ah-tmin": Flag(FLOAT, ("0", "0.1"), ("1e308",)),
     "--ah-tmax": Flag(FLOAT, ("1", "0.5"), ("1e308",)),
     "--ah-tol": Flag(FLOAT, ("1e-12", "1e-10"), ("0.01", "1e300", "1e-300")),

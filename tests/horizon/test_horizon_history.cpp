@@ -68,7 +68,7 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
   tracker.start(0.0);
   for (long n = 1; n <= 6; ++n) {
     set_mass(static_cast<double>(n) * dt);
-    tracker.after_step(n, static_cast<double>(n) * dt);
+    tracker.after_step(n, static_cast<double>(n - 1) * dt, static_cast<double>(n) * dt);
   }
   // the last four searches, oldest first
   const auto& history = tracker.history();
@@ -95,5 +95,54 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
     const double quadratic = lagrange({history.begin() + 1, history.end()}, t);
     CHECK(std::abs(*h - found) < 1e-4);
     CHECK(std::abs(*h - found) < 0.1 * std::abs(quadratic - found));
+  }
+}
+
+// --ah-interval T (horizon_tracker.cpp, held_search_due): a search after the first step at or
+// past each multiple of T, whatever the step, so that every member of a study holds h_AH for
+// the same time. Guards the multiple's round-off (3 x (1/3) must reach 1) and that the hold is
+// counted in time, not in steps.
+TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past each multiple "
+          "of T and held in between, for any step") {
+  Params p;
+  p.grid = RadialGrid::uniform;
+  p.rmax = 8.0;
+  p.N = 64;
+  p.id = InitialDataKind::onelog_trumpet;
+  p.rahA = 0.5;
+  p.rah0 = 1.0;
+  p.ah_interval = 1.0;
+  const Simulation sim = simulation(p);
+  std::vector<State> levels = sim.level_states();
+  std::vector<GbssnRhs> rhs;
+  rhs.emplace_back(sim.layout().grid(0), sim.config().rhs);
+  auto set_mass = [&](double t) {
+    InitialDataParams id;
+    id.kind = InitialDataKind::onelog_trumpet;
+    id.M = 1.0 + 0.05 * t;
+    levels[0] = initial_data(sim.layout().grid(0), id, Formulation::bssn);
+  };
+  struct Case {
+    double dt;
+    std::vector<long> searched; // the steps after which a search is due
+  };
+  for (const Case& c : {Case{1.0 / 3.0, {3, 6, 9}}, Case{0.3, {4, 7, 10}}, Case{0.25, {4, 8, 12}},
+                        Case{1.5, {1, 2, 3, 4}}}) {
+    INFO("dt = " << c.dt);
+    HorizonTracker tracker(sim.config(), sim.layout(), levels, rhs);
+    REQUIRE(tracker.mode() == HorizonTracker::Mode::held);
+    set_mass(0.0);
+    tracker.start(0.0);
+    REQUIRE(rhs[0].horizon_radius());
+    std::vector<long> searched;
+    const long steps = c.dt > 1.0 ? 4 : static_cast<long>(std::lround(3.0 / c.dt));
+    for (long n = 1; n <= steps; ++n) {
+      const double before = *rhs[0].horizon_radius();
+      set_mass(static_cast<double>(n) * c.dt);
+      tracker.after_step(n, static_cast<double>(n - 1) * c.dt, static_cast<double>(n) * c.dt);
+      if (*rhs[0].horizon_radius() != before)
+        searched.push_back(n);
+    }
+    CHECK(searched == c.searched);
   }
 }

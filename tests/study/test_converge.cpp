@@ -396,3 +396,56 @@ TEST_CASE("converge -j runs that many members at once") {
   CHECK(order(1) == "SESESE");
   fs::remove_all(out);
 }
+
+// The thesis's mechanism with a hold fixed in time (--ah-interval 1: every member holds h_AH for
+// 1 M, though their hierarchies step by 1/3, 1/2, 1/3 M): the published configuration on its
+// boxes does not converge at M/24-M/48, and the same family with one smooth h_AH(t) from a file
+// (a finer run's horizon.dat, the same in every member) converges (docs/horizon-shift-study.md,
+// Sec. 13.1). Measured when written: held, H_L2_ext's order over the first tenth -0.64, exit 4;
+// from the file, the lowest order over time 3.49, exit 0.
+TEST_CASE("converge: the published configuration with h_AH held 1 M apart does not converge at "
+          "N = 48, 64, 96 (exit 4), with one smooth h_AH(t) from a file it converges (exit 0)") {
+  const std::string evolve_flags =
+      " --id maximal-trumpet --grid boxes --levels 7 --rmax 128 --rahA 0.5 --rah0 0.89 "
+      "--rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd "
+      "--time-interp quadratic --cfl 0.25 --dt-series 0.25 --dt-profiles 20 ";
+  const std::string published = evolve_flags + "-j 2 ";
+  const fs::path held = scratch("converge_interval_held"), file = scratch("converge_interval_file"),
+                 reference = scratch("converge_interval_reference");
+  std::string err;
+  CHECK(run_study("converge --N 48,64,96" + published + "--tmax 40 --ah-interval 1 --out "
+                      + held.string(),
+                  &err)
+        == 4);
+  INFO(err);
+  CHECK(err.find("but does not converge") != std::string::npos);
+  // the holds are equal in time: no word of different steps, 1 being a whole number of each
+  CHECK(err.find("hierarchies step by different dt") == std::string::npos);
+  CHECK(err.find("is no whole number") == std::string::npos);
+  REQUIRE(run_study("evolve --N 192" + evolve_flags + "--tmax 40 --out " + reference.string())
+          == 0);
+  CHECK(run_study("converge --N 48,64,96" + published + "--tmax 40 --rah-hAH-file "
+                      + (reference / "horizon.dat").string() + " --out " + file.string(),
+                  &err)
+        == 0);
+  CHECK(err.find("; converges: every judged order") != std::string::npos);
+  // held every step instead: the holds are the steps, 1/3, 1/2, 1/3 M, and a warning says so
+  CHECK(run_study("converge --N 48,64,96" + published + "--ah-every step --tmax 2 --force --out "
+                      + held.string(),
+                  &err)
+        != 2);
+  CHECK(err.find("with --ah-every step each member holds h_AH for its own number of steps")
+        != std::string::npos);
+  // a T that is no whole number of 1/3 M and 1/2 M: named
+  CHECK(run_study("converge --N 48,64,96" + published
+                      + "--ah-interval 0.75 --tmax 2 --force "
+                        "--out "
+                      + held.string(),
+                  &err)
+        != 2);
+  CHECK(err.find("--ah-interval 0.75 is no whole number of the hierarchy's step of N = 48: "
+                 "0.3333 M, N = 64: 0.5 M, N = 96: 0.3333 M")
+        != std::string::npos);
+  for (const fs::path& p : {held, file, reference})
+    fs::remove_all(p);
+}
