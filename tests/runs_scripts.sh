@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Every runs/ script that deletes output (rm -rf) makes sure of its binary first: the line that
 # checks (or builds) build/gbssn1d comes before the first rm -rf, so a script run without a
-# build never deletes earlier results and then fails. (runs/study-helpers.sh is sourced by
-# scripts that check; it only defines functions.)
+# build never deletes earlier results and then fails. (runs/study-helpers.sh and runs/lib.sh are
+# sourced by scripts that check; they only define functions.)
 set -euo pipefail
 src=$1
 bad=0
 for f in "$src"/runs/*.sh; do
-  [ "$(basename "$f")" = study-helpers.sh ] && continue
+  case "$(basename "$f")" in study-helpers.sh | lib.sh) continue ;; esac
   first_rm=$(grep -n 'rm -rf' "$f" | head -1 | cut -d: -f1 || true)
   [ -n "$first_rm" ] || continue
   check=$(grep -n -E '\[ -x (build/gbssn1d|"\$g") \]|\.ci/build' "$f" | head -1 | cut -d: -f1 || true)
