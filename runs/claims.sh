@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The headline numbers of docs/horizon-shift-study.md, rerun (about 2 minutes on 2 cores): each
-# claim's number is read from the doc by a pattern, measured afresh with build/gbssn1d, and
-# compared; the script fails, naming the claim, the doc's number and the measured one, where
-# they disagree. Run it after changing a default, and list the claims rerun in the note.
+# The headline numbers of README.md and docs/horizon-shift-study.md, rerun (about 3 minutes on
+# 2 cores): each claim's number is read from its document by a pattern, measured afresh with
+# build/gbssn1d, and compared; the script fails, naming the claim, the document's number and
+# the measured one, where they disagree. Run it after changing a default, and list the claims
+# rerun in the note.
 #
-# Usage: bash runs/claims.sh [--doc FILE] [--self-test]
-#   --doc FILE   check FILE instead of docs/horizon-shift-study.md (e.g. an edited copy)
+# Usage: bash runs/claims.sh [--doc FILE] [--readme FILE] [--self-test]
+#   --doc FILE     check FILE instead of docs/horizon-shift-study.md (e.g. an edited copy)
+#   --readme FILE  check FILE instead of README.md
 #   --self-test  also plant a stale number into a copy of the doc and require that the check
 #                of that copy fails (the checker can fail)
 # Agreement: a number measured exactly (an error of a deterministic run) must round to the
@@ -15,10 +17,12 @@ set -euo pipefail
 caller=$PWD
 cd "$(dirname "$0")/.."
 doc=docs/horizon-shift-study.md
+readme=README.md
 self_test=false
 while [ $# -gt 0 ]; do
   case "$1" in
     --doc) doc=${2:?--doc needs a file}; [[ $doc = /* ]] || doc=$caller/$doc; shift ;;
+    --readme) readme=${2:?--readme needs a file}; [[ $readme = /* ]] || readme=$caller/$readme; shift ;;
     --self-test) self_test=true ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "usage: $0 [--doc FILE] [--self-test]" >&2; exit 2 ;;
@@ -27,6 +31,7 @@ while [ $# -gt 0 ]; do
 done
 [ -x build/gbssn1d ] || { echo "claims: build/gbssn1d is missing (bash .ci/build)" >&2; exit 2; }
 [ -f "$doc" ] && [ -r "$doc" ] || { echo "claims: --doc $doc: no such readable file" >&2; exit 2; }
+[ -f "$readme" ] && [ -r "$readme" ] || { echo "claims: --readme $readme: no such readable file" >&2; exit 2; }
 py=python3
 [ -x /usr/bin/python3 ] && py=/usr/bin/python3
 out=out/claims
@@ -58,52 +63,212 @@ for line in open(sys.argv[1]):
         worst = max(worst, abs(v))
 print(f"{worst:.6e}")' "$out/uniform-m16/timeseries.dat")
 
+# The thesis's mechanism (README's answer, study Sec. 13 and 13.1): the hold-scaling table,
+# the published configuration's triples at M/16, M/24, M/32 with h_AH held over each step
+# (quadratic, RK4 stage values, no subcycling), the shrink's and the standard gauge's smooth
+# runs there, and converge's verdicts with a 1 M hold and with h_AH(t) from a file. Every run
+# is made afresh: a folder of an earlier binary is redone (runs/lib.sh).
+GBSSN1D_JOBS=${GBSSN1D_JOBS:-$(nproc)} bash runs/hold-scaling.sh "$out/hold-scaling" >"$out/hold-scaling.txt"
+published=(--id maximal-trumpet --grid boxes --levels 7 --rmax 128 --rah-profile rational
+           --rah-width 1 --rah-normal unit --driver-advection upwind-gd --cfl 0.25
+           --dt-series 0.25 --dt-profiles 20)
+rm -rf "$out/triples"
+mkdir -p "$out/triples"
+for N in 32 48 64; do
+  for v in step:--ah-every=step:--time-interp=quadratic stages:--ah-every=step:--time-interp=rk-stages \
+           nosub:--ah-every=step:--no-subcycling:--time-interp=quadratic \
+           shrink:--rah0=0.6:--time-interp=quadratic standard:--rahA=0:--time-interp=quadratic; do
+    name=${v%%:*} extra=()
+    IFS=: read -r -a words <<<"${v#*:}"
+    for w in "${words[@]}"; do extra+=(${w/=/ }); done
+    [[ $name == shrink ]] && extra+=(--rahA 0.5)
+    [[ $name == standard || $name == shrink ]] || extra+=(--rahA 0.5 --rah0 0.89)
+    build/gbssn1d evolve "${published[@]}" --tmax 20 --N $N "${extra[@]}" \
+      --out "$out/triples/$name-$N" 2>/dev/null &
+    while [ "$(jobs -rp | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; do wait -n || true; done
+  done
+done
+wait || true # a run that failed leaves no timeseries.dat: the measurement below names it
+rm -rf "$out/verdicts"
+mkdir -p "$out/verdicts"
+build/gbssn1d converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
+  --rahA 0.5 --rah0 0.89 --ah-interval 1 --out "$out/verdicts/held" >"$out/verdicts/held.log" 2>&1 || true
+build/gbssn1d evolve "${published[@]}" --time-interp quadratic --tmax 100 --rahA 0.5 --rah0 0.89 --N 192 \
+  --out "$out/verdicts/ref192" 2>/dev/null
+build/gbssn1d converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
+  --rahA 0.5 --rah0 0.89 --rah-hAH-file "$out/verdicts/ref192/horizon.dat" --out "$out/verdicts/file" \
+  >"$out/verdicts/file.log" 2>&1 || true
+measured=$out/measured.txt
+$py - "$out" >"$measured" <<'PY'
+import math, os, re, sys
+import numpy as np
+out = sys.argv[1]
+def rms(path):
+    d = np.genfromtxt(os.path.join(path, 'timeseries.dat'), names=True)
+    m = (d['t'] > 0) & (d['t'] <= 20 + 1e-9)
+    return float(np.sqrt(np.mean(d['H_L2_R'][m] ** 2)))
+def order(a, b, na, nb):
+    return math.log(a / b) / math.log(nb / na)
+def slope(x, y):
+    return float(np.polyfit(np.log(x), np.log(y), 1)[0])
+t = np.genfromtxt(os.path.join(out, 'hold-scaling', 'scaling.dat'), names=True)
+def rows(**fixed):
+    keep = np.ones(len(t), bool)
+    for k, v in fixed.items():
+        keep &= np.isclose(t[k], v)
+    return t[keep]
+v = {}
+r = rows(N=64, cfl=0.25, rahA=0.5); v['p_T'] = slope(r['T'], r['excess'])
+r = rows(N=64, cfl=0.25, T=1); v['p_A'] = slope(r['rahA'], r['excess'])
+r = rows(N=64, rahA=0.5, T=1); v['p_cfl64'] = slope(r['cfl'], r['excess'])
+r = rows(N=128, rahA=0.5, T=1); v['p_cfl128'] = slope(r['cfl'], r['excess'])
+r = rows(cfl=0.25, rahA=0.5, T=1); v['p_dr'] = slope(r['dr_min'], r['excess'])
+v['p_dr_smooth'] = slope(r['dr_min'], r['rms_H_smooth'])
+def pair(cfl, T, N1, N2, col='rms_H_held'):
+    a, b = rows(N=N1, cfl=cfl, rahA=0.5, T=T), rows(N=N2, cfl=cfl, rahA=0.5, T=T)
+    return order(a[col][0], b[col][0], N1, N2)
+v['hold1_48_64'] = pair(0.25, 1, 48, 64)
+v['hold4_32_48'] = pair(0.25, 4, 32, 48)
+v['hold8_32_48'] = pair(0.25, 8, 32, 48)
+coarse25 = [pair(0.25, T, 24, 32) for T in (1, 4, 8, 16)]
+coarse50 = [pair(0.5, T, 24, 32) for T in (1, 4, 8, 16)]
+v['coarse25_min'], v['coarse25_max'] = min(coarse25), max(coarse25)
+v['coarse50_min'], v['coarse50_max'] = min(coarse50), max(coarse50)
+tri = os.path.join(out, 'triples')
+for name in ('step', 'stages', 'nosub'):
+    e = [rms(os.path.join(tri, f'{name}-{N}')) for N in (32, 48, 64)]
+    v[f'{name}_a'], v[f'{name}_b'] = order(e[0], e[1], 32, 48), order(e[1], e[2], 48, 64)
+s = [rows(N=N, cfl=0.25, rahA=0.5, T=1)['rms_H_smooth'][0] for N in (32, 48, 64)]
+v['smooth_a'], v['smooth_b'] = order(s[0], s[1], 32, 48), order(s[1], s[2], 48, 64)
+for k, N in enumerate((32, 48, 64)):
+    v[f'shrink_ratio_{N}'] = rms(os.path.join(tri, f'shrink-{N}')) / rms(os.path.join(tri, f'standard-{N}'))
+for name in ('held', 'file'):
+    text = open(os.path.join(out, 'verdicts', name, 'convergence.dat')).read()
+    m = re.search(r'\n# verdict: ([a-z -]+?)(:|$)', text, re.M)
+    v[f'verdict_{name}'] = m.group(1).strip() if m else 'none'
+    log = open(os.path.join(out, 'verdicts', f'{name}.log')).read()
+    m = re.search(r'the lowest over time is (-?[0-9.]+)', log)
+    v[f'lowest_{name}'] = float(m.group(1)) if m else float('nan')
+for k, x in v.items():
+    print(k, x if isinstance(x, str) else f'{x:.6g}')
+PY
+
 # --- the claims: name | pattern whose group 1 is the doc's number | measured | kind
 check() {
-  local file=$1
-  $py - "$file" "$cost_ratio" "$m16_error" <<'PY'
+  local file=$1 readme_file=$2
+  $py - "$file" "$readme_file" "$cost_ratio" "$m16_error" "$measured" <<'PY'
 import math, re, sys
-doc = open(sys.argv[1]).read()
-cost_ratio, m16_error = float(sys.argv[2]), float(sys.argv[3])
+def text_of(path):  # white space folded, so that a pattern does not care where a line breaks
+    return re.sub(r'\s+', ' ', open(path).read())
+doc, readme = text_of(sys.argv[1]), text_of(sys.argv[2])
+cost_ratio, m16_error = float(sys.argv[3]), float(sys.argv[4])
+v = {}
+for line in open(sys.argv[5]):
+    k, x = line.split(None, 1)
+    x = x.strip()
+    try:
+        v[k] = float(x)
+    except ValueError:
+        v[k] = x
+S, R = 'study', 'README'
 claims = [
-    ("boxes' cost at the sinh grid's error (Sec. 6.4 table text)",
-     r"boxes need ([0-9.]+)\s+of its CPU time \(standard gauge", cost_ratio, "ratio"),
-    ("boxes' cost at the sinh grid's error (summary)",
-     r"Boxes reach the sinh grid's error at about ([0-9.]+) times its\s+cost", cost_ratio, "ratio"),
-    ("uniform M/16 standard gauge, max |M_AH - M| to 100 M (Sec. 7.2 table, default sigma)",
+    (S, "boxes' cost at the sinh grid's error (Sec. 6.4 table text)",
+     r"boxes need ([0-9.]+) of its CPU time \(standard gauge", cost_ratio, "ratio"),
+    (S, "boxes' cost at the sinh grid's error (summary)",
+     r"Boxes reach the sinh grid's error at about ([0-9.]+) times its cost", cost_ratio, "ratio"),
+    (S, "uniform M/16 standard gauge, max |M_AH - M| to 100 M (Sec. 7.2 table, default sigma)",
      r"\| 4, 0\.1 \(default\) \| ([0-9.e+-]+) \|", m16_error, "exact"),
-    ("uniform M/16 standard gauge, max |M_AH - M| to 100 M (summary)",
+    (S, "uniform M/16 standard gauge, max |M_AH - M| to 100 M (summary)",
      r"the unshifted run's own truncation error is ([0-9.e+-]+)", m16_error, "exact"),
+    # the answer
+    (R, "the published configuration's order at M/24-M/32, h_AH held a hierarchy step",
+     r"\(H's order ([0-9.-]+) with a hold of one hierarchy step", v['step_b'], "exact"),
+    (R, "the same with a 1 M hold (--ah-interval 1)",
+     r"with a hold of one hierarchy step, ([0-9.-]+) with 1 M\)", v['hold1_48_64'], "exact"),
+    (R, "M/16-M/24 with a 4 M hold", r"4-8 M holds \(([0-9.-]+), [0-9.-]+\)",
+     v['hold4_32_48'], "exact"),
+    (R, "M/16-M/24 with an 8 M hold", r"4-8 M holds \([0-9.-]+, ([0-9.-]+)\)",
+     v['hold8_32_48'], "exact"),
+    (R, "M/12-M/16 with 1-16 M holds at cfl 0.25, lowest", r"orders ([0-9.]+)-[0-9.]+ at cfl 0\.25",
+     v['coarse25_min'], "exact"),
+    (R, "M/12-M/16 with 1-16 M holds at cfl 0.25, highest", r"orders [0-9.]+-([0-9.]+) at cfl 0\.25",
+     v['coarse25_max'], "exact"),
+    (R, "M/12-M/16 with 1-16 M holds at cfl 0.5, lowest", r"at cfl 0\.25, ([0-9.]+)-[0-9.]+ at cfl 0\.5",
+     v['coarse50_min'], "exact"),
+    (R, "M/12-M/16 with 1-16 M holds at cfl 0.5, highest", r"at cfl 0\.25, [0-9.]+-([0-9.]+) at cfl 0\.5",
+     v['coarse50_max'], "exact"),
+    (R, "one smooth h_AH(t), M/16-M/24", r"\(H ([0-9.]+), [0-9.]+ at M/16-M/32;", v['smooth_a'], "exact"),
+    (R, "one smooth h_AH(t), M/24-M/32", r"\(H [0-9.]+, ([0-9.]+) at M/16-M/32;", v['smooth_b'], "exact"),
+    (R, "RK4 stage values, M/16-M/24", r"fine boundaries \(([0-9.]+), [0-9.]+\) or no subcycling",
+     v['stages_a'], "exact"),
+    (R, "RK4 stage values, M/24-M/32", r"fine boundaries \([0-9.]+, ([0-9.]+)\) or no subcycling",
+     v['stages_b'], "exact"),
+    (R, "no subcycling, M/16-M/24", r"or no subcycling \(([0-9.]+), [0-9.]+\)", v['nosub_a'], "exact"),
+    (R, "no subcycling, M/24-M/32", r"or no subcycling \([0-9.]+, ([0-9.]+)\)", v['nosub_b'], "exact"),
+    (R, "converge's verdict with h_AH(t) from a file", r'`gbssn1d converge` says "([a-z ]+)" at M/24-M/48',
+     v['verdict_file'], "words"),
+    (R, "converge's verdict with a 1 M hold", r'with a 1 M hold "([a-z ]+)"\)', v['verdict_held'], "words"),
+    # Sec. 13 and 13.1
+    (S, "Sec. 13.1: the excess against the hold", r"\| hold T \(N = 64, cfl 0\.25, A = 0\.5\) \| [^|]* \| [^|]* \| ([0-9.-]+) \|",
+     v['p_T'], "exact"),
+    (S, "Sec. 13.1: the excess against A", r"\| strength A \(N = 64, cfl 0\.25, T = 1 M\) \| [^|]* \| [^|]* \| ([0-9.-]+) \|",
+     v['p_A'], "exact"),
+    (S, "Sec. 13.1: the excess against the Courant number, N = 64",
+     r"\| Courant number \(N = 64, T = 1 M\) \| [^|]* \| [^|]* \| ([0-9.-]+) \|", v['p_cfl64'], "exact"),
+    (S, "Sec. 13.1: the excess against the Courant number, N = 128",
+     r"\| Courant number \(N = 128, T = 1 M\) \| [^|]* \| [^|]* \| ([0-9.-]+) \|", v['p_cfl128'], "exact"),
+    (S, "Sec. 13.1: the excess against the spacing at cfl 0.25",
+     r"\| spacing at cfl 0\.25 \(T = 1 M\) \| [^|]* \| [^|]* \| ([0-9.-]+) \|", v['p_dr'], "exact"),
+    (S, "Sec. 13.1: the smooth run's RMS H against the spacing",
+     r"\| the smooth run's RMS H there \| [^|]* \| [^|]* \| ([0-9.-]+) \|", v['p_dr_smooth'], "exact"),
+    (S, "Sec. 13.1: converge with h_AH(t) from a file, lowest order over time",
+     r"lowest order over time ([0-9.]+), exit 0\)", v['lowest_file'], "exact"),
+    (S, "Sec. 13: the shrink's smooth error over the standard gauge's at M/16",
+     r"smooth h_AH: ([0-9.]+), [0-9.]+ and [0-9.]+ times the standard gauge's at M/16",
+     v['shrink_ratio_32'], "exact"),
+    (S, "Sec. 13: ... at M/24", r"smooth h_AH: [0-9.]+, ([0-9.]+) and [0-9.]+ times the standard gauge's at M/16",
+     v['shrink_ratio_48'], "exact"),
+    (S, "Sec. 13: ... at M/32", r"smooth h_AH: [0-9.]+, [0-9.]+ and ([0-9.]+) times the standard gauge's at M/16",
+     v['shrink_ratio_64'], "exact"),
 ]
 bad = 0
-for name, pattern, measured, kind in claims:
-    m = re.search(pattern, doc)
+for where, name, pattern, measured, kind in claims:
+    m = re.search(pattern, doc if where == S else readme)
     if not m:
-        print(f"MISSING  {name}: the doc no longer says it (pattern {pattern!r})")
+        print(f"MISSING  [{where}] {name}: no longer said (pattern {pattern!r})")
         bad += 1
         continue
     text = m.group(1).rstrip(".")
+    if kind == "words":
+        ok = text == measured
+        print(f"{'ok      ' if ok else 'STALE   '} [{where}] {name}: says {text!r}, measured {measured!r}")
+        bad += 0 if ok else 1
+        continue
     said = float(text)
     if kind == "ratio":
         ok = abs(measured - said) <= 0.25 * said
     else:  # the doc's digits: measured rounded to them, within one unit of the last
-        mant = text.split("e")[0]
-        digits = len(mant.replace(".", "").lstrip("0"))
-        unit = 10 ** (math.floor(math.log10(abs(said))) - digits + 1)
+        mant = text.split("e")[0].lstrip("-")
+        decimals = len(mant.split(".")[1]) if "." in mant else 0
+        if "e" in text:
+            digits = len(mant.replace(".", "").lstrip("0"))
+            unit = 10 ** (math.floor(math.log10(abs(said))) - digits + 1)
+        else:
+            unit = 10 ** (-decimals)
         ok = abs(measured - said) <= 1.0 * unit + 1e-15
-    print(f"{'ok      ' if ok else 'STALE   '} {name}: the doc says {text}, measured {measured:.3g}")
+    print(f"{'ok      ' if ok else 'STALE   '} [{where}] {name}: says {text}, measured {measured:.3g}")
     bad += 0 if ok else 1
 print(f"claims: {len(claims) - bad} of {len(claims)} agree")
 sys.exit(1 if bad else 0)
 PY
 }
 status=0
-check "$doc" || status=$?
+check "$doc" "$readme" || status=$?
 if $self_test; then
   planted=$(mktemp)
   sed 's/the unshifted run.s own truncation error is [0-9.e+-]*/the unshifted run'"'"'s own truncation error is 4.2e-5/' \
     "$doc" >"$planted"
-  if check "$planted" >/dev/null; then
+  if check "$planted" "$readme" >/dev/null; then
     echo "claims: self-test FAILED: a planted stale number (4.2e-5) was not caught"
     status=1
   else
