@@ -171,6 +171,14 @@ for line in open(sys.argv[5]):
     except ValueError:
         v[k] = x
 S, R = 'study', 'README'
+def several(where, names, pattern, *measured):
+    """One claim per group of `pattern` (a sentence that states several numbers): the k-th
+    measured value against group k, named by the k-th of the ';'-separated `names` after its
+    stem (the text before the first ',' of names' first part)."""
+    first, *rest = names.split('; ')
+    stem = first.rsplit(', ', 1)[0]
+    labels = [first] + [f"{stem}, {r}" for r in rest]
+    return [(where, labels[k], pattern, m, "exact", k + 1) for k, m in enumerate(measured)]
 claims = [
     (S, "boxes' cost at the sinh grid's error (Sec. 6.4 table text)",
      r"boxes need ([0-9.]+) of its CPU time \(standard gauge", cost_ratio, "ratio"),
@@ -181,30 +189,21 @@ claims = [
     (S, "uniform M/16 standard gauge, max |M_AH - M| to 100 M (summary)",
      r"the unshifted run's own truncation error is ([0-9.e+-]+)", m16_error, "exact"),
     # the answer
-    (R, "the published configuration's order at M/24-M/32, h_AH held a hierarchy step",
-     r"\(H's order ([0-9.-]+) with a hold of one hierarchy step", v['step_b'], "exact"),
-    (R, "the same with a 1 M hold (--ah-interval 1)",
-     r"with a hold of one hierarchy step, ([0-9.-]+) with 1 M\)", v['hold1_48_64'], "exact"),
-    (R, "M/16-M/24 with a 4 M hold", r"4-8 M holds \(([0-9.-]+), [0-9.-]+\)",
-     v['hold4_32_48'], "exact"),
-    (R, "M/16-M/24 with an 8 M hold", r"4-8 M holds \([0-9.-]+, ([0-9.-]+)\)",
-     v['hold8_32_48'], "exact"),
-    (R, "M/12-M/16 with 1-16 M holds at cfl 0.25, lowest", r"orders ([0-9.]+)-[0-9.]+ at cfl 0\.25",
-     v['coarse25_min'], "exact"),
-    (R, "M/12-M/16 with 1-16 M holds at cfl 0.25, highest", r"orders [0-9.]+-([0-9.]+) at cfl 0\.25",
-     v['coarse25_max'], "exact"),
-    (R, "M/12-M/16 with 1-16 M holds at cfl 0.5, lowest", r"at cfl 0\.25, ([0-9.]+)-[0-9.]+ at cfl 0\.5",
-     v['coarse50_min'], "exact"),
-    (R, "M/12-M/16 with 1-16 M holds at cfl 0.5, highest", r"at cfl 0\.25, [0-9.]+-([0-9.]+) at cfl 0\.5",
-     v['coarse50_max'], "exact"),
-    (R, "one smooth h_AH(t), M/16-M/24", r"\(H ([0-9.]+), [0-9.]+ at M/16-M/32;", v['smooth_a'], "exact"),
-    (R, "one smooth h_AH(t), M/24-M/32", r"\(H [0-9.]+, ([0-9.]+) at M/16-M/32;", v['smooth_b'], "exact"),
-    (R, "RK4 stage values, M/16-M/24", r"fine boundaries \(([0-9.]+), [0-9.]+\) or no subcycling",
-     v['stages_a'], "exact"),
-    (R, "RK4 stage values, M/24-M/32", r"fine boundaries \([0-9.]+, ([0-9.]+)\) or no subcycling",
-     v['stages_b'], "exact"),
-    (R, "no subcycling, M/16-M/24", r"or no subcycling \(([0-9.]+), [0-9.]+\)", v['nosub_a'], "exact"),
-    (R, "no subcycling, M/24-M/32", r"or no subcycling \([0-9.]+, ([0-9.]+)\)", v['nosub_b'], "exact"),
+    *several(R, "the published configuration at M/24-M/32, held a hierarchy step; held 1 M",
+          r"\(H's order ([0-9.-]+) with a hold of one hierarchy step, ([0-9.-]+) with 1 M\)",
+          v['step_b'], v['hold1_48_64']),
+    *several(R, "M/16-M/24, a 4 M hold; an 8 M hold", r"4-8 M holds \(([0-9.-]+), ([0-9.-]+)\)",
+          v['hold4_32_48'], v['hold8_32_48']),
+    *several(R, "M/12-M/16 with 1-16 M holds at cfl 0.25, lowest; highest",
+          r"orders ([0-9.]+)-([0-9.]+) at cfl 0\.25", v['coarse25_min'], v['coarse25_max']),
+    *several(R, "M/12-M/16 with 1-16 M holds at cfl 0.5, lowest; highest",
+          r"at cfl 0\.25, ([0-9.]+)-([0-9.]+) at cfl 0\.5", v['coarse50_min'], v['coarse50_max']),
+    *several(R, "one smooth h_AH(t), M/16-M/24; M/24-M/32", r"\(H ([0-9.]+), ([0-9.]+) at M/16-M/32;",
+          v['smooth_a'], v['smooth_b']),
+    *several(R, "RK4 stage values, M/16-M/24; M/24-M/32",
+          r"fine boundaries \(([0-9.]+), ([0-9.]+)\) or no subcycling", v['stages_a'], v['stages_b']),
+    *several(R, "no subcycling, M/16-M/24; M/24-M/32", r"or no subcycling \(([0-9.]+), ([0-9.]+)\)",
+          v['nosub_a'], v['nosub_b']),
     (R, "converge's verdict with h_AH(t) from a file", r'`gbssn1d converge` says "([a-z ]+)" at M/24-M/48',
      v['verdict_file'], "words"),
     (R, "converge's verdict with a 1 M hold", r'with a 1 M hold "([a-z ]+)"\)', v['verdict_held'], "words"),
@@ -223,22 +222,18 @@ claims = [
      r"\| the smooth run's RMS H there \| [^|]* \| [^|]* \| ([0-9.-]+) \|", v['p_dr_smooth'], "exact"),
     (S, "Sec. 13.1: converge with h_AH(t) from a file, lowest order over time",
      r"lowest order over time ([0-9.]+), exit 0\)", v['lowest_file'], "exact"),
-    (S, "Sec. 13: the shrink's smooth error over the standard gauge's at M/16",
-     r"smooth h_AH: ([0-9.]+), [0-9.]+ and [0-9.]+ times the standard gauge's at M/16",
-     v['shrink_ratio_32'], "exact"),
-    (S, "Sec. 13: ... at M/24", r"smooth h_AH: [0-9.]+, ([0-9.]+) and [0-9.]+ times the standard gauge's at M/16",
-     v['shrink_ratio_48'], "exact"),
-    (S, "Sec. 13: ... at M/32", r"smooth h_AH: [0-9.]+, [0-9.]+ and ([0-9.]+) times the standard gauge's at M/16",
-     v['shrink_ratio_64'], "exact"),
+    *several(S, "Sec. 13: the shrink's smooth error over the standard gauge's, at M/16; at M/24; at M/32",
+          r"smooth h_AH: ([0-9.]+), ([0-9.]+) and ([0-9.]+) times the standard gauge's at M/16",
+          v['shrink_ratio_32'], v['shrink_ratio_48'], v['shrink_ratio_64']),
 ]
 bad = 0
-for where, name, pattern, measured, kind in claims:
+for where, name, pattern, measured, kind, *group in claims:
     m = re.search(pattern, doc if where == S else readme)
     if not m:
         print(f"MISSING  [{where}] {name}: no longer said (pattern {pattern!r})")
         bad += 1
         continue
-    text = m.group(1).rstrip(".")
+    text = m.group(group[0] if group else 1).rstrip(".")
     if kind == "words":
         ok = text == measured
         print(f"{'ok      ' if ok else 'STALE   '} [{where}] {name}: says {text!r}, measured {measured!r}")
