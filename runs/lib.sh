@@ -43,9 +43,14 @@ lib_init() {
 
 lib_interrupted() {
   trap '' INT TERM
-  local pids
+  local pids pid
   pids=$(jobs -p)
-  [ -z "$pids" ] || kill -TERM $pids 2>/dev/null || true
+  # each run's subshell and the gbssn1d it waits for (a signal sent to this script alone, not
+  # to the terminal's process group, reaches neither)
+  for pid in $pids; do
+    pkill -TERM -P "$pid" 2>/dev/null || true
+    kill -TERM "$pid" 2>/dev/null || true
+  done
   wait 2>/dev/null || true
   echo "$lib_name: interrupted; completed runs in $out are kept, unfinished ones are redone when you run the same command again" >&2
   exit 130

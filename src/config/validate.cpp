@@ -265,7 +265,7 @@ void validate_search_schedule(const Params& p) {
                        fmt::format("sets when the horizon is searched for, as --ah-every {} "
                                    "does: give one of the two",
                                    p.ah_every.name()));
-    if (shift_on(p) && uses_hAH_file(p))
+    if (uses_hAH_file(p))
       throw ParamError("--ah-interval", num(*p.ah_interval),
                        "schedules horizon searches, and with --rah-hAH-file h_AH(t) comes from "
                        "the file (no searches): give one of the two");

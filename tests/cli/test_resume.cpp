@@ -75,12 +75,13 @@ TEST_CASE("resume with --rah-hAH-file continues with the copy the run took at it
 
 TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an uninterrupted one") {
   const fs::path whole = scratch("whole"), parts = scratch("parts");
-  // substage searches, held searches every 4 steps, the midstep-update variant (whose
-  // searches are timed by the RHS-evaluation counter the checkpoint carries), and h_AH
+  // substage searches, held searches every 4 steps or every 0.7 M (timed by the steps' times
+  // alone: the run resumes at t = 10 between two multiples of 0.7), the midstep-update variant
+  // (whose searches are timed by the RHS-evaluation counter the checkpoint carries), and h_AH
   // extrapolated from the radii of the last steps (which the checkpoint carries)
   for (const std::string mode :
-       {"--ah-every substage", "--ah-every 4", "--ah-every 2 --rah-variant midstep-update",
-        "--ah-every extrapolated"}) {
+       {"--ah-every substage", "--ah-every 4", "--ah-interval 0.7",
+        "--ah-every 2 --rah-variant midstep-update", "--ah-every extrapolated"}) {
     fs::remove_all(whole);
     fs::remove_all(parts);
     const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 400 --rmax 50 --rahA "

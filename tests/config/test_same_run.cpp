@@ -132,6 +132,7 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       {trumpet, "--ah-every extrapolated", shifted},
       {trumpet, "--ah-tmin 0.5", shifted},
       {trumpet, "--ah-tmax 0.5", shifted},
+      {trumpet, "--ah-interval 0.5", shifted},
       {hAH, "--ah-every 4", shifted},
       {hAH, "--ah-every extrapolated", shifted},
       {hAH, "--ah-tmin 0.5", shifted},
@@ -159,6 +160,7 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
         || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
         || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
         || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5"
+        || c.flag == "--ah-interval 0.5"
         || c.flag == "--box-taper-from 2")
       CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
   }

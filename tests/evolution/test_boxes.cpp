@@ -559,6 +559,21 @@ TEST_CASE("a held h_AH with quadratic time interpolation loses convergence under
   p.time_interp = mesh::TimeInterpolation::quadratic;
   p.rahA = 0.0;
   CHECK(warned(p) == 0);
+  // a hold fixed in time is a held h_AH too: warned, naming --ah-interval
+  p.rahA = 0.5;
+  p.ah_every = SearchEvery::substage;
+  p.ah_interval = 1.0;
+  CHECK(warned(p) == 1);
+  CHECK(warnings_holding(p, "--time-interp quadratic with --ah-interval 1:") == 1);
+  // ... and a T shorter than the hierarchy's step (0.5 M: 7 boxes to 128 M, N = 32, the coarse
+  // boxes' 1/eta cap) holds it for the step, which a warning says; T = 0.5 does not
+  CHECK(warnings_holding(p, "is shorter than the hierarchy's step") == 0);
+  p.ah_interval = 0.3;
+  CHECK(warnings_holding(p, "--ah-interval 0.3 is shorter than the hierarchy's step, 0.5 M: a "
+                            "search follows every step, so h_AH is held for 0.5 M, not 0.3")
+        == 1);
+  p.ah_interval = 0.5;
+  CHECK(warnings_holding(p, "is shorter than the hierarchy's step") == 0);
 }
 
 // Each parent box skips the cells under its child that no result reads (Simulation::
