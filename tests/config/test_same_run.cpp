@@ -160,8 +160,7 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
         || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
         || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
         || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5"
-        || c.flag == "--ah-interval 0.5"
-        || c.flag == "--box-taper-from 2")
+        || c.flag == "--ah-interval 0.5" || c.flag == "--box-taper-from 2")
       CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
   }
   fs::remove(file);
