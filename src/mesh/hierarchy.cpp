@@ -201,7 +201,7 @@ void combine_rows(const State* const* a, const double* w, State& s, std::size_t 
       double sum = 0.0;
 #pragma GCC unroll 8
       for (std::size_t m = 0; m < M; ++m)
-        sum += w[m] * f[m][i];
+        sum = combination_term(sum, w[m], f[m][i]);
       out[i] = sum;
     }
   }
@@ -231,7 +231,7 @@ void fill_rows(const State* const* a, const double* w, std::size_t rows, std::si
       double sum = 0.0;
 #pragma GCC unroll 8
       for (std::size_t m = 0; m < M; ++m)
-        sum += w[m] * f[m][i];
+        sum = combination_term(sum, w[m], f[m][i]);
       c[i] = sum;
     }
   }

@@ -525,18 +525,15 @@ TEST_CASE("the tapered buffer relaxes a box's outer cells towards its parent, we
 // outer ghosts, at even and odd first cells, for BSSN's 9 rows and Z4c's 10; the cells below
 // the first are left alone.
 namespace {
-/// sum_m w[m] a[m][k], summed in the order m = 0, 1, ... as the library's sums are: each term
-/// added as it is formed, an FMA chain, as GCC contracts the library's loops across cells where
-/// the target has FMA (-march=native on every host so far). Written with std::fma, not left to
-/// contraction: on a Zen 4 host (-march=znver3) GCC 12 compiled `s += w[m] * a` here into
-/// products rounded before they were added, while the library's loops kept the FMA chain (every
-/// multi-array case differed in its last bit); with 256-bit vectors on Ice Lake it had turned
-/// this loop into an in-order reduction of rounded products, hence no vectorisation either.
-[[gnu::optimize("no-tree-vectorize")]] double
-combination_at(const std::vector<const State*>& a, std::span<const double> w, std::size_t k) {
+/// sum_m w[m] a[m][k], summed in the order m = 0, 1, ..., each term by combination_term (fused
+/// where the target has FMA), as the library's sums are. Left to the compiler's contraction,
+/// `s += w[m] * a` here rounded otherwise than the library's loops on a Zen 4 host (GCC 12,
+/// -O3), and an explicit fused chain otherwise than the library at -O1 (the sanitizer build).
+double combination_at(const std::vector<const State*>& a, std::span<const double> w,
+                      std::size_t k) {
   double s = 0.0;
   for (std::size_t m = 0; m < a.size(); ++m)
-    s = std::fma(w[m], (*a[m])[k], s);
+    s = combination_term(s, w[m], (*a[m])[k]);
   return s;
 }
 } // namespace
