@@ -177,7 +177,8 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args,
 }
 
 const std::map<std::string, std::string>& absent_key_values() {
-  static const std::map<std::string, std::string> values{{"box-taper", "0"}};
+  // kappa1-hole: Z4c's configurations only (BSSN's never write it)
+  static const std::map<std::string, std::string> values{{"box-taper", "0"}, {"kappa1-hole", "0"}};
   return values;
 }
 
@@ -204,8 +205,10 @@ std::map<std::string, std::string> key_values(const std::string& text,
 std::vector<std::string> absent_key_args(const std::string& text) {
   const auto kv = key_values(text);
   std::vector<std::string> args;
+  const auto formulation = kv.find("formulation");
+  const bool z4c = formulation != kv.end() && formulation->second == "\"z4c\"";
   for (const auto& [key, value] : absent_key_values())
-    if (!kv.contains(key))
+    if (!kv.contains(key) && (key != "kappa1-hole" || z4c))
       args.push_back(fmt::format("--{}={}", key, value));
   return args;
 }

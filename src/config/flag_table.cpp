@@ -65,7 +65,7 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
     return {"with --id " + p.id.name(), "the trumpets' data fix their own lapse"};
   case Acts::with_z4c_damping:
     if (z4c_on(p))
-      return {"with --kappa1 0",
+      return {"with --kappa1 0 --kappa1-hole 0",
               "kappa2 only ever multiplies kappa1 in Z4c's damping terms (give --kappa1 > 0)"};
     [[fallthrough]];
   case Acts::with_z4c:
@@ -123,6 +123,11 @@ std::vector<ParamSpec> evolution_specs() {
        "Z4c: constraint damping kappa1 (1/length, as --eta), >= 0: Theta and G^r decay at "
        "~ alpha kappa1; grid-scale noise grows where kappa1 x cell width > 0.3 "
        "(docs/z4c-study.md)",
+       Acts::with_z4c},
+      {"kappa1-hole", &Params::kappa1_hole, "Formulation",
+       "Z4c: kappa1 near the hole, >= --kappa1 or 0 (off): kappa1 rises towards it inside the "
+       "areal radius 6 M, capped at 0.2/(cell width) (docs/z4c-study.md Sec. 9: the horizon "
+       "mass's drift)",
        Acts::with_z4c},
       {"kappa2", &Params::kappa2, "Formulation",
        "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard; it "
@@ -285,6 +290,7 @@ const std::map<std::string, std::string>& default_rules() {
   static const std::map<std::string, std::string> rules{
       {"eta", "2/M (1/M: wormhole shrinks)"},
       {"kappa1", "0.02/M"},
+      {"kappa1-hole", "2/M"},
       {"norm-rmax", "min(10 M, rmax/2)"},
       {"ah-tmax", "none"},
       {"ah-interval", "none (--ah-every)"},

@@ -110,6 +110,8 @@ RhsParams rhs_params(const Params& p) {
   r.formulation = p.formulation.value();
   r.z4c.kappa1 = p.kappa1.value_or(kappa1_rule(p));
   r.z4c.kappa2 = p.kappa2;
+  r.z4c.kappa1_hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+  r.z4c.hole_radius = Z4cParams{}.hole_radius * p.M;
   r.z4c.lapse_adm_K = p.z4c_lapse_adm;
   r.gauge.shift.eta = p.eta.value();
   r.gauge.shift.advective = p.advective_shift;

@@ -52,6 +52,8 @@ void resolve_defaults(Params& p) {
   // resumes)
   if (z4c_on(p) && !p.kappa1)
     p.kappa1 = kappa1_rule(p);
+  if (z4c_on(p) && !p.kappa1_hole)
+    p.kappa1_hole = kappa1_hole_rule(p);
   // Sec. 6.6: relaxing the outer half of every box reaching beyond 16 M towards its parent
   // (one box, --levels 1, has no parent: 0)
   // absorbs the wormhole's gauge pulse where the parent cannot carry it; Z4c's constraint

@@ -53,6 +53,9 @@ struct Params {
   /// unset: 0.02/M with Z4c (resolve_defaults, kappa1_rule); left unset with BSSN
   std::optional<double> kappa1;
   double kappa2 = evolution_defaults().rhs.z4c.kappa2;
+  /// Z4c: kappa1 near the hole (areal radius below ~6 M, where the cell resolves it); unset:
+  /// 2/M with Z4c (kappa1_hole_rule), left unset with BSSN; 0: kappa1 everywhere
+  std::optional<double> kappa1_hole;
   bool z4c_lapse_adm = false; ///< Z4c: the lapse driven by the ADM K instead of K-hat (study)
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
@@ -170,9 +173,18 @@ inline double kappa1_rule(const Params& p) {
   return 0.02 / p.M;
 }
 
-/// Z4c with its constraint damping on (kappa1 > 0).
+/// Z4c's damping near the hole when not given: 2/M (docs/z4c-study.md, Sec. 9: with kappa1 =
+/// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 2/M inside ~6 M, where the
+/// cell resolves it, the drift is 0.2 of BSSN's and H 0.1).
+inline double kappa1_hole_rule(const Params& p) {
+  return 2.0 / p.M;
+}
+
+/// Z4c with its constraint damping on somewhere (kappa1 > 0, or kappa1 raised near the hole).
 inline bool damped_z4c(const Params& p) {
-  return z4c_on(p) && p.kappa1.value_or(kappa1_rule(p)) > 0.0;
+  return z4c_on(p)
+         && (p.kappa1.value_or(kappa1_rule(p)) > 0.0
+             || p.kappa1_hole.value_or(kappa1_hole_rule(p)) > 0.0);
 }
 
 /// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.

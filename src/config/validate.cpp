@@ -219,6 +219,14 @@ void validate_horizon_shift(const Params& p) {
   if (kappa1 < 0.0)
     throw ParamError("--kappa1", num(kappa1),
                      "must be >= 0 (a negative kappa1 makes the constraints grow)");
+  if (p.kappa1_hole) {
+    require_finite("--kappa1-hole", *p.kappa1_hole);
+    if (*p.kappa1_hole != 0.0 && !(*p.kappa1_hole >= kappa1))
+      throw ParamError("--kappa1-hole", num(*p.kappa1_hole),
+                       fmt::format("must be 0 (off) or at least --kappa1 = {} (it raises kappa1 "
+                                   "near the hole)",
+                                   num(kappa1)));
+  }
   require_finite("--kappa2", p.kappa2);
   if (!(p.kappa2 > -1.0))
     throw ParamError("--kappa2", num(p.kappa2),

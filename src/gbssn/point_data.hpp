@@ -13,10 +13,11 @@ namespace gbssn1d {
 /// Fields, their radial derivatives and the upwinded advection terms at one point.
 struct PointData {
   double r, inv_r;
-  PerVar f;   ///< values
-  PerVar d;   ///< centred first derivatives d_r f
-  PerVar dd;  ///< centred second derivatives d_r^2 f
-  PerVar adv; ///< upwinded shift advection beta d_r f (with the beta of f[Var::beta])
+  double inv_dr = 0.0; ///< 1 / the cell width d_r at the point (gather; 0: not known)
+  PerVar f;            ///< values
+  PerVar d;            ///< centred first derivatives d_r f
+  PerVar dd;           ///< centred second derivatives d_r^2 f
+  PerVar adv;          ///< upwinded shift advection beta d_r f (with the beta of f[Var::beta])
 };
 
 /// Right-hand sides d_t f of the evolved variables.

@@ -72,6 +72,7 @@ template <int p, fd::Upwind upwind, std::size_t n_fields>
   PointData pd;
   pd.r = r;
   pd.inv_r = inv_r;
+  pd.inv_dr = d1_scale;
   // beta d_r f, upwinded by the pair `upwind`; the map factor 1/r_x is positive, so the direction
   // is that of the shift in x as well. Each upwind stencil is the pair's sum and the (p+2)-th
   // difference.

@@ -75,10 +75,20 @@ struct AdvectionParams {
 /// Theta's part in K-hat (kappa2 = 0: the standard choice, Bernuzzi & Hilditch 2010). And what
 /// drives the 1+log lapse: K-hat (Z4c's standard, (G1)), or for the study the ADM trace
 /// K = K-hat + 2 Theta, BSSN's slicing.
+///
+/// kappa1 may rise near the hole (docs/z4c-study.md, Sec. 9): kappa1(R) = kappa1 + (kappa1_near -
+/// kappa1) / (1 + (R/hole_radius)^4) in the areal radius R (the same place in every gauge), with
+/// kappa1_near = max(kappa1, min(kappa1_hole, kappa1_dr_max / dr)) at a point of cell width dr:
+/// never above what the cell resolves (grid-scale noise grows where kappa1 dr > 0.3, Sec. 4), so
+/// that the local damping rate alpha kappa1 (2 + kappa2) times an RK4 step stays below
+/// (2 + kappa2) kappa1_dr_max cfl. kappa1_hole = 0 (or <= kappa1): kappa1 everywhere.
 struct Z4cParams {
   double kappa1 = 0.02; ///< 0.02/M at M = 1 (config: kappa1_rule)
   double kappa2 = 0.0;
   bool lapse_adm_K = false;
+  double kappa1_hole = 2.0; ///< 2/M at M = 1 (config: kappa1_hole_rule)
+  double hole_radius = 6.0; ///< 6 M at M = 1: the areal radius where kappa1 is half-way up
+  static constexpr double kappa1_dr_max = 0.2;
 };
 
 struct RhsParams {

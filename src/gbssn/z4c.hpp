@@ -11,6 +11,8 @@
 #include "gbssn/point_data.hpp"
 #include "gbssn/rhs_params.hpp"
 
+#include <algorithm>
+
 namespace gbssn1d {
 
 /// The point data with the ADM trace K = K-hat + 2 Theta in K's place, its value and
@@ -36,6 +38,15 @@ struct Z4c {
   double lapse_theta;
   explicit Z4c(const Z4cParams& p) : params(p), lapse_theta(p.lapse_adm_K ? 2.0 : 0.0) {}
 
+  /// The damping kappa1 at a point (Z4cParams): raised towards kappa1_hole inside the areal
+  /// radius hole_radius, where the grid resolves it. Branch-free, so that the loop vectorises.
+  [[gnu::always_inline]] double kappa1_at(const PointData& p) const {
+    const double near =
+        std::max(params.kappa1, std::min(params.kappa1_hole, Z4cParams::kappa1_dr_max * p.inv_dr));
+    const double q = areal_radius(p) / params.hole_radius, q2 = q * q;
+    return params.kappa1 + (near - params.kappa1) / (1.0 + q2 * q2);
+  }
+
   /// (Z4) d_t Delta^r for the shift `s`: (E6), whose -(4/3) alpha/a d_r K acts on K-hat, plus
   /// -(2/3) alpha/a d_r Theta (together -(2/3) alpha/a d_r(2 K-hat + Theta)) and the damping
   /// -2 alpha kappa1 G^r of the Gamma constraint G^r = Delta^r - Delta_gamma^r.
@@ -44,7 +55,7 @@ struct Z4c {
     using enum Var;
     const double G_r = p.f[Delta_r] - delta_gamma(p, m);
     return gbssn1d::rhs_Delta_r(p, m, s) - (2.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[Theta]
-           - 2.0 * p.f[alpha] * params.kappa1 * G_r;
+           - 2.0 * p.f[alpha] * kappa1_at(p) * G_r;
   }
   [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const Shift& s) const {
     return rhs_Delta_r(p, metric_pieces(p), s);
@@ -61,13 +72,14 @@ struct Z4c {
     Rhs rhs;
     metric_and_curvature_rhs(p, m, divbeta(p, m, shift), K_adm, rhs);
     // (Z2)
-    rhs[K] += p.f[alpha] * params.kappa1 * (1.0 - params.kappa2) * theta;
+    const double kappa1 = kappa1_at(p);
+    rhs[K] += p.f[alpha] * kappa1 * (1.0 - params.kappa2) * theta;
     // (Z3): R with the evolved Delta^r (R^r_r + 2 R^theta_theta, (C3)), A_ij A^ij = (3/2) A_a^2
     const double ricci = ricci_rr(p, m) + 2.0 * ricci_thth(p, m);
     rhs[Theta] =
         p.adv[Theta]
         + 0.5 * p.f[alpha] * (ricci - 1.5 * p.f[A_a] * p.f[A_a] + (2.0 / 3.0) * K_adm * K_adm)
-        - p.f[alpha] * params.kappa1 * (2.0 + params.kappa2) * theta;
+        - p.f[alpha] * kappa1 * (2.0 + params.kappa2) * theta;
     // (Z4)
     rhs[Delta_r] = rhs_Delta_r(p, m, shift);
     // (G1)-(G3): the lapse is driven by K-hat (p.f[K]), or by the ADM K (a 0/1 weight, so that

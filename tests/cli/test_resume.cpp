@@ -207,9 +207,12 @@ TEST_CASE("a BSSN configuration written before Z4c reads as today's BSSN run, fo
     z.formulation = gbssn1d::Formulation::z4c;
     gbssn1d::resolve_defaults(z);
     const auto diff = gbssn1d::config_differences(old, gbssn1d::config_text(z), {});
-    REQUIRE(diff.size() == 2);
+    REQUIRE(diff.size() == 3);
     CHECK(diff[0] == "formulation: \"bssn\" -> \"z4c\"");
     CHECK(diff[1] == fmt::format("kappa1: (unset) -> {}", 0.02 / M));
+    // a configuration without the key had no damping raised near the hole
+    CHECK(diff[2] == fmt::format("kappa1-hole: 0 -> {}", 2.0 / M));
+    CHECK(gbssn1d::absent_key_args(old).empty());
   }
 }
 
@@ -333,6 +336,36 @@ TEST_CASE("a boxes run recorded before --box-taper existed resumes without the t
   CHECK(gbssn1d::config_differences(old_text, today, {}).empty());
   CHECK(gbssn1d::absent_key_args(old_text) == std::vector<std::string>{"--box-taper=0"});
   CHECK(gbssn1d::absent_key_args(today).empty());
+}
+
+TEST_CASE("a Z4c run recorded before --kappa1-hole existed resumes with kappa1 everywhere, and "
+          "today's default is another configuration") {
+  const fs::path whole = scratch("z4c_whole"), parts = scratch("z4c_parts");
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  const std::string flags = "evolve --id 1log-trumpet --grid uniform --N 64 --rmax 20 "
+                            "--formulation z4c --kappa1-hole 0 --dt-series 0.5 --dt-profiles 5 "
+                            "--checkpoint-every 2";
+  REQUIRE(run(flags + " --tmax 6 --out " + whole.string()).status == 0);
+  REQUIRE(run(flags + " --tmax 4 --out " + parts.string()).status == 0);
+  std::string config = slurp(parts / "config.toml");
+  const auto at = config.find("kappa1-hole = 0\n");
+  REQUIRE(at != std::string::npos);
+  config.erase(at, std::string("kappa1-hole = 0\n").size());
+  std::ofstream(parts / "config.toml", std::ios::trunc) << config;
+  CHECK(gbssn1d::absent_key_args(config) == std::vector<std::string>{"--kappa1-hole=0"});
+  const Result r = run("resume " + parts.string() + " --tmax 6");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(without_out(whole / "timeseries.dat") == without_out(parts / "timeseries.dat"));
+  CHECK(without_out(whole / "profiles.dat") == without_out(parts / "profiles.dat"));
+  std::string today = config;
+  today.insert(at, "kappa1-hole = 2\n");
+  const auto diff = gbssn1d::config_differences(config, today, {});
+  REQUIRE(diff.size() == 1);
+  CHECK(diff.front() == "kappa1-hole: 0 -> 2");
+  for (const auto& d : {whole, parts})
+    fs::remove_all(d);
 }
 
 TEST_CASE("resume checks the checkpoint and every file before it changes any: corrupt, patched, "

@@ -126,7 +126,9 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       {trumpet, "--kappa1 0.3", trumpet + " --formulation z4c"},
       {trumpet, "--kappa2 0.5", trumpet + " --formulation z4c"},
       // kappa2 only ever multiplies kappa1 in Z4c's equations
-      {trumpet + " --formulation z4c --kappa1 0", "--kappa2 0.5", trumpet + " --formulation z4c"},
+      {trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0", "--kappa2 0.5",
+       trumpet + " --formulation z4c"},
+      {trumpet, "--kappa1-hole 0", trumpet + " --formulation z4c"},
       // the searches steer the shift alone: idle without it, and with an h_AH file
       {trumpet, "--ah-every 4", shifted},
       {trumpet, "--ah-every extrapolated", shifted},
@@ -248,9 +250,13 @@ TEST_CASE("a taper radius is warned about where it tapers nothing: without a tap
         == 0);
 }
 
-TEST_CASE("--kappa2 does nothing with --kappa1 0 (it only ever multiplies kappa1): warned about") {
-  const auto z4c = idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5"));
+TEST_CASE("--kappa2 does nothing without damping (it only ever multiplies kappa1): warned about") {
+  const auto z4c =
+      idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0 --kappa2 0.5"));
   REQUIRE(z4c.size() == 1);
-  CHECK(z4c[0].warning().rfind("--kappa2 0.5 does nothing with --kappa1 0: ", 0) == 0);
+  CHECK(z4c[0].warning().rfind("--kappa2 0.5 does nothing with --kappa1 0 --kappa1-hole 0: ", 0)
+        == 0);
   CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa2 0.5")).empty());
+  // the damping near the hole is damping too
+  CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5")).empty());
 }

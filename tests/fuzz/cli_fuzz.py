@@ -137,6 +137,7 @@ EVOLVE = {
     "--lapse0": Flag(TEXT, choices=("one", "precollapsed")),
     "--formulation": Flag(TEXT, choices=("bssn", "z4c")),
     "--kappa1": Flag(FLOAT, ("0", "0.02", "0.1"), ("-1e-300", "1e308")),
+    "--kappa1-hole": Flag(FLOAT, ("0", "1", "2"), ("-1", "nan", "1e308")),
     "--kappa2": Flag(FLOAT, ("0", "0.5"), ("-1", "-0.9999999", "1e308")),
     "--z4c-lapse-adm": Flag(FLAG),
     "--eta": Flag(FLOAT, ("0", "1", "2"), ("1e308", "-1e-300")),
