@@ -3,9 +3,12 @@
 
     /usr/bin/python3 plots/thesis.py OUT ROW [ROW ...]
 
-OUT/ROW is one `gbssn1d converge` study (members N<n>/, convergence.dat, scaled_H.dat) and
-OUT/ROW.cmd the command that made it. Writes OUT/mechanisms.dat (one row per study, named
-columns; strings in double quotes), OUT/signature.txt (which rows show each feature of the
+OUT/ROW is one `gbssn1d converge` study (members N<n>/, convergence.dat, scaled_H.dat),
+OUT/ROW.cmd the command that made it (runs/lib.sh's record: `--out @OUT` stands for OUT/ROW, a
+trailing `# binary ...` names the program's hash) and OUT/ROW.status its exit status. Writes
+OUT/mechanisms.dat (one row per study, named columns, words without spaces:
+numpy.genfromtxt(f, names=True, dtype=None, encoding=None) reads it), OUT/commands.txt (each
+row's command and full verdict), OUT/signature.txt (which rows show each feature of the
 published signature) and the figures OUT/fig*.png.
 
 The published signature (the 3D study's Figs. 3.6-3.8), as tested per row on H_L2_R (the L2
@@ -22,6 +25,7 @@ norm of H over areal radius 2.5 M <= R <= 12 M: the same place in every gauge):
 """
 import math
 import os
+import re
 import shlex
 import sys
 
@@ -42,12 +46,17 @@ def members(columns):
     return sorted({int(c[len(NORM) + 2:]) for c in columns if c.startswith(NORM + '_N')})
 
 
-def verdict_of(path):
-    """The converge verdict's class: the words before the first ':' of its 'verdict:' line."""
+def verdict_line(path):
+    """The converge verdict's whole line ('no verdict' if none)."""
     for line in gd.read_text(path).splitlines():
         if line.startswith('# verdict:'):
-            return line[len('# verdict:'):].split(':')[0].strip()
+            return line[len('# verdict:'):].strip()
     return 'no verdict'
+
+
+def verdict_of(path):
+    """The converge verdict's class: the words before the first ':' of its 'verdict:' line."""
+    return verdict_line(path).split(':')[0].strip()
 
 
 def study(out, name):
@@ -58,6 +67,11 @@ def study(out, name):
     except ValueError:
         raise gd.DataError('not an exit status (runs/thesis.sh writes one)', status_file)
     command = gd.read_text(os.path.join(out, name + '.cmd')).strip()
+    command = re.sub(r'\s*# binary \S+$', '', command).replace('@OUT', os.path.join(out, name))
+    try:  # as a user would type it: printf %q's escapes (24\,32) undone, quotes only where needed
+        command = shlex.join(shlex.split(command))
+    except ValueError:
+        raise gd.DataError('not a shell command', os.path.join(out, name + '.cmd'))
     params = gd.params_of(gd.read_text(os.path.join(out, name, 'config.toml')).splitlines())
     columns, parsed = gd.parse(gd.read_text(path), path)
     data = parsed[0][1] if parsed else np.zeros((0, len(columns)))
@@ -70,6 +84,7 @@ def study(out, name):
         spacing[n] = float(head['dr-min'])
     s = {'name': name, 'status': status, 'command': command, 'params': params, 'Ns': Ns,
          't': t, 'H': H, 'spacing': spacing, 'verdict': verdict_of(path),
+         'verdict_line': verdict_line(path),
          'tend': float(t[-1]) if len(t) else 0.0}
     # orders of the RMS over each window, per pair of neighbouring members
     s['orders'] = []
@@ -121,8 +136,9 @@ def text(x, fmt='{:.2f}'):
     return fmt.format(x)
 
 
-def quote(s):
-    return '"' + s.replace('\\', '\\\\').replace('"', '\\"') + '"'
+def word(s):
+    """A table field without spaces (numpy.genfromtxt splits at whitespace)."""
+    return re.sub(r'\s+', '-', s.strip()) or '-'
 
 
 def spacing_text(dr):
@@ -149,7 +165,7 @@ def write_table(out, studies):
     cols = ['row', 'data', 'h', 'normal', 'driver', 'cadence', 'interp', 'profile', 'rmax', 'ko',
             'spacings', 'p_0_20_a', 'p_0_20_b', 'p_20_100_a', 'p_20_100_b', 't_above_a',
             't_above_b', 'frac_above_a', 'frac_above_b', 'finer_above', 'finer_earlier',
-            'from_2M', 'shrink_first', 'tend', 'verdict', 'command']
+            'from_2M', 'shrink_first', 'tend', 'verdict']
     lines = [
         '# ' + ' '.join(cols),
         '# gbssn1d runs/thesis.sh: the published signature per configuration (plots/thesis.py)',
@@ -165,8 +181,11 @@ def write_table(out, studies):
         f'orders there >= {THRESHOLD}',
         '# verdict: gbssn1d converge\'s class (converges | converges until the round-off floor | '
         'pre-asymptotic | does not converge), over every monitored quantity and the whole run',
-        '# strings are in double quotes; command: the row alone',
+        '# words have no spaces (a verdict\'s words joined by -); each row\'s command and whole '
+        'verdict: commands.txt',
     ]
+    commands = ['# gbssn1d runs/thesis.sh: each row of mechanisms.dat, the command that makes it '
+                'alone and its whole verdict (tab-separated: row, command, verdict)']
     for s in studies:
         p = s['params']
         h = p.get('rah0', '-') if float(p.get('rahA', '0')) != 0 else 'standard'
@@ -179,16 +198,18 @@ def write_table(out, studies):
         f = s['features']
         vals = [s['name'], p.get('id', '-'), h, m['normal'], m['driver'], m['cadence'],
                 m['interp'], m['profile'], m['rmax'], m['ko'],
-                quote(', '.join(spacing_text(s['spacing'][n]) for n in s['Ns'])),
+                ','.join(spacing_text(s['spacing'][n]) for n in s['Ns']),
                 text(o[0][0]), text(o[0][1]), text(o[1][0]), text(o[1][1]),
                 text(s['first_above'][0], '{:g}'), text(s['first_above'][1], '{:g}'),
                 text(s['frac_above'][0]), text(s['frac_above'][1]),
                 text(f['finer_above']), text(f['finer_earlier']), text(f['from_2M']),
-                text(f['shrink_first']), text(s['tend'], '{:g}'), quote(s['verdict']),
-                quote(s['command'])]
+                text(f['shrink_first']), text(s['tend'], '{:g}'), word(s['verdict'])]
         lines.append(' '.join(vals))
-    with open(os.path.join(out, 'mechanisms.dat'), 'w') as fh:
-        fh.write('\n'.join(lines) + '\n')
+        commands.append(f"{s['name']}\t{s['command']}\t{s['verdict_line']}")
+    for name, text_lines in (('mechanisms.dat', lines), ('commands.txt', commands)):
+        with open(os.path.join(out, name + '.new'), 'w') as fh:
+            fh.write('\n'.join(text_lines) + '\n')
+        os.replace(os.path.join(out, name + '.new'), os.path.join(out, name))
 
 
 def write_signature(out, studies):

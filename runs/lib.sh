@@ -5,17 +5,25 @@
 #                                     resolve OUT against CALLER (the folder the user ran the
 #                                     script from), validate GBSSN1D_JOBS, take
 #                                     OUT's lock, stop at the first Ctrl-C; sets $out, $jobs
-#   lib_run NAME CMD...               run CMD (a gbssn1d command whose --out is written as @OUT)
-#                                     into $out/NAME unless that folder already holds a completed
-#                                     run of the very same command; the new run is made in a
+#   lib_run NAME CMD...               run CMD (a gbssn1d evolve or converge whose --out is written
+#                                     as @OUT) into $out/NAME unless that folder already holds a
+#                                     completed run of the very same command; the new run is made in a
 #                                     scratch folder and moved into place only when it completed,
 #                                     so a finished result is never deleted before its
 #                                     replacement succeeded; at most $jobs at once (lib_wait
-#                                     waits for all)
+#                                     waits for all); beside it NAME.cmd (the command and the
+#                                     binary's hash), NAME.status (its exit status), NAME.log
+#   lib_check [NAME...]               exit 1 naming each NAME (default: every lib_run so far)
+#                                     that holds no completed run (after lib_wait: some run
+#                                     failed), so that no table is made from them
 #
-# A run counts as done when $out/NAME.cmd holds the same command run by the same build/gbssn1d
-# (its SHA-256) and its timeseries.dat ends with "# end: completed"; an interrupted, failed,
-# other-input or other-binary run is redone on a rerun.
+# A run counts as done when $out/NAME.cmd holds the same command run by the same binary (the
+# SHA-256 of CMD's program) and it completed: an evolve's timeseries.dat ends with
+# "# end: completed", or it stopped by itself (exit 3: it left the physical range, went
+# non-finite, lost its horizon: a result, the same on every rerun); a converge study wrote
+# convergence.dat with a verdict and exited 0 (converges), 3 (a member stopped), 4 (does not
+# converge) or 5 (pre-asymptotic), each a result. An interrupted (exit 128 + n, "interrupted by"),
+# failed, other-input or other-binary run is redone on a rerun.
 
 lib_init() {
   local name=$1 caller=$2 default=$3 given=${4:-}
@@ -56,11 +64,23 @@ lib_interrupted() {
   exit 130
 }
 
+lib_complete() { # DIR: whether DIR holds a completed evolve or converge
+  if [ -f "$1/convergence.dat" ]; then
+    grep -q '^# verdict' "$1/convergence.dat" &&
+      ! grep -q -E '^# verdict: not judged: (the study was interrupted|.*a write failed)' "$1/convergence.dat"
+  else
+    [ -f "$1/timeseries.dat" ] && tail -n 1 "$1/timeseries.dat" | grep -q -E '^# end: (completed|stopped: )' &&
+      ! tail -n 1 "$1/timeseries.dat" | grep -q '^# end: stopped: interrupted by'
+  fi
+}
+
 lib_done() { # NAME CMDTEXT: whether $out/NAME holds a completed run of CMDTEXT
   local dir=$out/$1
-  [ -f "$out/$1.cmd" ] && [ "$(cat "$out/$1.cmd")" = "$2" ] && [ -f "$dir/timeseries.dat" ] &&
-    [ ! -L "$dir" ] && tail -n 1 "$dir/timeseries.dat" | grep -q '^# end: completed'
+  [ -f "$out/$1.cmd" ] && [ "$(cat "$out/$1.cmd")" = "$2" ] && [ -d "$dir" ] && [ ! -L "$dir" ] &&
+    lib_complete "$dir"
 }
+
+declare -A lib_binaries=()
 
 lib_run() {
   local name=$1
@@ -69,10 +89,25 @@ lib_run() {
   for arg in "$@"; do
     if [ "$arg" = @OUT ]; then cmd+=("$out/.new-$name"); else cmd+=("$arg"); fi
   done
-  # the command and the program it runs: a rebuilt binary redoes every run
-  [ -n "${lib_binary:-}" ] || lib_binary=$(sha256sum build/gbssn1d | cut -c1-16)
+  # the command and the program it runs (its first word naming a file by a path, after an
+  # `env VAR=value ...`): a rebuilt binary redoes every run
+  local program=""
+  for arg in "$@"; do
+    case $arg in */*) [ -f "$arg" ] && { program=$arg; break; } ;; esac
+  done
+  [ -n "$program" ] || { echo "$lib_name: $name: no program file in the command ($*)" >&2; exit 2; }
+  [ -n "${lib_binaries[$program]:-}" ] || lib_binaries[$program]=$(sha256sum "$program" | cut -c1-16)
   local text
-  text="$(printf '%q ' "$@")# binary $lib_binary"
+  text="$(printf '%q ' "$@")# binary ${lib_binaries[$program]}"
+  # a name asked for again in the same script: the same command runs once (a second run of it
+  # beside the first would write into the same scratch folder); another command is refused
+  if [ -n "${lib_texts[$name]:-}" ]; then
+    [ "${lib_texts[$name]}" = "$text" ] && return 0
+    echo "$lib_name: $name: asked for with two different commands" >&2
+    exit 2
+  fi
+  lib_texts[$name]=$text
+  lib_names+=("$name")
   if lib_done "$name" "$text"; then
     return 0
   fi
@@ -82,16 +117,35 @@ lib_run() {
     rm -rf "${out:?}/.new-$name"
     status=0
     "${cmd[@]}" >"$out/$name.log" 2>&1 || status=$?
-    if [ $status -eq 0 ] && tail -n 1 "$out/.new-$name/timeseries.dat" | grep -q '^# end: completed'; then
+    case $status in 0 | 3 | 4 | 5) ;; *) status_ok=no ;; esac
+    if [ "${status_ok:-yes}" = yes ] && { [ $status -le 3 ] || [ -f "$out/.new-$name/convergence.dat" ]; } &&
+      lib_complete "$out/.new-$name"; then
       rm -rf "${out:?}/.old-$name"
       [ ! -e "$out/$name" ] || mv "$out/$name" "$out/.old-$name"
       mv "$out/.new-$name" "$out/$name"
       printf '%s' "$text" >"$out/$name.cmd"
+      echo "$status" >"$out/$name.status"
       rm -rf "${out:?}/.old-$name"
     else
       echo "  $name: exit $status, see $out/$name.log (kept in $out/.new-$name; redone on a rerun)" >&2
     fi
   ) &
+}
+
+lib_names=()
+declare -A lib_texts=()
+lib_check() {
+  local name missing=()
+  [ $# -gt 0 ] || set -- "${lib_names[@]}"
+  for name in "$@"; do
+    # completed, and by the command this script asked for (a finished result of another
+    # command kept in place does not count)
+    lib_done "$name" "${lib_texts[$name]:-}" || missing+=("$name")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "$lib_name: ${#missing[@]} run(s) did not complete (${missing[*]}); the tables are not made: see their logs in $out, then run the same command again" >&2
+    exit 1
+  fi
 }
 
 lib_wait() {

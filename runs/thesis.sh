@@ -2,8 +2,12 @@
 # The published 3D study's configuration in one dimension, its figures, and every candidate
 # mechanism of its loss of convergence switched on and off (study doc, opening and Sec. 13).
 #
-#   bash runs/thesis.sh [OUT]      # everything below into OUT (default out/thesis/; about a
-#                                  # minute on 2 cores)
+#   bash runs/thesis.sh [OUT]      # everything below into OUT (default out/thesis/, a relative
+#                                  # OUT from where you stand; about a minute on 2 cores)
+#
+# GBSSN1D_JOBS=n runs n studies at once (a positive whole number; default: the core count). A
+# rerun keeps every completed study of the same command and binary and redoes the rest
+# (runs/lib.sh); a finished study is replaced only by a completed one; Ctrl-C stops at once.
 #
 # The published configuration ("thesis" in the tables): nested boxes as the 48- and 64-point
 # boxes of the 3D code (7 boxes, outer boundary 128 M, N = 24 and 32 cells on r >= 0, plus
@@ -20,14 +24,15 @@
 # out/thesis/mechanisms.dat (plots/thesis.py) has one row per configuration with the command
 # that reproduces it alone; figures out/thesis/fig*.png.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+# shellcheck source=runs/lib.sh
+source runs/lib.sh
+# GBSSN1D_JOBS checked, OUT resolved against the caller's folder and locked (one writer at a
+# time: a second runs/thesis.sh on the same folder is refused, not interleaved)
+lib_init runs/thesis.sh "$here" out/thesis "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 py=/usr/bin/python3
-out=${1:-out/thesis}
-mkdir -p "$out"
-# one writer at a time: a second runs/thesis.sh on the same folder is refused, not interleaved
-exec 9>"$out/.lock"
-flock -n 9 || { echo "runs/thesis.sh: another run is writing $out (lock $out/.lock)" >&2; exit 1; }
 start=$(date +%s)
 
 # what every row shares: the time, output cadence, the Richardson-scaled H at 20 M
@@ -59,14 +64,8 @@ row() {
   shift 4
   local shift_flags=()
   [ "$h" = std ] || shift_flags=(--rahA 0.5 --rah0 "$h")
-  rm -rf "${out:?}/$name"
-  local cmd=(build/gbssn1d converge --N "$Ns" -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$name" --id "$id"
-             "${shift_flags[@]}" "${common[@]}" "$@")
-  printf '%q ' "${cmd[@]}" >"$out/$name.cmd"
-  local status=0
-  "${cmd[@]}" >"$out/$name.log" 2>&1 || status=$?
-  echo "$status" >"$out/$name.status"
-  printf '  %-40s exit %s\n' "$name" "$status"
+  lib_run "$name" build/gbssn1d converge --N "$Ns" -j 1 --out @OUT --id "$id" \
+    "${shift_flags[@]}" "${common[@]}" "$@"
   rows+=("$name")
 }
 
@@ -122,5 +121,7 @@ for id in maximal-trumpet 1log-trumpet; do
   done
 done
 
+lib_wait
+lib_check "${rows[@]}"
 $py plots/thesis.py "$out" "${rows[@]}"
 echo "runs/thesis.sh: $(( $(date +%s) - start )) s; table $out/mechanisms.dat, figures $out/fig*.png"

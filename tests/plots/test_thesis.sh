@@ -39,13 +39,20 @@ from gbssn1d_data import parse, read_text
 d = sys.argv[1]
 lines = open(f"{d}/mechanisms.dat").read().splitlines()
 cols = lines[0][1:].split()
-rows = [dict(zip(cols, shlex.split(l))) for l in lines if not l.startswith('#')]
+rows = [dict(zip(cols, l.split())) for l in lines if not l.startswith('#')]
+# the README's one-line loading reads it, every row and column
+table = np.genfromtxt(f"{d}/mechanisms.dat", names=True, dtype=None, encoding=None)
+assert list(table.dtype.names) == cols, (table.dtype.names, cols)
+assert [str(x) for x in table['row']] == [r['row'] for r in rows]
+assert [str(x) for x in table['verdict']] == [r['verdict'] for r in rows]
+commands = {l.split('\t')[0]: l.split('\t')[1:] for l in open(f"{d}/commands.txt").read().splitlines()
+            if not l.startswith('#')}
 assert [r['row'] for r in rows] == ['maximal-h0.89-thesis', 'maximal-h0.6-thesis',
                                     'maximal-h0.89-defaults', 'maximal-h0.6-defaults',
                                     'maximal-standard-thesis'], [r['row'] for r in rows]
 for l in lines:
     if not l.startswith('#'):
-        assert len(shlex.split(l)) == len(cols), l
+        assert len(l.split()) == len(cols), l
 for r in rows:
     name = r['row']
     columns, blocks = parse(read_text(f"{d}/{name}/convergence.dat"))
@@ -65,17 +72,20 @@ for r in rows:
         assert r[key] == expect, (name, key, r[key], expect)
     # the verdict: the class words of convergence.dat's verdict line
     verdict = next(l for l in open(f"{d}/{name}/convergence.dat") if l.startswith('# verdict:'))
-    assert verdict[len('# verdict:'):].strip().startswith(r['verdict']), (verdict, r['verdict'])
-    assert r['verdict'] in ('converges', 'converges until the round-off floor', 'pre-asymptotic',
-                            'does not converge'), r['verdict']
-    assert r['command'].split()[1] == 'converge' and f'--out {d}/{name}' in r['command']
-    assert r['spacings'] == 'M/12, M/16, M/24', r['spacings']
+    assert verdict[len('# verdict:'):].strip().startswith(r['verdict'].replace('-', ' ')), \
+        (verdict, r['verdict'])
+    assert r['verdict'] in ('converges', 'converges-until-the-round-off-floor', 'pre-asymptotic',
+                            'does-not-converge'), r['verdict']
+    command, whole = commands[name]
+    assert shlex.split(command)[1] == 'converge' and f'--out {d}/{name}' in command, command
+    assert whole == verdict[len('# verdict:'):].strip(), (whole, verdict)
+    assert r['spacings'] == 'M/12,M/16,M/24', r['spacings']
 by = {r['row']: r for r in rows}
 bad, good = by['maximal-h0.89-thesis'], by['maximal-h0.6-thesis']
 # each box its own h_AH: the finer run above the coarser one from the first outputs
 assert bad['finer_above'] == 'yes' and float(bad['t_above_a']) < 1.0, bad
 assert bad['from_2M'] == 'no', bad  # from the first output, not from about 2 M
-assert bad['verdict'] == 'does not converge', bad['verdict']
+assert bad['verdict'] == 'does-not-converge', bad['verdict']
 assert good['finer_above'] == 'no', good
 # shrink_first: the stretch fails over (0, 20] M while the shrink converges there
 stretch_fails = min(float(bad['p_0_20_a']), float(bad['p_0_20_b'])) < 2.5

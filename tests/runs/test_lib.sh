@@ -1,0 +1,137 @@
+#!/usr/bin/env bash
+# The study scripts' shared library (runs/lib.sh) and the scripts built on it, driven through
+# hostile settings, interruptions and reruns:
+#   - every script that sources it refuses a bad GBSSN1D_JOBS (0, -1, abc, 2000, empty words)
+#     with exit 2 and the variable named, before it creates or deletes anything;
+#   - a completed run is kept on a rerun; a run cut short, of another command or of another binary
+#     is redone; a rerun whose command fails leaves the finished result in place and says which
+#     run did not complete (exit 1, no table made from it);
+#   - one SIGINT (or TERM) stops the script with exit 130, leaves no gbssn1d running and keeps
+#     what completed; the interrupted run is redone on the rerun;
+#   - a relative OUT is resolved against the caller's folder; a symlinked OUT and a second writer
+#     are refused.
+set -euo pipefail
+gbssn1d=$1 src=$2 dir=$3
+rm -rf "$dir" && mkdir -p "$dir"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# 1. each script that sources runs/lib.sh: a bad GBSSN1D_JOBS is refused before anything is made
+for script in thesis.sh z4c.sh hold-scaling.sh; do
+  for jobs in 0 -1 abc 2000 "1 2" 07; do
+    target=$dir/jobs-$script
+    stage=()
+    [ $script != z4c.sh ] || stage=(damping)
+    status=0
+    (cd "$dir" && GBSSN1D_JOBS="$jobs" bash "$src/runs/$script" "${stage[@]}" "$target" >"$dir/jobs.out" 2>&1) ||
+      status=$?
+    [ $status -eq 2 ] || fail "$script with GBSSN1D_JOBS='$jobs': exit $status, expected 2 ($(cat "$dir/jobs.out"))"
+    grep -q "GBSSN1D_JOBS" "$dir/jobs.out" || fail "$script: the message does not name GBSSN1D_JOBS"
+    [ ! -e "$target" ] || fail "$script with GBSSN1D_JOBS='$jobs' made $target"
+  done
+done
+echo "a bad GBSSN1D_JOBS: refused by every script (exit 2), nothing made"
+
+# 2. a study script of two runs on the library
+cat >"$dir/study.sh" <<EOF
+#!/usr/bin/env bash
+set -euo pipefail
+here=\$PWD
+source "$src/runs/lib.sh"
+lib_init study.sh "\$here" out-default "\${1:-}"
+g=$gbssn1d
+lib_run a "\$g" evolve --out @OUT --id 1log-trumpet --grid uniform --N 64 --rmax 20 \\
+  --tmax "\${TMAX_A:-4}" --dt-series 0.5 --dt-profiles 4
+lib_run b "\$g" evolve --out @OUT --id 1log-trumpet --grid uniform --N "\${N_B:-64}" --rmax 20 \\
+  --tmax "\${TMAX_B:-4}" --dt-series 0.5 --dt-profiles 1000
+lib_wait
+lib_check
+echo "study.sh: table made"
+EOF
+out=$dir/work/res
+mkdir -p "$dir/work"
+(cd "$dir/work" && bash "$dir/study.sh" res >"$dir/s1.out" 2>&1) || fail "first run: $(cat "$dir/s1.out")"
+for n in a b; do
+  tail -n 1 "$out/$n/timeseries.dat" | grep -q '^# end: completed' || fail "$n not completed"
+  [ "$(cat "$out/$n.status")" = 0 ] || fail "$n.status"
+done
+[ ! -e "$dir/out-default" ] || fail "the relative OUT was not resolved against the caller's folder"
+a_sum=$(sha256sum "$out/a/timeseries.dat")
+touch -d '2000-01-01' "$out/a.log" "$out/b.log"
+(cd "$dir/work" && bash "$dir/study.sh" res >"$dir/s2.out" 2>&1) || fail "rerun: $(cat "$dir/s2.out")"
+[ "$(date -r "$out/a.log" +%Y)" = 2000 ] || fail "a completed run was redone"
+echo "a rerun keeps what completed"
+
+# a run cut short is redone
+head -n -1 "$out/b/timeseries.dat" >"$out/b/t" && mv "$out/b/t" "$out/b/timeseries.dat"
+(cd "$dir/work" && bash "$dir/study.sh" res >"$dir/s3.out" 2>&1) || fail "rerun after a cut: $(cat "$dir/s3.out")"
+[ "$(date -r "$out/b.log" +%Y)" != 2000 ] || fail "a run cut short was kept as done"
+tail -n 1 "$out/b/timeseries.dat" | grep -q '^# end: completed' || fail "b not redone to the end"
+[ "$(date -r "$out/a.log" +%Y)" = 2000 ] || fail "a was redone with b"
+echo "a run cut short is redone, the others kept"
+
+# another command whose run fails: the finished result stays, the script says so and exits 1
+status=0
+(cd "$dir/work" && TMAX_A=-1 bash "$dir/study.sh" res >"$dir/s4.out" 2>&1) || status=$?
+[ $status -eq 1 ] || fail "a failed run: exit $status, expected 1 ($(cat "$dir/s4.out"))"
+grep -q "did not complete (a)" "$dir/s4.out" || fail "the failed run is not named: $(cat "$dir/s4.out")"
+! grep -q "table made" "$dir/s4.out" || fail "a table was made from a failed run"
+[ "$(sha256sum "$out/a/timeseries.dat")" = "$a_sum" ] || fail "the finished result was deleted or changed"
+echo "a failed rerun leaves the finished result in place (exit 1, named)"
+
+# 3. one SIGINT (and one TERM): exit 130 at once, no gbssn1d left, the rerun completes
+for sig in INT TERM; do
+  rm -rf "$out/b" "$out/b.cmd"
+  (cd "$dir/work" && exec env N_B=3000 TMAX_B=400 bash "$dir/study.sh" res >"$dir/s5.out" 2>&1) &
+  pid=$!
+  for _ in $(seq 50); do [ -d "$out/.new-b" ] && break; sleep 0.1; done
+  sleep 0.5
+  kill -s "$sig" "$pid"
+  status=0
+  wait "$pid" || status=$?
+  [ $status -eq 130 ] || fail "SIG$sig: exit $status, expected 130 ($(cat "$dir/s5.out"))"
+  grep -q "interrupted" "$dir/s5.out" || fail "SIG$sig: no word of the interruption"
+  sleep 0.2
+  ! pgrep -f -- "--out $out/.new-b" >/dev/null || fail "SIG$sig: a gbssn1d is still running"
+  [ ! -e "$out/b" ] || fail "SIG$sig: an interrupted run was moved into place"
+  [ "$(sha256sum "$out/a/timeseries.dat")" = "$a_sum" ] || fail "SIG$sig: a completed run changed"
+done
+(cd "$dir/work" && bash "$dir/study.sh" res >"$dir/s6.out" 2>&1) || fail "rerun after SIGINT: $(cat "$dir/s6.out")"
+tail -n 1 "$out/b/timeseries.dat" | grep -q '^# end: completed' || fail "b not completed after the rerun"
+echo "one SIGINT or TERM stops the script (exit 130, nothing left running); the rerun completes"
+
+# 4. the same name asked for twice: one run of the same command; two commands refused
+cat >"$dir/dup.sh" <<EOF
+#!/usr/bin/env bash
+set -euo pipefail
+source "$src/runs/lib.sh"
+lib_init dup.sh "\$PWD" dup
+for _ in 1 2 3; do
+  lib_run a $gbssn1d evolve --out @OUT --id 1log-trumpet --grid uniform --N 400 --rmax 20 --tmax 20 \\
+    --dt-series 0.5 --dt-profiles 20
+done
+[ -z "\${SECOND:-}" ] || lib_run a $gbssn1d evolve --out @OUT --id 1log-trumpet --grid uniform \\
+  --N 64 --rmax 20 --tmax 1
+lib_wait
+lib_check
+EOF
+(cd "$dir" && bash "$dir/dup.sh" >"$dir/d1.out" 2>&1) || fail "the same name thrice: $(cat "$dir/d1.out")"
+[ ! -s "$dir/d1.out" ] || fail "the same name thrice: $(cat "$dir/d1.out")"
+tail -n 1 "$dir/dup/a/timeseries.dat" | grep -q '^# end: completed' || fail "the same name thrice: not completed"
+status=0
+(cd "$dir" && SECOND=1 bash "$dir/dup.sh" >"$dir/d2.out" 2>&1) || status=$?
+[ $status -eq 2 ] && grep -q "two different commands" "$dir/d2.out" || fail "two commands for one name: exit $status ($(cat "$dir/d2.out"))"
+echo "the same name asked for thrice runs once; two commands for one name are refused"
+
+# 5. a symlinked OUT and a second writer are refused
+ln -s "$out" "$dir/work/link"
+status=0
+(cd "$dir/work" && bash "$dir/study.sh" link >"$dir/s7.out" 2>&1) || status=$?
+[ $status -eq 2 ] && grep -q "symbolic link" "$dir/s7.out" || fail "a symlinked OUT: exit $status ($(cat "$dir/s7.out"))"
+exec 8>"$out/.lock"
+flock -n 8
+status=0
+(cd "$dir/work" && bash "$dir/study.sh" res >"$dir/s8.out" 2>&1) || status=$?
+exec 8>&-
+[ $status -eq 1 ] && grep -q "another run is writing" "$dir/s8.out" || fail "a second writer: exit $status ($(cat "$dir/s8.out"))"
+echo "a symlinked OUT and a second writer are refused"
+echo "runs/lib.sh: every case as documented"
