@@ -3,6 +3,7 @@
 
   z4c_study.py table BASE RUN [RUN ...] [--t0 100 --t1 1000]
   z4c_study.py figure BASE RUN [RUN ...] [--t0 100 --t1 1000] -o figure.png
+  z4c_study.py mass RUN [RUN ...] [--times 100,300,500,1000]
 
 BASE and each RUN are folders with timeseries.dat (an evolve --out, or a sweep's member).
 `table` prints a row per run:
@@ -12,6 +13,9 @@ BASE and each RUN are folders with timeseries.dat (an evolve --out, or a sweep's
   - Theta_rms: the RMS of Theta_L2_R (Z4c only; '-' for BSSN);
   - H_ratio, M_ratio: H_rms and M_max over BASE's (below 1: better than BASE).
 `figure` draws H_L2_R and |M_AH - M| against t, BASE dashed, one curve per run.
+`mass` prints, for each run (BASE is the first), the Misner-Sharp mass m_ms - M (profiles.dat)
+at the areal radii 1.6, 2, 3, 10, 30, 100, 300 M (the nearest point of each profile block) at
+the --times (default 100, 300, 500, 1000): where the mass a run gains is made and how it spreads.
 """
 import argparse
 import math
@@ -51,7 +55,46 @@ def summary(s, t0, t1):
 
 def describe(params):
     f = params.get('formulation', 'bssn')
-    return f + (f' kappa1={params.get("kappa1")}' if f == 'z4c' else '')
+    if f != 'z4c':
+        return f
+    return f + f' kappa1={params.get("kappa1")}' + f' hole={params.get("kappa1-hole", 0)}'
+
+
+MASS_RADII = (1.6, 2.0, 3.0, 10.0, 30.0, 100.0, 300.0)
+MASS_TIMES = (100.0, 300.0, 500.0, 1000.0)
+
+
+def mass(runs, times=MASS_TIMES):
+    """m_ms - M at MASS_RADII and `times`, from each run's profiles.dat."""
+    print('# run t ' + ' '.join(f'R={R:g}' for R in MASS_RADII) + '  (m_ms - M)')
+    for folder in runs:
+        path = os.path.join(folder, 'profiles.dat')
+        text = read_text(path)
+        params = header_params(text)
+        M = float(params.get('M', 1.0))
+        columns = None
+        blocks, t, rows = {}, None, []
+        for line in text.splitlines():
+            if line.startswith('# t = '):
+                if t is not None and rows:
+                    blocks[t] = np.array(rows)
+                t, rows = float(line.split('=')[1].split()[0]), []
+            elif line.startswith('# ') and columns is None and ' m_ms ' in line + ' ':
+                columns = line[2:].split()
+            elif line.strip() and not line.startswith('#') and t is not None:
+                rows.append([float(x) for x in line.split()])
+        if t is not None and rows:
+            blocks[t] = np.array(rows)
+        if columns is None or 'm_ms' not in columns or 'R_areal' not in columns:
+            raise DataError('no m_ms or R_areal column', path)
+        iR, im = columns.index('R_areal'), columns.index('m_ms')
+        name = os.path.basename(os.path.normpath(folder))
+        for tq in times:
+            if tq not in blocks:
+                raise DataError(f'no profile block at t = {tq:g}', path)
+            b = blocks[tq]
+            values = [b[int(np.argmin(np.abs(b[:, iR] - R))), im] - M for R in MASS_RADII]
+            print(f'{name} {tq:g} ' + ' '.join(f'{v:+.2e}' for v in values))
 
 
 def table(base, runs, t0, t1):
@@ -92,14 +135,24 @@ def figure(base, runs, t0, t1, output):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    ap.add_argument('what', choices=['table', 'figure'])
+    ap.add_argument('what', choices=['table', 'figure', 'mass'])
     ap.add_argument('base')
-    ap.add_argument('runs', nargs='+')
+    ap.add_argument('runs', nargs='*')
     ap.add_argument('--t0', type=float, default=100.0)
     ap.add_argument('--t1', type=float, default=1000.0)
     ap.add_argument('-o', '--output')
+    ap.add_argument('--times', default='100,300,500,1000',
+                    help='mass: the profile times, comma-separated')
     a = ap.parse_args()
-    if a.what == 'table':
+    if a.what != 'mass' and not a.runs:
+        ap.error(f'{a.what} needs a RUN besides BASE')
+    if a.what == 'mass':
+        try:
+            times = tuple(float(x) for x in a.times.split(','))
+        except ValueError:
+            ap.error(f'--times {a.times!r}: not a comma-separated list of numbers')
+        mass([a.base] + a.runs, times)
+    elif a.what == 'table':
         table(a.base, a.runs, a.t0, a.t1)
     else:
         if not a.output:

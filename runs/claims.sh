@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# The headline numbers of README.md and docs/horizon-shift-study.md, rerun (about 3 minutes on
-# 2 cores): each claim's number is read from its document by a pattern, measured afresh with
+# The headline numbers of README.md, docs/horizon-shift-study.md and docs/z4c-study.md, rerun
+# (about 4 minutes on 2 cores): each claim's number is read from its document by a pattern, measured afresh with
 # build/gbssn1d, and compared; the script fails, naming the claim, the document's number and
 # the measured one, where they disagree. Run it after changing a default, and list the claims
 # rerun in the note.
 #
-# Usage: bash runs/claims.sh [--doc FILE] [--readme FILE] [--self-test]
+# Usage: bash runs/claims.sh [--doc FILE] [--readme FILE] [--z4c FILE] [--self-test]
 #   --doc FILE     check FILE instead of docs/horizon-shift-study.md (e.g. an edited copy)
 #   --readme FILE  check FILE instead of README.md
+#   --z4c FILE     check FILE instead of docs/z4c-study.md
 #   --self-test  also plant a stale number into a copy of the doc and require that the check
 #                of that copy fails (the checker can fail)
 # Agreement: a number measured exactly (an error of a deterministic run) must round to the
@@ -18,11 +19,13 @@ caller=$PWD
 cd "$(dirname "$0")/.."
 doc=docs/horizon-shift-study.md
 readme=README.md
+z4cdoc=docs/z4c-study.md
 self_test=false
 while [ $# -gt 0 ]; do
   case "$1" in
     --doc) doc=${2:?--doc needs a file}; [[ $doc = /* ]] || doc=$caller/$doc; shift ;;
     --readme) readme=${2:?--readme needs a file}; [[ $readme = /* ]] || readme=$caller/$readme; shift ;;
+    --z4c) z4cdoc=${2:?--z4c needs a file}; [[ $z4cdoc = /* ]] || z4cdoc=$caller/$z4cdoc; shift ;;
     --self-test) self_test=true ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "usage: $0 [--doc FILE] [--self-test]" >&2; exit 2 ;;
@@ -32,6 +35,7 @@ done
 [ -x build/gbssn1d ] || { echo "claims: build/gbssn1d is missing (bash .ci/build)" >&2; exit 2; }
 [ -f "$doc" ] && [ -r "$doc" ] || { echo "claims: --doc $doc: no such readable file" >&2; exit 2; }
 [ -f "$readme" ] && [ -r "$readme" ] || { echo "claims: --readme $readme: no such readable file" >&2; exit 2; }
+[ -f "$z4cdoc" ] && [ -r "$z4cdoc" ] || { echo "claims: --z4c $z4cdoc: no such readable file" >&2; exit 2; }
 py=python3
 [ -x /usr/bin/python3 ] && py=/usr/bin/python3
 out=out/claims
@@ -98,6 +102,31 @@ build/gbssn1d evolve "${published[@]}" --time-interp quadratic --tmax 100 --rahA
 build/gbssn1d converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
   --rahA 0.5 --rah0 0.89 --rah-hAH-file "$out/verdicts/ref192/horizon.dat" --out "$out/verdicts/file" \
   >"$out/verdicts/file.log" 2>&1 || true
+# Z4c (README's Z4c paragraph, docs/z4c-study.md Sec. 5, 7, 9): the four long-run set-ups with
+# BSSN, Z4c's default and kappa1 = 0.02 everywhere; the sinh grid at N = 240, 320; the published
+# stretch on uniform grids M/8-M/16 in both formulations
+rm -rf "$out/z4c"
+mkdir -p "$out/z4c"
+long=(--tmax 1000 --dt-series 1 --dt-profiles 10000)
+declare -A setups=([st]="--id 1log-trumpet --N 160" [sw]="--id wormhole --N 160"
+  [bt]="--id 1log-trumpet --grid boxes --levels 10 --rmax 2048 --N 64"
+  [bw]="--id wormhole --grid boxes --levels 10 --rmax 2048 --N 64"
+  [st240]="--id 1log-trumpet --N 240" [st320]="--id 1log-trumpet --N 320"
+  [sw240]="--id wormhole --N 240" [sw320]="--id wormhole --N 320")
+for s in "${!setups[@]}"; do
+  for f in bssn default k0.02; do
+    case $f in bssn) extra=() ;; default) extra=(--formulation z4c) ;; k0.02) extra=(--formulation z4c --kappa1-hole 0) ;; esac
+    build/gbssn1d evolve ${setups[$s]} "${long[@]}" "${extra[@]}" --out "$out/z4c/$s-$f" 2>/dev/null &
+    while [ "$(jobs -rp | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; do wait -n || true; done
+  done
+done
+wait || true
+for f in bssn z4c; do
+  build/gbssn1d converge --N 1600,2400,3200 -j "${GBSSN1D_JOBS:-$(nproc)}" --grid uniform --rmax 200 \
+    --tmax 100 --dt-series 1 --dt-profiles 100 --id 1log-trumpet --formulation $f --rahA 0.5 \
+    --rah0 0.89 --rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd \
+    --out "$out/z4c/published-$f" >"$out/z4c/published-$f.log" 2>&1 || true
+done
 measured=$out/measured.txt
 $py - "$out" >"$measured" <<'PY'
 import math, os, re, sys
@@ -149,6 +178,33 @@ for name in ('held', 'file'):
     log = open(os.path.join(out, 'verdicts', f'{name}.log')).read()
     m = re.search(r'the lowest over time is (-?[0-9.]+)', log)
     v[f'lowest_{name}'] = float(m.group(1)) if m else float('nan')
+def long_run(name):
+    d = np.genfromtxt(os.path.join(out, 'z4c', name, 'timeseries.dat'), names=True)
+    m = (d['t'] >= 100) & (d['t'] <= 1000)
+    return float(np.sqrt(np.mean(d['H_L2_R'][m] ** 2))), float(np.max(np.abs(d['M_ah_err'][m])))
+for s in ('st', 'sw', 'bt', 'bw', 'st240', 'st320', 'sw240', 'sw320'):
+    bH, bM = long_run(f'{s}-bssn')
+    for f in ('default', 'k0.02'):
+        H, M = long_run(f'{s}-{f}')
+        v[f'z4c_{s}_{f}_H'], v[f'z4c_{s}_{f}_M'] = H / bH, M / bM
+for s in ('st', 'bt'):
+    v[f'z4c_{s}_default_H_inv'] = 1 / v[f'z4c_{s}_default_H']
+    v[f'z4c_{s}_default_M_inv'] = 1 / v[f'z4c_{s}_default_M']
+for s in ('sw', 'bw'):
+    v[f'z4c_{s}_default_H_inv'] = 1 / v[f'z4c_{s}_default_H']
+for f in ('bssn', 'z4c'):
+    text = open(os.path.join(out, 'z4c', f'published-{f}', 'convergence.dat')).read()
+    cols, rows = None, []
+    for line in text.splitlines():
+        if line.startswith('# t '):
+            cols = line[2:].split()
+        elif cols and line.strip() and not line.startswith('#'):
+            rows.append([float(x) for x in line.split()])
+    a = np.array(rows)
+    t = a[:, cols.index('t')]
+    sel = (t >= 10) & (t <= 100)
+    e = [float(np.sqrt(np.mean(a[sel, cols.index(f'H_L2_R_N{n}')] ** 2))) for n in (1600, 2400, 3200)]
+    v[f'published_{f}_b'] = order(e[1], e[2], 2400, 3200)
 for k, x in v.items():
     print(k, x if isinstance(x, str) else f'{x:.6g}')
 PY
@@ -156,11 +212,11 @@ PY
 # --- the claims: name | pattern whose group 1 is the doc's number | measured | kind
 check() {
   local file=$1 readme_file=$2
-  $py - "$file" "$readme_file" "$cost_ratio" "$m16_error" "$measured" <<'PY'
+  $py - "$file" "$readme_file" "$cost_ratio" "$m16_error" "$measured" "$z4cdoc" <<'PY'
 import math, re, sys
 def text_of(path):  # white space folded, so that a pattern does not care where a line breaks
     return re.sub(r'\s+', ' ', open(path).read())
-doc, readme = text_of(sys.argv[1]), text_of(sys.argv[2])
+doc, readme, z4cdoc = text_of(sys.argv[1]), text_of(sys.argv[2]), text_of(sys.argv[6])
 cost_ratio, m16_error = float(sys.argv[3]), float(sys.argv[4])
 v = {}
 for line in open(sys.argv[5]):
@@ -170,7 +226,7 @@ for line in open(sys.argv[5]):
         v[k] = float(x)
     except ValueError:
         v[k] = x
-S, R = 'study', 'README'
+S, R, Z = 'study', 'README', 'z4c'
 def several(where, names, pattern, *measured):
     """One claim per group of `pattern` (a sentence that states several numbers): the k-th
     measured value against group k, named by the k-th of the ';'-separated `names` after its
@@ -225,10 +281,58 @@ claims = [
     *several(S, "Sec. 13: the shrink's smooth error over the standard gauge's, at M/16; at M/24; at M/32",
           r"smooth h_AH: ([0-9.]+), ([0-9.]+) and ([0-9.]+) times the standard gauge's at M/16",
           v['shrink_ratio_32'], v['shrink_ratio_48'], v['shrink_ratio_64']),
+    # Z4c: the README's paragraph
+    *several(R, "Z4c's default on trumpet data, H below BSSN's (sinh); (boxes)",
+          r"Z4c's H over 100-1000 M is ([0-9]+)-([0-9]+) times below BSSN's",
+          v['z4c_st_default_H_inv'], v['z4c_bt_default_H_inv']),
+    *several(R, "Z4c's default on trumpet data, the horizon mass better (sinh); (boxes)",
+          r"horizon-mass error ([0-9]+)-([0-9]+) times smaller", v['z4c_st_default_M_inv'],
+          v['z4c_bt_default_M_inv']),
+    *several(R, "Z4c's default on wormhole data, H below BSSN's (sinh); (boxes)",
+          r"on wormhole data H is ([0-9]+) times below BSSN's", v['z4c_sw_default_H_inv']),
+    *several(R, "Z4c's default on wormhole data, H below BSSN's (boxes)",
+          r"on wormhole data H is ([0-9]+) times below BSSN's", v['z4c_bw_default_H_inv']),
+    *several(R, "Z4c's default on wormhole data, the mass error: sinh M/16; sinh M/32; boxes",
+          r"the mass error is ([0-9.]+) of BSSN's on the sinh grid at M/16 \(([0-9.]+) times at "
+          r"M/32: it converges more slowly\) and ([0-9.]+) times on boxes",
+          v['z4c_sw_default_M'], v['z4c_sw320_default_M'], v['z4c_bw_default_M']),
+    (R, "Z4c with kappa1 = 0.02 everywhere, the horizon mass drift over BSSN's",
+     r"the horizon mass drifted ([0-9.]+) times as far as BSSN's", v['z4c_st_k0.02_M'], "exact"),
+    *several(R, "the published stretch on the 1+log trumpet, M/12-M/16, BSSN; Z4c",
+          r"BSSN's ([0-9.]+) becomes ([0-9.]+)\)", v['published_bssn_b'], v['published_z4c_b']),
+    # Z4c: docs/z4c-study.md Sec. 9 (the default row of the table, kappa1 = 0.02 everywhere)
+    *several(Z, "Sec. 9 the default, (a) H; (a) M; (b) H; (b) M; (c) H; (c) M; (d) H; (d) M",
+          r"\| \*\*1 \(default\)\*\* \| \*\*([0-9.]+), ([0-9.]+) \([^|]*\| \*\*([0-9.]+), "
+          r"([0-9.]+) \([^|]*\| \*\*([0-9.]+), ([0-9.]+) \([^|]*\| \*\*([0-9.]+), ([0-9.]+) \(",
+          v['z4c_st_default_H'], v['z4c_st_default_M'], v['z4c_bw_default_H'],
+          v['z4c_bw_default_M'], v['z4c_bt_default_H'], v['z4c_bt_default_M'],
+          v['z4c_sw_default_H'], v['z4c_sw_default_M']),
+    *several(Z, "Sec. 9 kappa1 = 0.02 everywhere, (a) H; (a) M; (b) H; (b) M; (c) H; (c) M; (d) H; (d) M",
+          r"\| 0 \(kappa1 = 0\.02 everywhere\) \| ([0-9.]+), ([0-9.]+) \([^|]*\| ([0-9.]+), "
+          r"([0-9.]+) \([^|]*\| ([0-9.]+), ([0-9.]+) \([^|]*\| ([0-9.]+), ([0-9.]+) \(",
+          v['z4c_st_k0.02_H'], v['z4c_st_k0.02_M'], v['z4c_bw_k0.02_H'], v['z4c_bw_k0.02_M'],
+          v['z4c_bt_k0.02_H'], v['z4c_bt_k0.02_M'], v['z4c_sw_k0.02_H'], v['z4c_sw_k0.02_M']),
+    # Sec. 5: the default at N = 240, 320
+    *several(Z, "Sec. 5 the default, trumpet N = 240 H; M",
+          r"\| trumpet, 240 \| [^|]* \| ([0-9.]+), ([0-9.]+) \|", v['z4c_st240_default_H'],
+          v['z4c_st240_default_M']),
+    *several(Z, "Sec. 5 the default, trumpet N = 320 H; M",
+          r"\| trumpet, 320 \| [^|]* \| ([0-9.]+), ([0-9.]+) \|", v['z4c_st320_default_H'],
+          v['z4c_st320_default_M']),
+    *several(Z, "Sec. 5 the default, wormhole N = 240 H; M",
+          r"\| wormhole, 240 \| [^|]* \| ([0-9.]+), ([0-9.]+) \|", v['z4c_sw240_default_H'],
+          v['z4c_sw240_default_M']),
+    *several(Z, "Sec. 5 the default, wormhole N = 320 H; M",
+          r"\| wormhole, 320 \| [^|]* \| ([0-9.]+), ([0-9.]+) \|", v['z4c_sw320_default_H'],
+          v['z4c_sw320_default_M']),
+    # Sec. 7: the published stretch's order at M/12-M/16
+    *several(Z, "Sec. 7 the published stretch M/12-M/16, BSSN; Z4c",
+          r"orders 6\.37, \*\*([0-9.]+)\*\*.*?orders 5\.19, \*\*([0-9.]+)\*\*",
+          v['published_bssn_b'], v['published_z4c_b']),
 ]
 bad = 0
 for where, name, pattern, measured, kind, *group in claims:
-    m = re.search(pattern, doc if where == S else readme)
+    m = re.search(pattern, {S: doc, R: readme, Z: z4cdoc}[where])
     if not m:
         print(f"MISSING  [{where}] {name}: no longer said (pattern {pattern!r})")
         bad += 1

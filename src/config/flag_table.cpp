@@ -290,13 +290,13 @@ const std::map<std::string, std::string>& default_rules() {
   static const std::map<std::string, std::string> rules{
       {"eta", "2/M (1/M: wormhole shrinks)"},
       {"kappa1", "0.02/M"},
-      {"kappa1-hole", "2/M"},
+      {"kappa1-hole", "1/M"},
       {"norm-rmax", "min(10 M, rmax/2)"},
       {"ah-tmax", "none"},
       {"ah-interval", "none (--ah-every)"},
       {"rah-taper", "quartic"},
       {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"box-taper", "0.5 on two or more boxes (0 with Z4c's damping)"}};
+      {"box-taper", "0.5 on two or more boxes"}};
   return rules;
 }
 

@@ -92,7 +92,7 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
             "bursts of H and M_AH (6e-3 in M_AH at N = 96, 7e-4 at N = 128: "
             "docs/horizon-shift-study.md, Sec. 7); use {}--N 200 or more, the sinh grid, or "
             "trumpet data",
-            p.N, end, back * end, damped_z4c(p) ? "" : "the default --box-taper, "));
+            p.N, end, back * end, "the default --box-taper, "));
         break;
       }
     }
@@ -101,16 +101,6 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
 
 /// Flags given where they do nothing (each flag's table entry says where it acts): a user who
 /// forgot --rahA, or gave --dr-inner to a uniform grid, would not otherwise learn it.
-/// Z4c's damping with the boxes' tapered buffer: measured to blow up at a tapered box edge.
-void z4c_warnings(const Params& p, std::vector<std::string>& w) {
-  if (p.grid == RadialGrid::boxes && damped_z4c(p) && p.box_taper.value_or(0.0) > 0.0)
-    w.push_back(fmt::format(
-        "--box-taper {} with Z4c's damping (--kappa1 {}): such runs blew up at a tapered box "
-        "edge within 150-560 M (kappa1 = 0.1 ... 2, wormhole and trumpet data on 10 boxes: "
-        "docs/z4c-study.md); Z4c's default on boxes is --box-taper 0",
-        num(p.box_taper.value_or(0.0)), num(p.kappa1.value_or(kappa1_rule(p)))));
-}
-
 void idle_flag_warnings(const Params& p, std::vector<std::string>& w) {
   for (const auto& idle : idle_flags(p))
     w.push_back(idle.warning());
@@ -258,7 +248,6 @@ std::vector<std::string> warnings(const Params& p) {
         num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
         std::ceil(window + speed * p.tmax)));
   box_warnings(p, w);
-  z4c_warnings(p, w);
   upwind_warnings(p, w);
   idle_flag_warnings(p, w);
   output_size_warning(p, w);

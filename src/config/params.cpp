@@ -55,13 +55,11 @@ void resolve_defaults(Params& p) {
   if (z4c_on(p) && !p.kappa1_hole)
     p.kappa1_hole = kappa1_hole_rule(p);
   // Sec. 6.6: relaxing the outer half of every box reaching beyond 16 M towards its parent
-  // (one box, --levels 1, has no parent: 0)
-  // absorbs the wormhole's gauge pulse where the parent cannot carry it; Z4c's constraint
-  // damping does not take it (docs/z4c-study.md: with kappa1 = 0.1 ... 2 the runs blow up at a
-  // box's tapered edge within 150-560 M; without the taper they run to 1000 M)
+  // (one box, --levels 1, has no parent: 0) absorbs the wormhole's gauge pulse where the parent
+  // cannot carry it; with Z4c's damping too (docs/z4c-study.md, Sec. 2: kappa1 = 0.1 ... 2 and
+  // the default with tapers 0.1-0.5 run to 1000 M)
   if (!p.box_taper)
-    p.box_taper =
-        p.grid == RadialGrid::boxes && p.levels.value_or(1) > 1 && !damped_z4c(p) ? 0.5 : 0.0;
+    p.box_taper = p.grid == RadialGrid::boxes && p.levels.value_or(1) > 1 ? 0.5 : 0.0;
   if (!p.norm_rmax)
     p.norm_rmax = std::min(10.0 * p.M, 0.5 * p.rmax);
   if (shift_on(p)) {

@@ -54,7 +54,7 @@ struct Params {
   std::optional<double> kappa1;
   double kappa2 = evolution_defaults().rhs.z4c.kappa2;
   /// Z4c: kappa1 near the hole (areal radius below ~6 M, where the cell resolves it); unset:
-  /// 2/M with Z4c (kappa1_hole_rule), left unset with BSSN; 0: kappa1 everywhere
+  /// 1/M with Z4c (kappa1_hole_rule), left unset with BSSN; 0: kappa1 everywhere
   std::optional<double> kappa1_hole;
   bool z4c_lapse_adm = false; ///< Z4c: the lapse driven by the ADM K instead of K-hat (study)
   // gauge
@@ -173,11 +173,12 @@ inline double kappa1_rule(const Params& p) {
   return 0.02 / p.M;
 }
 
-/// Z4c's damping near the hole when not given: 2/M (docs/z4c-study.md, Sec. 9: with kappa1 =
-/// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 2/M inside ~6 M, where the
-/// cell resolves it, the drift is 0.2 of BSSN's and H 0.1).
+/// Z4c's damping near the hole when not given: 1/M (docs/z4c-study.md, Sec. 9: with kappa1 =
+/// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 1/M inside ~6 M, 0.3 times
+/// BSSN's and H 0.08; 2/M did as well on long runs, but on coarse boxes, where the cell width
+/// caps it differently in each member, the momentum constraint lost order in a convergence test).
 inline double kappa1_hole_rule(const Params& p) {
-  return 2.0 / p.M;
+  return 1.0 / p.M;
 }
 
 /// Z4c with its constraint damping on somewhere (kappa1 > 0, or kappa1 raised near the hole).

@@ -86,7 +86,7 @@ struct Z4cParams {
   double kappa1 = 0.02; ///< 0.02/M at M = 1 (config: kappa1_rule)
   double kappa2 = 0.0;
   bool lapse_adm_K = false;
-  double kappa1_hole = 2.0; ///< 2/M at M = 1 (config: kappa1_hole_rule)
+  double kappa1_hole = 1.0; ///< 1/M at M = 1 (config: kappa1_hole_rule)
   double hole_radius = 6.0; ///< 6 M at M = 1: the areal radius where kappa1 is half-way up
   static constexpr double kappa1_dr_max = 0.2;
 };
