@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The outer boundary's reflections and the taper of beta_H (docs/horizon-shift-study.md,
-# Sec. 7.1), every run made afresh in out/boundary-reflections/ (about 2 minutes on 2 cores):
+# Sec. 7.1), every run kept in out/boundary-reflections/ and redone only where its command or binary changed (about 2 minutes on 2 cores):
 #  1. the reflected amplitude at the horizon: the default wormhole (standard gauge) on uniform
 #     grids with the boundary at 50, 100, 200 M, at spacings M/8 and M/16, to 150 M, against a
 #     reference at the same spacing with the boundary at 400 M (beyond the light cone): the
@@ -11,13 +11,12 @@
 #     before the boundary (the default, --rah-rcut = rmax/2) and not (--rah-rcut 1e9), and with
 #     the boundary at 160 M (N = 2560, the same spacing) as the reference.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/study-helpers.sh
+lib_init runs/boundary-reflections.sh "$here" out/boundary-reflections "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/boundary-reflections
-rm -rf "$out"
-mkdir -p "$out"
-source runs/study-helpers.sh
 for per_M in 8 16; do
   for rmax in 50 100 200 400; do
     uniform_run "reflect-M$per_M-rmax$rmax" --rmax "$rmax" --N "$((rmax * per_M))" --tmax 150
@@ -33,7 +32,8 @@ for p in 4 6; do
       "${shift_flags[@]}" --rah-rcut 1e9
   done
 done
-wait
+lib_wait
+lib_check
 $py - "$out" <<'PY' | tee "$out/table.txt"
 import os, sys
 import numpy as np

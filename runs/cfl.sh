@@ -6,15 +6,15 @@
 # --fd-order 6 (sinh wormhole, uniform trumpet) and 8 (uniform trumpet); the
 # standard gauge, the stretch to 2 M and the shrink to 0.6 M (A = 0.5). Prints whether each run
 # finished and the RMS of H_L2_R over 10-200 M and the largest |M_AH - M| over 10-200 M.
-# Every run is made afresh in out/cfl/ (about 1 minute on 2 cores).
+# Every run is kept in out/cfl/ (or OUT) and redone only where its command or the binary changed
+# (about 1 minute on 2 cores).
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/cfl.sh "$here" out/cfl "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/cfl
-rm -rf "$out"
-mkdir -p "$out"
-jobs=${GBSSN1D_JOBS:-$(nproc)}
 cfls="0.25 0.35 0.5 0.6 0.7 0.8 0.9 1"
 grids=("sinh-wormhole:--id wormhole" "sinh-trumpet:--id 1log-trumpet"
        "uniform-trumpet:--id 1log-trumpet --grid uniform --rmax 200 --N 1600"
@@ -27,14 +27,14 @@ for g in "${grids[@]}"; do
   for s in "${gauges[@]}"; do
     for c in $cfls; do
       name="${g%%:*}-${s%%:*}-cfl$c"
-      while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
       # shellcheck disable=SC2086
-      build/gbssn1d evolve ${g#*:} ${s#*:} --cfl "$c" --tmax 200 --dt-series 1 \
-        --dt-profiles 1000 --out "$out/$name" >"$out/$name.log" 2>&1 || true &
+      lib_run "$name" build/gbssn1d evolve ${g#*:} ${s#*:} --cfl "$c" --tmax 200 --dt-series 1 \
+        --dt-profiles 1000 --out @OUT
     done
   done
 done
-wait
+lib_wait
+lib_check
 $py - "$out" "$cfls" <<'PY' | tee "$out/table.txt"
 import os, sys
 import numpy as np
@@ -43,7 +43,7 @@ from gbssn1d_data import parse, read_text
 out, cfls = sys.argv[1], sys.argv[2].split()
 print("# grid-data gauge: per cfl, RMS H_L2_R over 10-200 M / max|M_AH - M| over 10-200 M")
 print("# ('x t' = went non-finite or stopped at t)")
-names = sorted({n.rsplit('-cfl', 1)[0] for n in os.listdir(out) if '-cfl' in n and
+names = sorted({n.rsplit('-cfl', 1)[0] for n in os.listdir(out) if '-cfl' in n and not n.startswith('.') and
                 os.path.isdir(os.path.join(out, n))})
 for base in names:
     cells = []

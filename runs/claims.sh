@@ -32,6 +32,10 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
+# shellcheck source=runs/lib.sh
+source runs/lib.sh
+lib_jobs runs/claims.sh # a bad GBSSN1D_JOBS is refused before anything is made
+export GBSSN1D_JOBS=$jobs
 [ -x build/gbssn1d ] || { echo "claims: build/gbssn1d is missing (bash .ci/build)" >&2; exit 2; }
 [ -f "$doc" ] && [ -r "$doc" ] || { echo "claims: --doc $doc: no such readable file" >&2; exit 2; }
 [ -f "$readme" ] && [ -r "$readme" ] || { echo "claims: --readme $readme: no such readable file" >&2; exit 2; }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Why wormhole shrinks failed with eta = 2/M (docs/horizon-shift-study.md, Sec. 4.3): a
-# persistent beta_H imposed on data whose standard gauge is stationary. Every run is made
-# afresh in out/driver-split/ (about 1 minute on 2 cores): the stationary 1+log trumpet on the
+# persistent beta_H imposed on data whose standard gauge is stationary. Every run is kept in
+# out/driver-split/, redone where its command or the binary changed (about 1 minute on 2 cores):
+# the stationary 1+log trumpet on the
 # default grid to 1000 M, the shrink profile (gauss, w = 1 M, A = 0.5, h = 0.6 M) driven open
 # loop by a constant h_AH = h + delta (--rah-hAH-file), so that beta_H = A delta f(r) s^r never
 # decays, with
@@ -11,12 +12,12 @@
 #  - delta = 0 (beta_H = 0), eta = 2/M.
 # Prints how each run ended and beta_GD, Delta^r and beta_H at r = 0.7 M every 100 M.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/study-helpers.sh
+lib_init runs/driver-split.sh "$here" out/driver-split "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/driver-split
-rm -rf "$out"
-mkdir -p "$out"
 for delta in 0 0.005 0.02; do
   $py - "$out/hAH-$delta.dat" "$delta" <<'PY'
 import sys
@@ -29,7 +30,6 @@ PY
 done
 common=(--id 1log-trumpet --rahA 0.5 --rah0 0.6 --rah-profile gauss --rah-width 1 --tmax 1000
   --dt-series 5 --dt-profiles 100)
-source runs/study-helpers.sh
 run() { evolve_run "$1" "${common[@]}" "${@:2}"; } # name, then the flags beyond the common ones
 for eta in 2 1 0.5; do
   run "split-eta$eta-delta0.02" --eta "$eta" --rah-hAH-file "$out/hAH-0.02.dat"
@@ -37,7 +37,8 @@ done
 run split-eta2-delta0.005 --eta 2 --rah-hAH-file "$out/hAH-0.005.dat"
 run full-eta2-delta0.02 --eta 2 --rah-hAH-file "$out/hAH-0.02.dat" --rah-variant driver-full-shift
 run split-eta2-delta0 --eta 2 --rah-hAH-file "$out/hAH-0.dat"
-wait
+lib_wait
+lib_check
 $py - "$out" <<'PY' | tee "$out/table.txt"
 import os, sys
 import numpy as np

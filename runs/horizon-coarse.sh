@@ -8,35 +8,33 @@
 #   bash runs/horizon-coarse.sh mechanism   # experiments (a)-(e) on the 1+log stretch (~3 min)
 #   bash runs/horizon-coarse.sh threshold   # h = 0.5 ... 2, M/8 ... M/32, both forms (~15 min)
 #   bash runs/horizon-coarse.sh cost        # work to reach an error, uniform and sinh (~8 min)
+#   (a second argument OUT writes into OUT instead of out/horizon-coarse; GBSSN1D_JOBS=n: n at once;
+#   a rerun keeps every study that completed with the same command and binary, runs/lib.sh)
 #
 # Tables are printed (plots/horizon_study.py table: RMS of H_L2_R over t in [10, 100] M per N,
 # pairwise orders of those, the range of pairwise orders over time, the ratio to the standard
 # gauge at the same N); figures go to out/horizon-coarse/*.png.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/horizon-coarse.sh "$here" out/horizon-coarse "${2:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/horizon-coarse
-mkdir -p "$out"
 common=(--rmax 200 --tmax 100 --dt-series 1 --dt-profiles 100)
 grid=(--grid uniform) # the cost stage sets a sinh grid for its sinh families
 # the published method: f = r/(1+r^2), the unit normal sqrt(chi/a)
 pub_profile=(--rah-profile rational --rah-width 1)
 published=("${pub_profile[@]}" --rah-normal unit --driver-advection upwind-gd)
 
-family() { # family NAME "N list" [evolve flags]: one converge run, kept if already complete
+# family NAME "N list" [evolve flags]: one converge study into $out/NAME, kept if it completed
+# with this very command and binary (runs/lib.sh), waited for: the tables below read it at once
+family() {
   local name=$1 Ns=$2
   shift 2
-  # kept only if made with these very inputs: the same N list and the same configuration, as
-  # `evolve --print-config` writes it now (other flags, or defaults changed since, redo it)
-  if [ -f "$out/$name/convergence.dat" ] && grep -q "^# converge: N = $Ns," "$out/$name/config.toml" &&
-    cmp -s <(build/gbssn1d evolve --N "${Ns%%,*}" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
-      --print-config 2>/dev/null) <(grep -v '^#' "$out/$name/config.toml"); then
-    return 0
-  fi
-  rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$name" "${common[@]}" "${grid[@]}" "$@" \
-    >"$out/$name.log" 2>&1 || echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
+  lib_run "$name" build/gbssn1d converge --N "$Ns" -j "$jobs" --out @OUT "${common[@]}" "${grid[@]}" "$@"
+  lib_wait
+  lib_check "$name"
 }
 table() { $py plots/horizon_study.py table "$@"; }
 

@@ -5,11 +5,12 @@
 # every 8 steps. Prints H_L2_ext and the pairwise orders over time; figures in
 # out/horizon-convergence/*.png. A few minutes on 2 cores.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/horizon-convergence.sh "$here" out/horizon-convergence "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/horizon-convergence
-rm -rf "$out" && mkdir -p "$out"
 variants=("standard:--ah-every substage" "stretch:--ah-every substage" "shrink:--ah-every substage"
           "shrink:--ah-every 8" "stretch:--ah-every 8")
 tags=()
@@ -18,12 +19,13 @@ for v in "${variants[@]}"; do
   tag="$cfg$(echo "$flags" | tr -d ' -' | sed 's/aheverysubstage//; s/aheverys*/-every/')"
   tags+=("$tag")
   # one `gbssn1d converge` per run (members in out/horizon-convergence/<tag>/N<n>/); a member
-  # that blows up is a result, not a reason to stop: its stderr says where and when
+  # that blows up is a result, not a reason to stop: its log ($out/NAME.log) says where and when
   # shellcheck disable=SC2086
-  build/gbssn1d converge --N 400,800,1600 -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$tag" \
-    --config "runs/horizon-maximal-$cfg.toml" $flags --dt-series 1 --dt-profiles 100 \
-    >/dev/null 2>>"$out/stderr.log" || true
+  lib_run "$tag" build/gbssn1d converge --N 400,800,1600 -j 1 --out @OUT \
+    --config "runs/horizon-maximal-$cfg.toml" $flags --dt-series 1 --dt-profiles 100
 done
+lib_wait
+lib_check
 for tag in "${tags[@]}"; do
   echo "== $tag"
   $py plots/constraint_orders.py $out/$tag/N{400,800,1600}/timeseries.dat \

@@ -3,19 +3,20 @@
 # Sec. 9): precollapsed wormhole data on the default grid (sinh, N = 400, rmax 1000 M) with
 # --rahA 0.5 --rah0 H for H = 0.5, 0.6, 0.89, 1.2, 1.5, 2, to 1000 M. Prints how each ended, the largest
 # |r_AH/H - 1| from 100 M on and the largest |M_AH - M| over the run. About 2 minutes on 2 cores;
-# every run is made afresh in out/horizon-defaults/.
+# every run kept in out/horizon-defaults/ and redone only where its command or the binary
+# changed.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/horizon-defaults.sh "$here" out/horizon-defaults "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
-out=out/horizon-defaults
-mkdir -p "$out"
 for h in 0.5 0.6 0.89 1.2 1.5 2; do
-  rm -rf "${out:?}/h$h"
-  build/gbssn1d evolve --rahA 0.5 --rah0 "$h" --tmax 1000 --dt-series 1 --dt-profiles 1000 \
-    --out "$out/h$h" 2>"$out/h$h.log" &
-  if [ "$(jobs -r | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; then wait -n || true; fi
+  lib_run "h$h" build/gbssn1d evolve --rahA 0.5 --rah0 "$h" --tmax 1000 --dt-series 1 \
+    --dt-profiles 1000 --out @OUT
 done
-wait || true
+lib_wait
+lib_check
 for h in 0.5 0.6 0.89 1.2 1.5 2; do
   /usr/bin/python3 - "$out/h$h" "$h" <<'PY'
 import math, os, sys

@@ -5,18 +5,21 @@
 # and its pairwise orders over time; figures in out/horizon-long/*.png. About 15 minutes on
 # 2 cores.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/horizon-long.sh "$here" out/horizon-long "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/horizon-long
-rm -rf "$out" && mkdir -p "$out"
 for cfg in standard stretch shrink; do
   # one `gbssn1d converge` per configuration (members in out/horizon-long/<cfg>/N<n>/); a
-  # member that blows up is a result, not a reason to stop: its stderr says where and when
-  build/gbssn1d converge --N 400,800,1600 -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$cfg" \
+  # member that blows up is a result, not a reason to stop: its log ($out/NAME.log) says where and when
+  lib_run "$cfg" build/gbssn1d converge --N 400,800,1600 -j 1 --out @OUT \
     --config "runs/horizon-maximal-$cfg.toml" --rmax 1600 --tmax 1000 --dt-series 5 \
-    --dt-profiles 500 >/dev/null 2>>"$out/stderr.log" || true
+    --dt-profiles 500
 done
+lib_wait
+lib_check
 for cfg in standard stretch shrink; do
   echo "== $cfg"
   $py plots/constraint_orders.py $out/$cfg/N{400,800,1600}/timeseries.dat \

@@ -10,11 +10,12 @@
 # plus a coarse horizon finder (tolerance 1e-4 M, held for 8 steps).
 # Prints H_L2_ext and pairwise orders over time; figures in out/horizon-variants/*.png.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/horizon-variants.sh "$here" out/horizon-variants "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/horizon-variants
-rm -rf "$out" && mkdir -p "$out"
 variants=("consistent:--rah-variant consistent"
           "no-shift-derivatives:--rah-variant no-shift-derivatives"
           "no-shift-second-derivatives:--rah-variant no-shift-second-derivatives"
@@ -25,12 +26,13 @@ variants=("consistent:--rah-variant consistent"
 for v in "${variants[@]}"; do
   tag=${v%%:*} flags=${v#*:}
   # one `gbssn1d converge` per variant (members in out/horizon-variants/<tag>/N<n>/); a member
-  # that blows up is a result, not a reason to stop: its stderr says where and when
+  # that blows up is a result, not a reason to stop: its log ($out/NAME.log) says where and when
   # shellcheck disable=SC2086
-  build/gbssn1d converge --N 400,800,1600 -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/$tag" \
-    --config runs/horizon-maximal-shrink.toml $flags --dt-series 1 --dt-profiles 50 \
-    >/dev/null 2>>"$out/stderr.log" || true
+  lib_run "$tag" build/gbssn1d converge --N 400,800,1600 -j 1 --out @OUT \
+    --config runs/horizon-maximal-shrink.toml $flags --dt-series 1 --dt-profiles 50
 done
+lib_wait
+lib_check
 for v in "${variants[@]}"; do
   tag=${v%%:*}
   echo "== $tag"
@@ -40,4 +42,4 @@ for v in "${variants[@]}"; do
     $out/$tag/N1600/timeseries.dat
 done
 echo "== runs that stopped:"
-grep -E "non-finite|physical range" "$out/stderr.log" || echo "none"
+grep -h -E "non-finite|physical range" "$out"/*.log || echo "none"

@@ -1,6 +1,8 @@
 # Sourced by the study scripts of runs/ that keep their results (runs/hold-scaling.sh first):
 # what every such script must do the same way, written once.
 #
+#   lib_jobs NAME                     set $jobs from GBSSN1D_JOBS or exit 2 naming it (for a
+#                                     script that makes only scratch output, e.g. runs/claims.sh)
 #   lib_init NAME CALLER OUT_DEFAULT [OUT]
 #                                     resolve OUT against CALLER (the folder the user ran the
 #                                     script from), validate GBSSN1D_JOBS, take
@@ -18,25 +20,30 @@
 #                                     failed), so that no table is made from them
 #
 # A run counts as done when $out/NAME.cmd holds the same command run by the same binary (the
-# SHA-256 of CMD's program) and it completed: an evolve's timeseries.dat ends with
+# SHA-256 of CMD's program, and of every other file CMD names: a --config is an input too) and it
+# completed: an evolve's timeseries.dat ends with
 # "# end: completed", or it stopped by itself (exit 3: it left the physical range, went
 # non-finite, lost its horizon: a result, the same on every rerun); a converge study wrote
 # convergence.dat with a verdict and exited 0 (converges), 3 (a member stopped), 4 (does not
 # converge) or 5 (pre-asymptotic), each a result. An interrupted (exit 128 + n, "interrupted by"),
 # failed, other-input or other-binary run is redone on a rerun.
 
-lib_init() {
-  local name=$1 caller=$2 default=$3 given=${4:-}
-  lib_name=$name
+lib_jobs() { # NAME: $jobs from GBSSN1D_JOBS (default: the core count), or exit 2 naming it
   case "${GBSSN1D_JOBS:-}" in
     '') jobs=$(nproc) ;;
-    *[!0-9]* | 0*) echo "$name: GBSSN1D_JOBS = '$GBSSN1D_JOBS' is invalid: it must be a positive whole number (runs at once)" >&2; exit 2 ;;
+    *[!0-9]* | 0*) echo "$1: GBSSN1D_JOBS = '$GBSSN1D_JOBS' is invalid: it must be a positive whole number (runs at once)" >&2; exit 2 ;;
     *) jobs=$GBSSN1D_JOBS ;;
   esac
   if [ "$jobs" -gt 1024 ]; then
-    echo "$name: GBSSN1D_JOBS = $jobs is invalid: at most 1024 runs at once" >&2
+    echo "$1: GBSSN1D_JOBS = $jobs is invalid: at most 1024 runs at once" >&2
     exit 2
   fi
+}
+
+lib_init() {
+  local name=$1 caller=$2 default=$3 given=${4:-}
+  lib_name=$name
+  lib_jobs "$name"
   if [ -n "$given" ]; then
     case "$given" in /*) out=$given ;; *) out=$caller/$given ;; esac
   else
@@ -99,6 +106,11 @@ lib_run() {
   [ -n "${lib_binaries[$program]:-}" ] || lib_binaries[$program]=$(sha256sum "$program" | cut -c1-16)
   local text
   text="$(printf '%q ' "$@")# binary ${lib_binaries[$program]}"
+  # and every other file the command names (a --config, an h_AH file): an edited file redoes
+  # the run
+  for arg in "$@"; do
+    [ "$arg" != "$program" ] && [ -f "$arg" ] && text+=" # file $arg $(sha256sum "$arg" | cut -c1-16)"
+  done
   # a name asked for again in the same script: the same command runs once (a second run of it
   # beside the first would write into the same scratch folder); another command is refused
   if [ -n "${lib_texts[$name]:-}" ]; then

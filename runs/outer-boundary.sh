@@ -2,19 +2,25 @@
 # The outer boundary's share of the default run's late-time numbers (docs/horizon-shift-study.md,
 # Sec. 7): the default wormhole run to t = 500 M with the boundary at 100 M (the old default),
 # 1000 M (the default) and 2000 M, and at 1000 M with N = 600 and 800. Prints the largest
-# |M_AH - M| over t >= 50 M and the RMS of H_L2_R over 10-100 M and 100-500 M; every run is made
-# afresh in out/outer-boundary/.
+# |M_AH - M| over t >= 50 M and the RMS of H_L2_R over 10-100 M and 100-500 M; every run is kept
+# in out/outer-boundary/ (or OUT) and redone only where its command or the binary changed.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+lib_init runs/outer-boundary.sh "$here" out/outer-boundary "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
-out=out/outer-boundary
-mkdir -p "$out"
-for cfg in "100 400" "1000 400" "2000 400" "1000 600" "1000 800"; do
+cfgs=("100 400" "1000 400" "2000 400" "1000 600" "1000 800")
+for cfg in "${cfgs[@]}"; do
+  read -r rmax n <<<"$cfg"
+  lib_run "rmax$rmax-N$n" build/gbssn1d evolve --rmax "$rmax" --N "$n" --tmax 500 --dt-series 1 \
+    --dt-profiles 500 --out @OUT
+done
+lib_wait
+lib_check
+for cfg in "${cfgs[@]}"; do
   set -- $cfg
   d="$out/rmax$1-N$2"
-  rm -rf "$d"
-  build/gbssn1d evolve --rmax "$1" --N "$2" --tmax 500 --dt-series 1 --dt-profiles 500 --out "$d" \
-    2>"$d.log" || echo "  (rmax $1, N $2: stopped, see $d.log)"
   /usr/bin/python3 - "$d" "$1" "$2" <<'PY'
 import math, os, sys
 sys.path.insert(0, 'plots')

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What limits max|M_AH - M| on the uniform M/16 grid of the study (docs/horizon-shift-study.md,
-# Sec. 7.2), every run made afresh in out/uniform-m16/ (about 1 minute on 2 cores). Wormhole
+# Sec. 7.2), every run kept in out/uniform-m16/ and redone only where its command or binary changed (about 1 minute on 2 cores). Wormhole
 # data with every default but the grid and the ones named:
 #  1. the standard gauge (no horizon shift) at --fd-order 4 and 6 on uniform grids with the
 #     boundary at 160 M (out of the way to 50 M) at M/16, M/32, M/64, to 50 M: the largest
@@ -18,13 +18,12 @@
 #     maximal-trumpet), N = 1280, rmax 80 M: max|M_AH - M| over the run and before 55 M (before
 #     the outer boundary's influence can reach the horizon).
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/study-helpers.sh
+lib_init runs/uniform-m16.sh "$here" out/uniform-m16 "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-out=out/uniform-m16
-rm -rf "$out"
-mkdir -p "$out"
-source runs/study-helpers.sh
 for p in 4 6; do
   for n in 2560 5120 10240; do
     uniform_run "standard-p$p-N$n" --fd-order "$p" --rmax 160 --N "$n" --tmax 50
@@ -41,7 +40,8 @@ for p in 4 6; do
     done
   done
 done
-wait
+lib_wait
+lib_check
 shrink=(--fd-order 6 --rmax 80 --N 1280 --tmax 100 --rahA 0.5 --rah0 0.6)
 uniform_run try-open-loop "${shrink[@]}" --rah-hAH-file "$out/m16-p6-ko0.1-h0.6/horizon.dat"
 uniform_run try-driver-centred "${shrink[@]}" --driver-advection centred
@@ -60,7 +60,8 @@ for p in 4 6; do
     done
   done
 done
-wait
+lib_wait
+lib_check
 $py - "$out" <<'PY' | tee "$out/table.txt"
 import math, os, sys
 import numpy as np

@@ -16,11 +16,15 @@ rm -rf "$dir" && mkdir -p "$dir"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # 1. each script that sources runs/lib.sh: a bad GBSSN1D_JOBS is refused before anything is made
-for script in thesis.sh z4c.sh hold-scaling.sh; do
+for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-boundary.sh \
+  horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
+  boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
+  horizon-coarse.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
     stage=()
     [ $script != z4c.sh ] || stage=(damping)
+    [ $script != horizon-coarse.sh ] || stage=(reproduce)
     status=0
     (cd "$dir" && GBSSN1D_JOBS="$jobs" bash "$src/runs/$script" "${stage[@]}" "$target" >"$dir/jobs.out" 2>&1) ||
       status=$?
@@ -28,6 +32,11 @@ for script in thesis.sh z4c.sh hold-scaling.sh; do
     grep -q "GBSSN1D_JOBS" "$dir/jobs.out" || fail "$script: the message does not name GBSSN1D_JOBS"
     [ ! -e "$target" ] || fail "$script with GBSSN1D_JOBS='$jobs' made $target"
   done
+done
+for jobs in 0 abc; do
+  status=0
+  GBSSN1D_JOBS="$jobs" bash "$src/runs/claims.sh" >"$dir/jobs.out" 2>&1 || status=$?
+  [ $status -eq 2 ] && grep -q GBSSN1D_JOBS "$dir/jobs.out" || fail "claims.sh with GBSSN1D_JOBS='$jobs': exit $status"
 done
 echo "a bad GBSSN1D_JOBS: refused by every script (exit 2), nothing made"
 
@@ -122,7 +131,29 @@ status=0
 [ $status -eq 2 ] && grep -q "two different commands" "$dir/d2.out" || fail "two commands for one name: exit $status ($(cat "$dir/d2.out"))"
 echo "the same name asked for thrice runs once; two commands for one name are refused"
 
-# 5. a symlinked OUT and a second writer are refused
+# 5. a file the command names is an input: an edited --config redoes the run
+printf 'tmax = 2\n' >"$dir/run.toml"
+cat >"$dir/cfg.sh" <<EOF
+#!/usr/bin/env bash
+set -euo pipefail
+source "$src/runs/lib.sh"
+lib_init cfg.sh "\$PWD" cfgout
+lib_run c $gbssn1d evolve --out @OUT --id 1log-trumpet --grid uniform --N 64 --rmax 20 \\
+  --config "$dir/run.toml"
+lib_wait
+lib_check
+EOF
+(cd "$dir" && bash "$dir/cfg.sh" >"$dir/c1.out" 2>&1) || fail "a --config run: $(cat "$dir/c1.out")"
+touch -d '2000-01-01' "$dir/cfgout/c.log"
+(cd "$dir" && bash "$dir/cfg.sh" >"$dir/c2.out" 2>&1) || fail "a --config rerun: $(cat "$dir/c2.out")"
+[ "$(date -r "$dir/cfgout/c.log" +%Y)" = 2000 ] || fail "an unchanged --config redid the run"
+printf 'tmax = 3\n' >"$dir/run.toml"
+(cd "$dir" && bash "$dir/cfg.sh" >"$dir/c3.out" 2>&1) || fail "an edited --config: $(cat "$dir/c3.out")"
+[ "$(date -r "$dir/cfgout/c.log" +%Y)" != 2000 ] || fail "an edited --config kept the old run"
+grep -q "completed at t = 3" "$dir/cfgout/c/timeseries.dat" || fail "the edited --config's run is not the new one"
+echo "an edited --config redoes its run, an unchanged one keeps it"
+
+# 6. a symlinked OUT and a second writer are refused
 ln -s "$out" "$dir/work/link"
 status=0
 (cd "$dir/work" && bash "$dir/study.sh" link >"$dir/s7.out" 2>&1) || status=$?
