@@ -152,6 +152,14 @@ private:
     std::size_t more = 0;
     for (const auto& i : verdict_.items)
       more += i.kind == kind ? 1 : 0;
+    if (verdict_.nothing_judged)
+      return fmt::format(
+          "{}: every monitored value lies within {:g} times its round-off floor estimate at "
+          "every common time, so nothing is judged ({}); the estimate, eps (M/dr_min)^2, takes "
+          "each member's smallest cell (dr_min), which may lie far from where the norms are "
+          "taken: a grid much finer at its innermost cells than elsewhere (--dr-inner), a run "
+          "too short to leave round-off, or a quantity that vanishes exactly",
+          class_words(kind), kFloorFactor, floor_finding());
     if (kind == ConvergenceClass::unjudged)
       return fmt::format(
           "{}: {} at {} has no value at any common time (a norm whose window holds no point of "

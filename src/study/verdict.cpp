@@ -131,10 +131,16 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     }
     v.items.push_back(std::move(j));
   }
+  v.nothing_judged =
+      !v.items.empty()
+      && std::all_of(v.items.begin(), v.items.end(), [](const auto& j) { return j.judged == 0; })
+      && std::any_of(v.items.begin(), v.items.end(), [](const auto& j) { return j.at_floor > 0; });
   return v;
 }
 
 ConvergenceClass Verdict::kind() const {
+  if (nothing_judged)
+    return ConvergenceClass::unjudged;
   ConvergenceClass worst = ConvergenceClass::converges;
   for (const auto& j : items)
     worst = std::max(worst, j.kind);
@@ -153,7 +159,7 @@ const OrderJudgement* Verdict::failure() const {
   for (const auto& j : items)
     if (j.kind == k)
       return &j;
-  return nullptr;
+  return nothing_judged ? &items.front() : nullptr;
 }
 
 const OrderJudgement* Verdict::weakest() const {

@@ -108,7 +108,11 @@ struct Verdict {
   double design = 4.0;    ///< the order expected
   double threshold = 2.5; ///< design - kOrderTolerance
   std::vector<OrderJudgement> items;
-  /// The study's class: the worst of its items' (converges for no items).
+  /// No item judged at any time, some at the round-off floor: the study judged nothing, which is
+  /// not a pass (`not judged`), however each item alone reads.
+  bool nothing_judged = false;
+  /// The study's class: the worst of its items' (converges for no items; not judged when
+  /// nothing_judged).
   ConvergenceClass kind() const;
   /// Classes 1 and 2.
   bool converges() const;

@@ -286,10 +286,11 @@ TEST_CASE("converge: a member at the round-off floor converges until the floor (
   const std::string coarser = order_line(text, "H_L2_ext", "N = 400 and 800");
   CHECK(coarser.find("order of its RMS over time 3.8") != std::string::npos);
   CHECK(coarser.substr(coarser.rfind(": ")) == ": converges");
-  // one level finer, every pair and triple at the floor: nothing is judged, and it says so
-  REQUIRE(run_study(flags + "0.5 --N 800,1600,3200", &err) == 0);
-  CHECK(err.find("converges until the round-off floor: no monitored value lies above its "
-                 "round-off floor: nothing is judged; ")
+  // one level finer, every pair and triple at the floor: nothing is judged, which is not a pass
+  // (exit 6), and it says so
+  REQUIRE(run_study(flags + "0.5 --N 800,1600,3200", &err) == 6);
+  CHECK(err.find("not judged: every monitored value lies within 10 times its round-off floor "
+                 "estimate at every common time, so nothing is judged (")
         != std::string::npos);
   CHECK(err.find("reached by N = 3200 (dr_min = M/400, floor 3.6e-11 of the scale)")
         != std::string::npos);

@@ -79,20 +79,30 @@ TEST_CASE("verdict: a dip at single times is tolerated, a tenth of the run below
   CHECK(j.p_rms > 2.5); // the whole run's RMS alone would have hidden it
 }
 
-TEST_CASE("verdict: times at round-off are not judged") {
-  // a finer norm of 1e-13 with a floor of 1: no time is judged, nothing fails
+TEST_CASE(
+    "verdict: times at round-off are not judged, and a study that judged nothing is no pass") {
+  // a finer norm of 1e-13 with a floor of 1: no time is judged
   OrderSeries s = norm_pair(100, 200, 4.0, 1.0);
   for (auto& f : s.fine)
     f *= 1e3; // a "non-converging" finer value, but all at round-off
   const Verdict v = judge_convergence({s}, 4.0);
-  CHECK(v.converges());
   CHECK(v.items[0].judged == 0);
   CHECK(v.items[0].at_floor == 41);
   CHECK(std::isnan(v.items[0].p_rms));
   CHECK(v.weakest() == nullptr);
-  // nothing judged at all, but the finer member at the floor: converges until the floor
-  CHECK(v.kind() == ConvergenceClass::to_floor);
-  CHECK(class_words(v.kind()) == "converges until the round-off floor");
+  // the item alone reads "at the floor", but the study judged nothing at all: not judged, and
+  // not a pass (it named a non-converging finer member "round-off")
+  CHECK(v.items[0].kind == ConvergenceClass::to_floor);
+  CHECK(v.nothing_judged);
+  CHECK(v.kind() == ConvergenceClass::unjudged);
+  CHECK_FALSE(v.converges());
+  CHECK(v.failure() == &v.items[0]);
+  // the same item beside one that was judged: the study converges until the floor
+  const Verdict both = judge_convergence({s, norm_pair(100, 200, 4.0, 1e-30)}, 4.0);
+  CHECK_FALSE(both.nothing_judged);
+  CHECK(both.kind() == ConvergenceClass::to_floor);
+  CHECK(both.converges());
+  CHECK(class_words(both.kind()) == "converges until the round-off floor");
 }
 
 TEST_CASE("verdict: field differences over three resolutions") {
@@ -219,7 +229,8 @@ TEST_CASE("verdict classes: a finer value 9 times its floor is at the floor, 11 
     INFO(factor);
     CHECK(v.items[0].judged == (factor < 10 ? 0U : 41U));
     CHECK(v.items[0].at_floor == (factor < 10 ? 41U : 0U));
-    CHECK(v.kind() == (factor < 10 ? ConvergenceClass::to_floor : ConvergenceClass::diverges));
+    // at 9 times: nothing judged in the whole study, which is no pass
+    CHECK(v.kind() == (factor < 10 ? ConvergenceClass::unjudged : ConvergenceClass::diverges));
   }
   // converging at order 4 until the finer member reaches the floor at t = 15: those times are
   // not judged, and the verdict says the floor was reached
