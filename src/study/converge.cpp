@@ -153,8 +153,7 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
     say("gbssn1d converge: member N = {} started\n", members[k].N);
   }
   try {
-    const Params& p = members[k];
-    const FolderLock member_lock("--out", p.out); // one writer per member folder too
+    const Params& p = members[k]; // its folder locked by the study (run_converge)
     const fs::path copy = fs::path(p.out) / std::string(prescribed_horizon_copy);
     Params from_copy = p;
     if (hAH) {
@@ -414,6 +413,13 @@ int run_converge(const Params& base, const ConvergeOptions& options,
                     fmt::join(options.fields, ","))
       + base_config + files_text;
   write_file_atomically(fs::path(options.out) / "config.toml", study_config);
+  // one writer per member folder too, held until the study ends: a member that has finished
+  // stays the study's (an evolve --force or resume of it while the study runs is refused, and
+  // convergence.dat never describes a run no longer in the folder)
+  std::vector<FolderLock> member_locks;
+  member_locks.reserve(s.members.size());
+  for (const Params& m : s.members)
+    member_locks.emplace_back("--out", m.out);
   warn_of_unlisted_members(options.out, options.N);
   std::mutex log_mutex;
   install_stop_handlers(); // members stop between steps; the partial files stay
