@@ -379,13 +379,35 @@ void validate_grid_and_steps(const Params& p) {
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));
-  // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise
+  // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise; the flag
+  // named is the one that makes it too fast (kappa2 where kappa1 alone, at 2 kappa1, would not)
+  const double kappa1_value = p.kappa1.value_or(kappa1_rule(p));
+  const bool kappa2_decides = p.kappa2 > 0.0 && 2.0 * kappa1_value * dt_finest <= eta_dt_max;
   if (const double rate = damping_rate(p); rate > eta && rate * dt_finest > eta_dt_max)
-    throw ParamError("--kappa1", num(p.kappa1.value_or(kappa1_rule(p))),
+    throw ParamError(kappa2_decides ? "--kappa2" : "--kappa1",
+                     kappa2_decides ? num(p.kappa2) : num(kappa1_value),
                      fmt::format("unstable with --cfl = {}: the damping rate kappa1 max(2, 2 + "
                                  "kappa2) = {} times dt = {} exceeds {} (RK4 limit of the "
                                  "constraint damping)",
                                  num(p.cfl), rate, dt_finest, eta_dt_max));
+  // the damping near the hole: at most min(kappa1-hole, 0.2/dr) at a cell of width dr, whose
+  // step is at most cfl dr (a single grid: the finest step everywhere), so that its rate times a
+  // step stays below max(2, 2 + kappa2) min(kappa1-hole dt, 0.2 cfl) (boxes: 0.2 cfl)
+  if (z4c_on(p)) {
+    const double hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+    const double resolved = Z4cParams::kappa1_dr_max * p.cfl;
+    const double per_step =
+        std::max(2.0, 2.0 + p.kappa2)
+        * (p.grid == RadialGrid::boxes ? resolved : std::min(resolved, hole * dt_finest));
+    if (hole > kappa1_value && per_step > eta_dt_max)
+      throw ParamError(p.kappa2 > 0.0 ? "--kappa2" : "--kappa1-hole",
+                       p.kappa2 > 0.0 ? num(p.kappa2) : num(hole),
+                       fmt::format("unstable with --cfl = {}: the damping near the hole, at most "
+                                   "min(kappa1-hole, 0.2/dr) max(2, 2 + kappa2), times a step can "
+                                   "reach {} (above {}, RK4's limit); give --kappa1-hole 0 or a "
+                                   "smaller --kappa2",
+                                   num(p.cfl), per_step, eta_dt_max));
+  }
   if (p.grid == RadialGrid::boxes && p.rah_variant == ShiftVariant::midstep_update)
     throw ParamError("--rah-variant", p.rah_variant.name(),
                      "is a single-grid study variant (its searches count one grid's RHS calls)");
