@@ -232,6 +232,13 @@ void check_resume_dir(const std::string& dir_name, bool with_checkpoint) {
                        fmt::format("its {} cannot be read: {}", name, ec.message()));
     return fs::is_regular_file(st);
   };
+  {
+    std::error_code ec;
+    if (!fs::exists(dir, ec) && !ec)
+      throw ParamError("DIR", printable(dir_name), "does not exist");
+    if (!fs::is_directory(dir, ec))
+      throw ParamError("DIR", printable(dir_name), "is not a folder (give a run's output folder)");
+  }
   if (!has_file("config.toml"))
     throw ParamError("DIR", dir_name, "has no config.toml (not a gbssn1d output directory)");
   if (with_checkpoint && !has_file("checkpoint.bin"))

@@ -73,7 +73,8 @@ FolderLock::FolderLock(const std::string& flag, const std::filesystem::path& dir
     throw ParamError(flag, dir.string(),
                      err == ELOOP ? fmt::format("its lock file {} is a symbolic link: remove it",
                                                 folder_lock_name)
-                                  : fmt::format("cannot make its lock file {}: {}",
+                                  : fmt::format("cannot {} its lock file {}: {}",
+                                                std::filesystem::exists(file) ? "open" : "make",
                                                 folder_lock_name, std::strerror(err)));
   }
   const short type = mode == LockMode::exclusive ? F_WRLCK : F_RDLCK;
