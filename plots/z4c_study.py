@@ -37,6 +37,9 @@ def load(folder):
     if data.size == 0:
         raise DataError('no rows', path)
     params = header_params(text)
+    # how the run ended: '# end: completed at t = T' (its own tmax) or '# end: stopped: ...'
+    ends = [line for line in text.splitlines() if line.startswith('# end: ')]
+    params['end'] = ends[-1][len('# end: '):] if ends else 'no end line (still running, or cut short)'
     return os.path.basename(os.path.normpath(folder)), params, \
         {c: data[:, i] for i, c in enumerate(columns)}
 
@@ -97,6 +100,11 @@ def mass(runs, times=MASS_TIMES):
             print(f'{name} {tq:g} ' + ' '.join(f'{v:+.2e}' for v in values))
 
 
+def ratio(x, base):
+    """x / base, or '-' where the base is 0 or not a number (no ratio to state)."""
+    return f'{x / base:.3g}' if base > 0 and math.isfinite(base) and math.isfinite(x) else '-'
+
+
 def table(base, runs, t0, t1):
     b = load(base)
     bH, bM, _, _ = summary(b[2], t0, t1)
@@ -104,12 +112,18 @@ def table(base, runs, t0, t1):
     print('# run formulation t_end H_rms H_ratio M_max M_ratio Theta_rms')
     for name, params, s in [b] + [load(r) for r in runs]:
         H, M, theta, t_end = summary(s, t0, t1)
-        stopped = '' if t_end >= t1 else f' (stopped at t = {t_end:g})'
-        if H == 0.0:  # the norm of an empty window: no point of the outer sheet in it
-            stopped += ' (H_L2_R = 0: the areal window held no point)'
+        notes = ''
+        if not params['end'].startswith('completed'):
+            notes += f' ({params["end"]})'  # stopped by itself, or no end line
+        elif t_end < t1:
+            notes += f' (the run ends at t = {t_end:g}, before the window does)'
+        if not window(s, t0, t1).any():
+            notes += ' (no time in the window: no numbers)'
+        elif H == 0.0:  # the norm of an empty window: no point of the outer sheet in it
+            notes += ' (H_L2_R = 0: the areal window held no point)'
         th = f'{theta:.3e}' if theta is not None else '-'
-        print(f'{name} {describe(params).replace(" ", ",")} {t_end:g} {H:.3e} {H / bH:.3g} '
-              f'{M:.3e} {M / bM:.3g} {th}{stopped}')
+        print(f'{name} {describe(params).replace(" ", ",")} {t_end:g} {H:.3e} {ratio(H, bH)} '
+              f'{M:.3e} {ratio(M, bM)} {th}{notes}')
 
 
 def figure(base, runs, t0, t1, output):
@@ -146,6 +160,8 @@ def main():
     a = ap.parse_args()
     if a.what != 'mass' and not a.runs:
         ap.error(f'{a.what} needs a RUN besides BASE')
+    if not (math.isfinite(a.t0) and math.isfinite(a.t1) and a.t0 < a.t1):
+        ap.error(f'--t0 {a.t0:g} --t1 {a.t1:g}: the window needs t0 < t1, both finite')
     if a.what == 'mass':
         try:
             times = tuple(float(x) for x in a.times.split(','))

@@ -60,6 +60,18 @@ done
 grep -q '^run bssn 2 .* 1 .* 1 -$' "$dir/z4c_table.txt" && grep -q '^z4c z4c,kappa1=0.02,hole=1 2 ' "$dir/z4c_table.txt" \
   || { echo "z4c_study.py table: rows not as expected"; cat "$dir/z4c_table.txt"; exit 1; }
 "$py" "$plots/z4c_study.py" figure "$dir/run" "$dir/z4c" --t0 0 --t1 2 -o "$dir/z4c.png"
+# a window past a run's end: no numbers, said, no division by zero; a run that ended at its own
+# tmax is not called stopped; an empty or reversed window is refused (exit 2)
+"$py" "$plots/z4c_study.py" table "$dir/run" "$dir/z4c" --t0 5 --t1 9 >"$dir/z4c_late.txt"
+grep -q '^z4c .* (the run ends at t = 2, before the window does) (no time in the window: no numbers)$' \
+  "$dir/z4c_late.txt" || { echo "z4c_study.py table: a window past the end not said"; cat "$dir/z4c_late.txt"; exit 1; }
+! grep -q 'stopped' "$dir/z4c_table.txt" || { echo "z4c_study.py: a completed run called stopped"; exit 1; }
+for w in "--t0 5 --t1 0" "--t0 2 --t1 2"; do
+  status=0
+  # shellcheck disable=SC2086
+  "$py" "$plots/z4c_study.py" table "$dir/run" "$dir/z4c" $w >/dev/null 2>&1 || status=$?
+  [ $status -eq 2 ] || { echo "z4c_study.py table $w: exit $status, expected 2"; exit 1; }
+done
 # the Misner-Sharp mass at areal radii: a row per run and time, the mass M to 1% at t = 0 on
 # these coarse grids (the column read, not another: its accuracy is tests/diagnostics'), and a
 # time without a profile block refused
