@@ -6,7 +6,9 @@
 
 For a quantity whose exact value is zero the order between resolutions N1 < N2 is
 p = ln(E1/E2) / ln(N2/N1) (equations document, Sec. 15); N is read from each file's header.
-Rows are paired by time: the times all runs have (matched within 1e-6 of the smallest output
+The runs must be one configuration (every header parameter but N, the output cadence, tmax and
+what follows from N the same; otherwise refused, naming the flags and files, exit 2). Rows are
+paired by time: the times all runs have (matched within 1e-6 of the smallest output
 step), so runs of different --dt-series or tmax compare at the same times; runs that share no
 time are refused. Prints how many common times there are, the norms and the pairwise orders at
 the chosen times; with -o also draws the norms
@@ -20,8 +22,8 @@ import math
 import numpy as np
 
 from gbssn1d_data import (DataError, axis_label, column, common_params, header_params, parse,
-                          read_text, run_description, run_script, sequential_colors,
-                          set_titles, style, save_figure)
+                          read_text, require_one_configuration, run_description, run_script,
+                          sequential_colors, set_titles, style, save_figure)
 
 
 def common_rows(runs, paths):
@@ -75,6 +77,7 @@ def main():
             raise DataError('no N (a whole number) in the header', path) from None
         data = blocks[0][1]
         runs.append((n, column(columns, data, 't'), column(columns, data, a.y), path))
+    require_one_configuration(params_list, a.files)
     runs.sort(key=lambda run: run[0])
     t, E, tol = common_rows([(run[1], run[2]) for run in runs], [run[3] for run in runs])
     Ns = [run[0] for run in runs]

@@ -393,6 +393,32 @@ def label_keys(params_list):
     return chosen
 
 
+# Header keys that may differ between the members of one configuration at several N: N itself
+# and what follows from it (the step, its count, the smallest cell), and output-only settings.
+PER_RUN_KEYS = frozenset({'N', 'out', 'force', 'tmax', 'dt-series', 'dt-profiles',
+                          'checkpoint-every', 'dt', 'steps', 'dr-min', 'rah-hAH-file'})
+
+
+def require_one_configuration(params_list, paths):
+    """Refuses (DataError) runs that are not one configuration at several N: any header
+    parameter besides PER_RUN_KEYS that differs between them, or is in one header only, is named
+    with its values and the files (an order between a trumpet and a wormhole, or BSSN and Z4c,
+    is no order of anything)."""
+    if len(params_list) < 2:
+        return
+    keys = sorted(set().union(*(p.keys() for p in params_list)) - PER_RUN_KEYS)
+    differ = []
+    for k in keys:
+        values = [p.get(k, '(absent)') for p in params_list]
+        if len(set(values)) > 1:
+            differ.append(f'{k} ' + ' / '.join(values))
+    if differ:
+        raise DataError('not one configuration at several N: ' + '; '.join(differ[:6])
+                        + (f' (and {len(differ) - 6} more)' if len(differ) > 6 else '')
+                        + ' (files: ' + ', '.join(display_name(q) for q in paths) + ')',
+                        paths[-1])
+
+
 def common_params(params_list):
     """The parameters all runs share, e.g. the norm windows that name an axis."""
     if not params_list:

@@ -42,6 +42,19 @@ if "$py" "$plots/constraint_orders.py" "$dir/even_times.dat" "$dir/odd_times.dat
 fi
 grep -q "no times common to all runs" "$dir/err" && grep -q "odd_times.dat" "$dir/err" \
   && grep -q "even_times.dat" "$dir/err"
+# runs of other configurations are no convergence test: a wormhole beside trumpets, Z4c beside
+# BSSN, refused (exit 2) naming the flag and its values
+"$gbssn1d" evolve --id wormhole --grid uniform --N 90 --rmax 20 --tmax 2 --dt-series 0.5 \
+  --out "$dir/convworm90" 2>/dev/null
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 90 --rmax 20 --tmax 2 --dt-series 0.5 \
+  --formulation z4c --out "$dir/convz4c90" 2>/dev/null
+for other in convworm90:'id 1log-trumpet / wormhole' convz4c90:'formulation bssn / z4c'; do
+  status=0
+  "$py" "$plots/constraint_orders.py" "$dir/conv60/timeseries.dat" "$dir/${other%%:*}/timeseries.dat" \
+    "$dir/conv120/timeseries.dat" >/dev/null 2>"$dir/err" || status=$?
+  [ $status -eq 2 ] && grep -q "not one configuration at several N: ${other#*:}" "$dir/err" \
+    || { echo "constraint_orders.py: ${other%%:*} mixed in (exit $status): $(cat "$dir/err")"; exit 1; }
+done
 "$py" "$plots/plot_horizons.py" "$dir"/conv{60,90,120}/horizon.dat --label-by N -o "$dir/horizons.png"
 # a box run: its composite profiles (with the level column) and horizon.dat read by the same
 # scripts; the error-profile script on three box resolutions
