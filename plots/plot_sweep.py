@@ -8,7 +8,9 @@ crossed out and named by their status.
 
   plot_sweep.py out/sweep/summary.dat -o sweep.png [-x rahA] [-y rah0] [--where N=400 ...]
 
-Any two swept columns may be the axes (-x, -y); a sweep over one flag gives curves instead.
+Any two swept columns may be the axes (-x, -y; not the same one twice); a sweep over one flag
+gives curves instead: each quantity against that flag (-x, or the one swept column), a member
+that did not finish marked by its status.
 A map holds one member per cell: a sweep over a third flag (e.g. N) needs --where COLUMN=VALUE
 for it, which picks the members of that value (the title says which); without it the script
 refuses, naming the column and its values, rather than draw one member per cell unsaid.
@@ -94,6 +96,42 @@ def power_of_ten(value, _=None):
     return f'${power}$' if mantissa == '1' else rf'${mantissa}\times{power}$'
 
 
+def curves(a, names, rows, text, x):
+    """A sweep over one flag: each quantity against it, members that did not finish marked."""
+    col = {n: k for k, n in enumerate(names)}
+    members = member_params(a.summary)
+    windows = {window('R', p) for p in members}
+    areal = windows.pop() if len(windows) == 1 else window('R')
+    quantities = [('largest |M_AH - M| / M over the run', 'M_ah_err_max'),
+                  (f'largest L2 norm of H over {areal} (1/M^2)', 'H_L2_R_max')]
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(quantities), figsize=(4.8 * len(quantities), 4.0),
+                             squeeze=False)
+    ok = sorted((number(r[col[x]]), r) for r in rows if r[col['status']] == 'ok')
+    bad = [r for r in rows if r[col['status']] != 'ok']
+    for ax, (label, column_name) in zip(axes[0], quantities):
+        xs = [v for v, _ in ok]
+        ys = [number(r[col[column_name]]) for _, r in ok]
+        ax.plot(xs, ys, 'o-')
+        positive = [y for y in ys if y > 0]
+        if positive:
+            ax.set_yscale('log')
+        for r in bad:
+            ax.axvline(number(r[col[x]]), color='crimson', ls=':')
+            ax.text(number(r[col[x]]), 0.95, f"x {r[col['status']]}", color='crimson',
+                    fontsize=8, rotation=90, va='top', transform=ax.get_xaxis_transform())
+        ax.set_xlabel(axis_label(x))
+        ax.set_ylabel(label, fontsize=9)
+    header = [l for l in text.splitlines() if l.startswith('# sweep over')]
+    ran = run_description(members)
+    fig.suptitle((header[0][2:] if header else a.summary) + (f'\n{ran}' if ran else ''),
+                 fontsize=10)
+    fig.tight_layout()
+    save_figure(fig, a.output)
+    if bad:
+        sys.stderr.write(f'note: {len(bad)} member(s) did not finish (marked)\n')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -107,6 +145,13 @@ def main():
     names, rows, text = load(a.summary)
     col = {n: k for k, n in enumerate(names)}
     swept = names[:col['status']]
+    if len(swept) == 1:
+        if a.x not in swept and a.x != ap.get_default('x'):
+            raise SystemExit(f"'{a.x}' is not a swept column; swept: {swept[0]}")
+        return curves(a, names, rows, text, swept[0])
+    if a.x == a.y:
+        raise SystemExit(f"-x and -y both name {a.x}: a map needs two swept columns "
+                         f"(swept: {' '.join(swept)})")
     for axis in (a.x, a.y):
         if axis not in swept:
             raise SystemExit(f"'{axis}' is not a swept column; swept: {' '.join(swept)}")

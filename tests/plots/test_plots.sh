@@ -144,6 +144,15 @@ fi
 grep -q "the sweep varies N too (60, 80)" "$dir/err"
 "$py" "$plots/plot_sweep.py" "$dir/sweep3/summary.dat" --where N=80 -o "$dir/sweep3.png"
 head -c 8 "$dir/sweep3.png" | grep -q PNG
+# a sweep over one flag: curves against it (its docstring's promise); -x and -y the same: refused
+"$gbssn1d" sweep --out "$dir/sweep1" --sweep rahA=0,0.25,0.5 --id 1log-trumpet --grid uniform \
+  --rmax 20 --N 64 --tmax 0.5 --dt-series 0.5 >/dev/null 2>&1
+"$py" "$plots/plot_sweep.py" "$dir/sweep1/summary.dat" -o "$dir/sweep1.png"
+head -c 8 "$dir/sweep1.png" | grep -q PNG || { echo "plot_sweep.py: no curves for one swept flag"; exit 1; }
+status=0
+"$py" "$plots/plot_sweep.py" "$dir/sweep3/summary.dat" -x rahA -y rahA --where N=80 -o "$dir/x.png" \
+  2>"$dir/err" || status=$?
+[ $status -ne 0 ] && grep -q "both name rahA" "$dir/err" || { echo "plot_sweep.py: -x = -y drawn"; exit 1; }
 # ... and ordered curves (resolutions, times) darken monotonically along the sequential map
 PYTHONPATH="$plots" "$py" - <<'PY'
 import numpy as np
