@@ -252,6 +252,18 @@ def norm_panel(ax, s, tmax=None, title=''):
     ax.legend(fontsize=7)
 
 
+def box_edges(params, r_max):
+    """The outer edges rmax / 2^l (l = 1 ... levels - 1) of a boxes run's fine boxes below
+    r_max; none for a single grid."""
+    if params.get('grid') != 'boxes':
+        return []
+    try:
+        rmax, levels = float(params['rmax']), int(params['levels'])
+    except (KeyError, ValueError):
+        return []
+    return [rmax / 2 ** l for l in range(1, levels) if rmax / 2 ** l <= r_max]
+
+
 def figures(out, studies, plt):
     by = {s['name']: s for s in studies}
 
@@ -300,6 +312,12 @@ def figures(out, studies, plt):
                 lab = (f"{spacing_text(s['spacing'][n])}" if k == 0 else
                        f"{spacing_text(s['spacing'][n])} x ({n}/{s['Ns'][0]})^4")
                 ax.plot(tab['r'], tab[col], color=colors[n], label=lab)
+            # the boxes' outer edges (rmax / 2^l), where the interpolated boundary values make
+            # the spikes: marked, so that they are not read as the horizon's or the gauge's
+            edges = box_edges(s['params'], float(np.max(tab['r'])))
+            for k, e in enumerate(edges):
+                ax.axvline(e, color='0.6', ls=':', lw=0.8,
+                           label='box edges' if k == 0 else None)
             ax.set_xlabel('coordinate radius r / M')
             ax.set_ylabel('Hamiltonian constraint H (scaled)')
             ax.set_title(f'{title}, t = {t:g} M', fontsize=9)

@@ -125,4 +125,11 @@ status=0
 "$py" "$src/plots/thesis.py" "$dir" no-such-row >"$dir/bad.out" 2>"$dir/bad.err" || status=$?
 [ $status -eq 2 ] && [ "$(wc -l <"$dir/bad.err")" -eq 1 ] && grep -q "no-such-row.status" "$dir/bad.err" \
   && ! grep -q Traceback "$dir/bad.err" || { echo "thesis.py on a missing row: exit $status"; cat "$dir/bad.err"; exit 1; }
+# fig3.5 marks the boxes' edges (rmax / 2^l, below the plotted range): where its spikes are
+PYTHONPATH="$src/plots" "$py" - <<'PY'
+import thesis
+assert thesis.box_edges({'grid': 'boxes', 'rmax': '32', 'levels': '5'}, 20.0) == [16.0, 8.0, 4.0, 2.0]
+assert thesis.box_edges({'grid': 'sinh', 'rmax': '1000'}, 20.0) == []
+print("fig3.5: box edges at 16, 8, 4, 2 M for 5 boxes to 32 M")
+PY
 echo "thesis: every check passed"
