@@ -9,21 +9,24 @@
 #                                        (about 2 minutes; out/error-constant-upwind/)
 #
 # Output under out/error-constant/, the table on stdout and in out/error-constant/table.txt.
+# A rerun keeps every run that completed with the same command and binary (runs/lib.sh);
+# GBSSN1D_JOBS=n runs n at once; Ctrl-C stops.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
+source runs/lib.sh
+if [ "${1:-}" = upwind ]; then
+  lib_init runs/error-constant.sh "$here" out/error-constant-upwind
+else
+  lib_init runs/error-constant.sh "$here" out/error-constant
+fi
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
 if [ "${1:-}" = upwind ]; then
-  out=out/error-constant-upwind
-  rm -rf "$out" && mkdir -p "$out"
-  jobs=()
-  queue() { # queue NAME FLAGS...: two at a time
+  queue() { # queue NAME FLAGS...
     local name=$1
     shift
-    build/gbssn1d evolve --tmax 100 --dt-series 1 --dt-profiles 100 "$@" --out "$out/$name" \
-      >"$out/$name.log" 2>&1 &
-    jobs+=($!)
-    [ ${#jobs[@]} -lt 2 ] || { wait "${jobs[0]}" || true; jobs=("${jobs[@]:1}"); }
+    lib_run "$name" build/gbssn1d evolve --tmax 100 --dt-series 1 --dt-profiles 100 "$@" --out @OUT
   }
   for up in lopsided biased; do
     for N in 1024 1536 2048 4096; do # M/8, M/12, M/16, M/32 on rmax 128 M
@@ -37,7 +40,8 @@ if [ "${1:-}" = upwind ]; then
       done
     done
   done
-  wait
+  lib_wait
+  lib_check
   $py - "$out" <<'PY' | tee "$out/table.txt"
 import os, sys
 import numpy as np
@@ -61,16 +65,13 @@ for case, ns in (('wormhole', (1024, 1536, 2048, 4096)), ('trumpet', (1024, 1536
 PY
   exit 0
 fi
-out=out/error-constant
-rm -rf "$out" && mkdir -p "$out"
 common=(--tmax 100 --dt-series 1 --dt-profiles 100 --rmax 128)
 uniform=(--grid uniform --N 2048)
 
 run() { # run NAME FLAGS...
   local name=$1
   shift
-  build/gbssn1d evolve "${common[@]}" "$@" --out "$out/$name" >"$out/$name.log" 2>&1 ||
-    echo "  ($name stopped: $(tail -n 1 "$out/$name.log"))"
+  lib_run "$name" build/gbssn1d evolve "${common[@]}" "$@" --out @OUT
 }
 run defaults "${uniform[@]}"
 run M32 --grid uniform --N 4096
@@ -91,6 +92,8 @@ run M32-upwind-biased --grid uniform --N 4096 --upwind biased
 run sinh-0.053 --grid sinh --N 300 --dr-inner 0.04
 run sinh-0.080 --grid sinh --N 200 --dr-inner 0.04
 run sinh-0.020 --grid sinh --N 400 --dr-inner 0.02
+lib_wait
+lib_check
 
 $py - "$out" <<'PY' | tee "$out/table.txt"
 import os, sys
@@ -100,7 +103,7 @@ from gbssn1d_data import series, parse, read_text
 out = sys.argv[1]
 print(f"{'run':26s} {'dr at r=0':>10s} {'at 0.85 M':>10s} {'M_AH-M t=0':>11s} {'t=10':>10s} "
       f"{'t=50':>10s} {'t=100':>10s}")
-for name in sorted(os.listdir(out)):
+for name in sorted(n for n in os.listdir(out) if not n.startswith('.')):
     d = os.path.join(out, name)
     s = series(os.path.join(d, 'timeseries.dat')) if os.path.isdir(d) else None
     if s is None:

@@ -19,7 +19,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-boundary.sh \
   horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
   boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
-  horizon-coarse.sh; do
+  horizon-coarse.sh error-constant.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
     stage=()
