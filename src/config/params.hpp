@@ -175,8 +175,8 @@ inline double kappa1_rule(const Params& p) {
 
 /// Z4c's damping near the hole when not given: 1/M (docs/z4c-study.md, Sec. 9: with kappa1 =
 /// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 1/M inside ~6 M, 0.3 times
-/// BSSN's and H 0.08; 2/M did as well on long runs, but on coarse boxes, where the cell width
-/// caps it differently in each member, the momentum constraint lost order in a convergence test).
+/// BSSN's and H 0.08; 2/M did as well on long runs, but on coarse boxes the momentum constraint
+/// lost order in a convergence test: perhaps the cell-width cap, different in each member).
 inline double kappa1_hole_rule(const Params& p) {
   return 1.0 / p.M;
 }
