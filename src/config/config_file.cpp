@@ -177,10 +177,21 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args,
 }
 
 const std::map<std::string, std::string>& absent_key_values() {
-  // kappa1-hole: Z4c's configurations only (BSSN's never write it)
   static const std::map<std::string, std::string> values{{"box-taper", "0"}, {"kappa1-hole", "0"}};
   return values;
 }
+
+namespace {
+
+/// The absent keys that stand for their value only in configurations holding another key's
+/// value (kappa1-hole: Z4c's; BSSN's never write it, so that its absence there means nothing).
+const std::map<std::string, std::pair<std::string, std::string>>& absent_key_conditions() {
+  static const std::map<std::string, std::pair<std::string, std::string>> conditions{
+      {"kappa1-hole", {"formulation", "\"z4c\""}}};
+  return conditions;
+}
+
+} // namespace
 
 namespace {
 
@@ -205,11 +216,14 @@ std::map<std::string, std::string> key_values(const std::string& text,
 std::vector<std::string> absent_key_args(const std::string& text) {
   const auto kv = key_values(text);
   std::vector<std::string> args;
-  const auto formulation = kv.find("formulation");
-  const bool z4c = formulation != kv.end() && formulation->second == "\"z4c\"";
-  for (const auto& [key, value] : absent_key_values())
-    if (!kv.contains(key) && (key != "kappa1-hole" || z4c))
+  for (const auto& [key, value] : absent_key_values()) {
+    const auto condition = absent_key_conditions().find(key);
+    const bool applies = condition == absent_key_conditions().end()
+                         || (kv.contains(condition->second.first)
+                             && kv.at(condition->second.first) == condition->second.second);
+    if (!kv.contains(key) && applies)
       args.push_back(fmt::format("--{}={}", key, value));
+  }
   return args;
 }
 

@@ -50,15 +50,16 @@ struct Z4c {
   /// (Z4) d_t Delta^r for the shift `s`: (E6), whose -(4/3) alpha/a d_r K acts on K-hat, plus
   /// -(2/3) alpha/a d_r Theta (together -(2/3) alpha/a d_r(2 K-hat + Theta)) and the damping
   /// -2 alpha kappa1 G^r of the Gamma constraint G^r = Delta^r - Delta_gamma^r.
+  /// `kappa1` is kappa1_at(p), formed once per point by the caller (rhs() needs it thrice).
   [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const MetricPieces& m,
-                                            const Shift& s) const {
+                                            const Shift& s, double kappa1) const {
     using enum Var;
     const double G_r = p.f[Delta_r] - delta_gamma(p, m);
     return gbssn1d::rhs_Delta_r(p, m, s) - (2.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[Theta]
-           - 2.0 * p.f[alpha] * kappa1_at(p) * G_r;
+           - 2.0 * p.f[alpha] * kappa1 * G_r;
   }
   [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const Shift& s) const {
-    return rhs_Delta_r(p, metric_pieces(p), s);
+    return rhs_Delta_r(p, metric_pieces(p), s, kappa1_at(p));
   }
 
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
@@ -81,13 +82,13 @@ struct Z4c {
         + 0.5 * p.f[alpha] * (ricci - 1.5 * p.f[A_a] * p.f[A_a] + (2.0 / 3.0) * K_adm * K_adm)
         - p.f[alpha] * kappa1 * (2.0 + params.kappa2) * theta;
     // (Z4)
-    rhs[Delta_r] = rhs_Delta_r(p, m, shift);
+    rhs[Delta_r] = rhs_Delta_r(p, m, shift, kappa1);
     // (G1)-(G3): the lapse is driven by K-hat (p.f[K]), or by the ADM K (a 0/1 weight, so that
     // the loop stays branch-free); B by Z4c's d_t Delta^r of the gauge shift
     rhs[alpha] =
         rhs_alpha(gauge.slicing, p) - gauge.slicing.mu_L * p.f[alpha] * lapse_theta * theta;
     rhs[beta] = rhs_beta(gauge.shift, p);
-    rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r(p, m, gauge_shift), gauge_shift);
+    rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r(p, m, gauge_shift, kappa1), gauge_shift);
     return rhs;
   }
 };

@@ -290,6 +290,7 @@ int run_sweep(const SweepOptions& options, const std::vector<std::string>& evolv
                            fmt::format("is swept and also given to every member ({}): give it "
                                        "in one place",
                                        printable(arg)));
+  refuse_other_commands_folder(options.out);
   check_axis_order(options.out, axes);
   // a task line (--member) builds its own member only: 10,000 members' configurations for each
   // of 10,000 lines was hours of CPU over an array job

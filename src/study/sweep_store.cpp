@@ -248,18 +248,19 @@ void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axe
     write_file_atomically(file, axis_order_text(axes));
 }
 
-/// Refuses axes in another order than the folder's sweep (or other axes), naming its order; and
-/// a folder that holds another command's output (an evolve run, a converge study: their
+/// Refuses a folder that holds another command's output (an evolve run, a converge study: their
 /// config.toml at its top), as evolve and converge refuse a folder that is not theirs.
+void refuse_other_commands_folder(const std::string& out) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(fs::path(out) / "config.toml", ec)))
+    throw ParamError("--out", printable(out),
+                     "holds another command's output (its config.toml: an evolve run or a "
+                     "converge study), beside which a sweep would write its members and "
+                     "summary; nothing was run or changed: give another --out");
+}
+
+/// Refuses axes in another order than the folder's sweep (or other axes), naming its order.
 void check_axis_order(const std::string& out, const std::vector<SweepAxis>& axes) {
-  {
-    std::error_code ec;
-    if (fs::exists(fs::symlink_status(fs::path(out) / "config.toml", ec)))
-      throw ParamError("--out", printable(out),
-                       "holds another command's output (its config.toml: an evolve run or a "
-                       "converge study), beside which a sweep would write its members and "
-                       "summary; nothing was run or changed: give another --out");
-  }
   std::ifstream in(fs::path(out) / "logs" / "axes");
   if (!in)
     return; // a new sweep, or one from before the axes were recorded

@@ -76,4 +76,8 @@ void refuse_links(const std::filesystem::path& dir, const std::vector<const Swee
 void record_axis_order(const std::string& out, const std::vector<SweepAxis>& axes);
 void check_axis_order(const std::string& out, const std::vector<SweepAxis>& axes);
 
+/// Refuses (ParamError naming --out) a folder that holds another command's output: an evolve
+/// run's or a converge study's config.toml at its top.
+void refuse_other_commands_folder(const std::string& out);
+
 } // namespace gbssn1d
