@@ -25,7 +25,8 @@
 # "# end: completed", or it stopped by itself (exit 3: it left the physical range, went
 # non-finite, lost its horizon: a result, the same on every rerun); a converge study wrote
 # convergence.dat with a verdict and exited 0 (converges), 3 (a member stopped), 4 (does not
-# converge) or 5 (pre-asymptotic), each a result. An interrupted (exit 128 + n, "interrupted by"),
+# converge), 5 (pre-asymptotic) or 6 (not judged: too short, or nothing above the round-off
+# floor), each a result. An interrupted (exit 128 + n, "interrupted by"),
 # failed, other-input or other-binary run is redone on a rerun.
 
 lib_jobs() { # NAME: $jobs from GBSSN1D_JOBS (default: the core count), or exit 2 naming it
@@ -129,7 +130,7 @@ lib_run() {
     rm -rf "${out:?}/.new-$name"
     status=0
     "${cmd[@]}" >"$out/$name.log" 2>&1 || status=$?
-    case $status in 0 | 3 | 4 | 5) ;; *) status_ok=no ;; esac
+    case $status in 0 | 3 | 4 | 5 | 6) ;; *) status_ok=no ;; esac
     if [ "${status_ok:-yes}" = yes ] && { [ $status -le 3 ] || [ -f "$out/.new-$name/convergence.dat" ]; } &&
       lib_complete "$out/.new-$name"; then
       rm -rf "${out:?}/.old-$name"

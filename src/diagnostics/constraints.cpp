@@ -40,9 +40,8 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
   return width > 0.0 ? std::sqrt(sum / width) : std::numeric_limits<double>::quiet_NaN();
 }
 
-double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
-                     double Rmax) {
-  const std::size_t n = values.size();
+std::size_t outer_sheet_begin(std::span<const double> R_areal) {
+  const std::size_t n = R_areal.size();
   // the outer sheet: outside the outermost minimum of the areal radius (a wormhole's throat;
   // the innermost point of a trumpet), found walking in from the outer boundary, so that the
   // other sheet's points with the same R do not count. Not the global minimum: where chi sits
@@ -52,6 +51,13 @@ double l2_norm_areal(std::span<const double> values, std::span<const double> R_a
   std::size_t throat = n > 0 ? n - 1 : 0;
   while (throat > 0 && R_areal[throat - 1] <= R_areal[throat])
     --throat;
+  return throat;
+}
+
+double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
+                     double Rmax) {
+  const std::size_t n = values.size();
+  const std::size_t throat = outer_sheet_begin(R_areal.first(n));
   double sum = 0.0, width = 0.0;
   for (std::size_t k = throat; k < n; ++k) {
     if (!(R_areal[k] >= Rmin && R_areal[k] <= Rmax))

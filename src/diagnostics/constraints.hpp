@@ -31,6 +31,10 @@ double l2_norm(std::span<const double> values, const Grid& grid, double rmin, do
 double l2_norm_areal(std::span<const double> values, std::span<const double> R_areal, double Rmin,
                      double Rmax);
 
+/// The first interior point of the outer sheet (l2_norm_areal): outside the outermost minimum of
+/// the areal radius, found walking in from the outer boundary.
+std::size_t outer_sheet_begin(std::span<const double> R_areal);
+
 /// L2 norm near the puncture: over the points from the innermost one outwards while the areal
 /// radius stays <= Rmax (inside the horizon when Rmax < 2M), weighted by the cell widths dr
 /// (near a trumpet's puncture R hardly changes, so |dR| would hide those cells). NaN when the

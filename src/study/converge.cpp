@@ -222,9 +222,34 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
   }
 }
 
+/// Where a member's round-off floor is estimated: its composite cells, the coordinate window,
+/// the points of the areal window on its initial data (outer sheet) and the sampled radii.
+MemberCells member_cells(const Params& p, const std::vector<double>& radii) {
+  const Simulation sim(evolution_config(p));
+  const Grid& g = sim.composite().grid();
+  const mesh::MeshLayout& layout = sim.layout();
+  MemberCells c;
+  c.dr_min = layout.grid(layout.levels() - 1).min_spacing(); // as its headers write dr-min
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i) {
+    c.r.push_back(g.r()[i]);
+    c.dr.push_back(g.dr()[i]);
+  }
+  const NormWindows& w = sim.config().norms;
+  c.ext = {w.rmin, w.rmax};
+  const std::vector<double> R = sim.composite_profiles().R_areal;
+  c.areal = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (std::size_t k = outer_sheet_begin(R); k < R.size(); ++k)
+    if (R[k] >= w.Rmin && R[k] <= w.Rmax) {
+      c.areal.lo = std::min(c.areal.lo, c.r[k]);
+      c.areal.hi = std::max(c.areal.hi, c.r[k]);
+    }
+  c.samples = {radii.front(), radii.back()};
+  return c;
+}
+
 /// The study's members and what each samples: the fields at the coarsest member's interior
-/// points (of the composite of its boxes) inside the exterior region; and each member's
-/// smallest cell width (its finest level's: on the sinh grid the innermost cell).
+/// points (of the composite of its boxes) inside the exterior region; and each member's cells
+/// (member_cells).
 ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   ConvergeStudy s{base, options, converge_members(base, options), {}, {}, {}, {}, 0, {}};
   const mesh::MeshLayout coarse_layout = make_layout(evolution_config(s.members.front()));
@@ -255,10 +280,8 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   for (double r : s.radii)
     s.samples_key += fmt::format(" {:.17g}", r);
   s.records.resize(s.members.size());
-  for (const Params& p : s.members) { // as each member's headers write dr-min
-    const mesh::MeshLayout layout = make_layout(evolution_config(p));
-    s.dr_min.push_back(layout.grid(layout.levels() - 1).min_spacing());
-  }
+  for (const Params& p : s.members)
+    s.cells.push_back(member_cells(p, s.radii));
   return s;
 }
 

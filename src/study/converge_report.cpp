@@ -31,23 +31,26 @@ namespace {
 
 /// The norms compared across members: column stem, order stem, value (judged: part of the
 /// verdict; length_power: the quantity's scale is M^length_power, 1/M^2 for H and M_r, 1/M for
-/// G^r, of which round_off_floor(M, dr_min) is round-off).
+/// G^r, of which round_off_floor(M, dr) is round-off; window: where it is taken, whose cells set
+/// that floor).
 struct Norm {
   const char *column, *order;
   double SeriesRow::*value;
   bool judged;
   int length_power;
+  Extent MemberCells::*window;
 };
-const Norm bssn_norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2},
-                           {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2},
-                           {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1},
-                           {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2},
-                           {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2},
-                           {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2}};
+const Norm bssn_norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2, &MemberCells::ext},
+                           {"M_L2_ext", "M", &SeriesRow::M_L2_ext, true, -2, &MemberCells::ext},
+                           {"G_L2_ext", "G", &SeriesRow::G_L2_ext, true, -1, &MemberCells::ext},
+                           {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2, &MemberCells::areal},
+                           {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2, &MemberCells::areal},
+                           {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2, nullptr}};
 /// Z4c's own (Sec. 17), judged like the rest: G^r and Theta (a curvature, 1/M^2) in the areal
 /// window.
-const Norm z4c_norms[] = {{"G_L2_R", "G_R", &SeriesRow::G_L2_R, true, -1},
-                          {"Theta_L2_R", "Theta_R", &SeriesRow::Theta_L2_R, true, -2}};
+const Norm z4c_norms[] = {
+    {"G_L2_R", "G_R", &SeriesRow::G_L2_R, true, -1, &MemberCells::areal},
+    {"Theta_L2_R", "Theta_R", &SeriesRow::Theta_L2_R, true, -2, &MemberCells::areal}};
 
 /// The norms of a study of `formulation`.
 std::vector<Norm> study_norms(Formulation formulation) {
@@ -60,9 +63,10 @@ std::vector<Norm> study_norms(Formulation formulation) {
 } // namespace
 
 /// Every judged norm at each pair of neighbouring members and every field's differences at
-/// each triple, over the common times, with the round-off floor of the finest member involved.
+/// each triple, over the common times, with the round-off floor of the finest member involved
+/// where the quantity is taken.
 std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, cells] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   std::vector<OrderSeries> series;
@@ -74,8 +78,10 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
       for (std::size_t q = 0; q < n_times; ++q) {
         s.coarse.push_back(records[k].rows[q].*c.value);
         s.fine.push_back(records[k + 1].rows[q].*c.value);
-        s.floor.push_back(round_off_floor(base.M, dr_min[k + 1])
-                          * std::pow(base.M, c.length_power));
+        const MemberCells& finer = cells[k + 1];
+        s.floor.push_back(
+            round_off_floor(base.M, finer.reach(finer.*c.window, records[k].rows[q].t))
+            * std::pow(base.M, c.length_power));
       }
       series.push_back(std::move(s));
     }
@@ -97,12 +103,22 @@ std::vector<OrderSeries> order_series(const ConvergeStudy& s) {
         // judged
         s.floor.push_back(records.front().rows[q].t == 0.0
                               ? std::numeric_limits<double>::infinity()
-                              : round_off_floor(base.M, dr_min[k + 2])
+                              : round_off_floor(base.M, cells[k + 2].reach(cells[k + 2].samples,
+                                                                           records[k].rows[q].t))
                                     * rms_difference(a, zeros, off, radii.size()));
       }
       series.push_back(std::move(s));
     }
   return series;
+}
+
+double MemberCells::reach(const Extent& e, double t) const {
+  const double lo = e.lo - kSignalSpeed * t, hi = e.hi + kSignalSpeed * t;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (r[i] >= lo && r[i] <= hi)
+      smallest = std::min(smallest, dr[i]);
+  return std::isfinite(smallest) ? smallest : dr_min;
 }
 
 StudyEnding study_ending(const ConvergeStudy& s) {
@@ -134,7 +150,7 @@ StudyEnding study_ending(const ConvergeStudy& s) {
 
 void write_convergence_dat(const ConvergeStudy& s, const std::string& base_config,
                            const StudyEnding& e, const StudyVerdict& v) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, cells] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   const std::string& status_line = e.status_line;
@@ -193,7 +209,7 @@ void write_convergence_dat(const ConvergeStudy& s, const std::string& base_confi
 }
 
 void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, const StudyEnding& e) {
-  const auto& [base, options, members, radii, fields, samples_key, records, n_times, dr_min] = s;
+  const auto& [base, options, members, radii, fields, samples_key, records, n_times, cells] = s;
   const std::size_t m = members.size();
   const auto Nd = [&](std::size_t k) { return s.Nd(k); };
   const std::string& status_line = e.status_line;

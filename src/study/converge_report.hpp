@@ -14,8 +14,27 @@
 
 namespace gbssn1d {
 
+/// A coordinate interval [lo, hi].
+struct Extent {
+  double lo = 0.0, hi = 0.0;
+};
+
+/// A member's composite cells, where its round-off floor is estimated (verdict.hpp,
+/// round_off_floor): the coordinate r and width dr of each interior point, and the coordinate
+/// extent of each place a judged quantity is taken over.
+struct MemberCells {
+  std::vector<double> r, dr;
+  double dr_min = 0.0; ///< the smallest cell width anywhere (its finest level's; dr-min)
+  Extent ext;          ///< the coordinate window of the *_ext norms
+  Extent areal;        ///< the points of the areal window on the member's initial data
+  Extent samples;      ///< the radii the --fields are sampled at
+  /// The smallest width of the cells within kSignalSpeed t of e: those whose round-off can have
+  /// reached a quantity taken over e by time t (at t = 0 the cells of e alone).
+  double reach(const Extent& e, double t) const;
+};
+
 /// A study as run: its members, what each samples (the fields at the common radii: the
-/// coarsest member's exterior points), what each recorded, and each one's smallest cell width.
+/// coarsest member's exterior points), what each recorded, and each one's cells.
 struct ConvergeStudy {
   const Params& base;
   const ConvergeOptions& options;
@@ -25,8 +44,8 @@ struct ConvergeStudy {
   std::string samples_key; ///< saved samples are reused only for the same key
   std::vector<MemberRecord> records;
   std::size_t n_times = 0; ///< output times common to all members
-  /// each member's smallest cell width (its finest level's), which sets its round-off floor
-  std::vector<double> dr_min;
+  /// each member's cells, which set its round-off floor where each quantity is taken
+  std::vector<MemberCells> cells;
   double Nd(std::size_t k) const { return static_cast<double>(members[k].N); }
 };
 

@@ -48,10 +48,12 @@ public:
     return text;
   }
 
-  /// The floor of member k relative to the quantities' scales, and its finest spacing.
+  /// Member k's finest spacing, and the floor it sets relative to the quantities' scales once
+  /// its round-off can have reached them.
   std::string floor_text(std::size_t k) const {
-    return fmt::format("dr_min = M/{:.4g}, floor {:.2g} of the scale", s_.base.M / s_.dr_min[k],
-                       round_off_floor(s_.base.M, s_.dr_min[k]));
+    return fmt::format("dr_min = M/{:.4g}, floor from its innermost cell {:.2g} of the scale",
+                       s_.base.M / s_.cells[k].dr_min,
+                       round_off_floor(s_.base.M, s_.cells[k].dr_min));
   }
 
   /// The items whose finer member lay at the floor, grouped by that (finest) member and by
@@ -72,16 +74,33 @@ public:
         text += fmt::format("{}N = {} ({}): {}", text.empty() ? "" : "; ", s_.members[k].N,
                             floor_text(k), fmt::join(sets, "; "));
     }
-    return fmt::format("the round-off floor (the finer value within {:g} times eps (M/dr_min)^2 "
-                       "of its scale; those times not judged) reached by {}",
+    return fmt::format("the round-off floor (the finer value within {:g} times eps (M/dr)^2 of "
+                       "its scale, dr the smallest cell whose round-off can have reached it; "
+                       "those times not judged) reached by {}",
                        kFloorFactor, text);
   }
 
-  /// The rule's finding over the common times.
+  /// The Hamiltonian constraint's class, named first whatever the study's: "H converges (its
+  /// lowest order of an RMS over time 3.91: H_L2_R at N = 800 and 1600)".
+  std::string h_finding() const {
+    const OrderJudgement* low = nullptr;
+    for (const auto& j : verdict_.items)
+      if (j.quantity.starts_with("H_") && j.judged > 0 && (!low || j.p_rms < low->p_rms))
+        low = &j;
+    // no H norm judged at any time (every value at the floor, or none): H is not judged
+    const std::string words =
+        class_words(low ? verdict_.kind_of("H_") : ConvergenceClass::unjudged);
+    return low ? fmt::format("H {} (its lowest order of an RMS over time {}: {} at {})", words,
+                             order_text(low->p_rms), low->quantity, resolutions_text(low->N))
+               : fmt::format("H {}", words);
+  }
+
+  /// The rule's finding over the common times: the study's class, H's, then the worst item's.
   std::string judged() const {
     const ConvergenceClass kind = verdict_.kind();
+    const std::string head = fmt::format("{}: {}; ", class_words(kind), h_finding());
     if (const OrderJudgement* failure = verdict_.failure())
-      return failure_finding(*failure, kind);
+      return head + failure_finding(*failure, kind);
     const OrderJudgement* w = verdict_.weakest();
     const std::string orders =
         w ? fmt::format("every judged order of an RMS over time (norms: also over each tenth of "
@@ -91,8 +110,8 @@ public:
                         w->quantity, resolutions_text(w->N))
           : "no monitored value lies above its round-off floor: nothing is judged";
     return kind == ConvergenceClass::to_floor
-               ? fmt::format("{}: {}; {}", class_words(kind), orders, floor_finding())
-               : fmt::format("{}: {}", class_words(kind), orders);
+               ? fmt::format("{}{}; {}", head, orders, floor_finding())
+               : head + orders;
   }
 
   /// convergence.dat's verdict, its rule and one line per quantity and resolutions.
@@ -100,23 +119,30 @@ public:
     std::string lines = fmt::format(
         "verdict: {}\nverdict rule: for each norm at each pair of neighbouring members, and each "
         "field's differences at each triple, at the times where the finer value is above {:g} "
-        "times the round-off floor of the finest member, eps (M/dr_min)^2 of its scale (1/M^2 for "
-        "H and M_r, 1/M for G^r, the field's RMS for fields), the order of the RMS over those "
+        "times the round-off floor of the finest member, eps (M/dr)^2 of its scale (1/M^2 for "
+        "H and M_r, 1/M for G^r, the field's RMS for fields; dr the smallest of its cells within "
+        "{:g} t of where the quantity is taken), the order of the RMS over those "
         "times (for norms also of the RMS over each tenth of them): converges if each is at least "
         "{} (expected order {} - {}), until the round-off floor if so and some times were at the "
         "floor; pre-asymptotic if some is below that but every RMS order over time is at least "
-        "{:g} and no tenth's below 0; does not converge otherwise; H_L2_int (inside the horizon) "
-        "is not judged, nor are field differences at t = 0 (the same data, interpolated)\n",
-        verdict_text, kFloorFactor, order_text(verdict_.threshold), verdict_.design,
-        kOrderTolerance, kFallingOrder);
+        "{:g} and no tenth's below 0; does not converge otherwise; not judged with {} or fewer "
+        "judged times (too short: single times do not decide); the verdict names H's class "
+        "first, then the worst quantity's; H_L2_int (inside the horizon) is not judged, nor are "
+        "field differences at t = 0 (the same data, interpolated)\n",
+        verdict_text, kFloorFactor, kSignalSpeed, order_text(verdict_.threshold), verdict_.design,
+        kOrderTolerance, kFallingOrder, kWindows);
     for (const auto& j : verdict_.items)
-      lines += fmt::format("order {} {}: {}; {} of {} judged times below {}{}{}: {}\n", j.quantity,
-                           resolutions_text(j.N), rms_text(j), j.below, j.judged,
+      lines += fmt::format("order {} {}: {}; {} of {} judged times below {}{}{}{}: {}\n",
+                           j.quantity, resolutions_text(j.N), rms_text(j), j.below, j.judged,
                            order_text(verdict_.threshold), j.judged > 0 ? ", " + dips(j) : "",
                            j.at_floor > 0 ? fmt::format(
                                "; {} time{} at the round-off floor {:.2g} from t = {}", j.at_floor,
                                j.at_floor == 1 ? "" : "s", j.floor_value, time_at(j.first_floor))
                                           : "",
+                           j.too_short ? fmt::format("; too short to judge (more than {} judged "
+                                                     "times needed)",
+                                                     kWindows)
+                                       : "",
                            class_words(j.kind));
     return lines;
   }
@@ -129,9 +155,10 @@ private:
     const OrderJudgement* last = nullptr;
     const auto close = [&] {
       if (last)
-        set +=
-            fmt::format("{}{} ({} of {} times from t = {})", set.empty() ? "" : ", ", names,
-                        last->at_floor, last->at_floor + last->judged, time_at(last->first_floor));
+        set += fmt::format("{}{} ({} of {} times from t = {}, floor {:.2g} there)",
+                           set.empty() ? "" : ", ", names, last->at_floor,
+                           last->at_floor + last->judged, time_at(last->first_floor),
+                           last->floor_value);
       names.clear();
     };
     for (const auto& j : verdict_.items) {
@@ -139,7 +166,7 @@ private:
         continue;
       if (last
           && (j.at_floor != last->at_floor || j.judged != last->judged
-              || j.first_floor != last->first_floor))
+              || j.first_floor != last->first_floor || j.floor_value != last->floor_value))
         close();
       names += (names.empty() ? "" : ", ") + j.quantity;
       last = &j;
@@ -152,22 +179,31 @@ private:
     std::size_t more = 0;
     for (const auto& i : verdict_.items)
       more += i.kind == kind ? 1 : 0;
+    const std::string others =
+        more > 1
+            ? fmt::format(" (and {} more quantity/resolution sets; see the order lines)", more - 1)
+            : std::string();
     if (verdict_.nothing_judged)
       return fmt::format(
-          "{}: every monitored value lies within {:g} times its round-off floor estimate at "
-          "every common time, so nothing is judged ({}); the estimate, eps (M/dr_min)^2, takes "
-          "each member's smallest cell (dr_min), which may lie far from where the norms are "
-          "taken: a grid much finer at its innermost cells than elsewhere (--dr-inner), a run "
-          "too short to leave round-off, or a quantity that vanishes exactly",
-          class_words(kind), kFloorFactor, floor_finding());
-    if (kind == ConvergenceClass::unjudged)
+          "every monitored value lies within {:g} times its round-off floor estimate at every "
+          "common time, so nothing is judged ({}); the estimate, eps (M/dr)^2, takes the "
+          "smallest cell whose round-off can have reached the quantity: a run too short to "
+          "leave round-off, or quantities that vanish exactly",
+          kFloorFactor, floor_finding());
+    if (kind == ConvergenceClass::unjudged && failure.too_short)
       return fmt::format(
-          "{}: {} at {} has no value at any common time (a norm whose window holds no point of "
-          "the coarser member: NaN in its timeseries.dat){}",
-          class_words(kind), failure.quantity, resolutions_text(failure.N),
-          more > 1 ? fmt::format(" (and {} more quantity/resolution sets; see the order lines)",
-                                 more - 1)
-                   : "");
+          "{} at {} is too short to judge: {} judged time{}{} (more than {} needed: a run is "
+          "judged by its RMS over each tenth of the judged times, and single times do not "
+          "decide; a smaller --dt-series gives more){}",
+          failure.quantity, resolutions_text(failure.N), failure.judged,
+          failure.judged == 1 ? "" : "s",
+          failure.at_floor > 0 ? fmt::format(", {} more at the round-off floor", failure.at_floor)
+                               : "",
+          kWindows, others);
+    if (kind == ConvergenceClass::unjudged)
+      return fmt::format("{} at {} has no value at any common time (a norm whose window holds no "
+                         "point of the coarser member: NaN in its timeseries.dat){}",
+                         failure.quantity, resolutions_text(failure.N), others);
     const std::string why =
         kind == ConvergenceClass::pre_asymptotic ? ""
         : failure.p_rms < kFallingOrder
@@ -178,11 +214,8 @@ private:
                           "(RMS order below 0); ",
                           time_at(failure.worse_begin), time_at(failure.worse_end));
     return fmt::format(
-        "{}: {} at {}: {}{}; {} (expected order {}){}{}", class_words(kind), failure.quantity,
-        resolutions_text(failure.N), why, dips(failure), rms_text(failure), verdict_.design,
-        more > 1
-            ? fmt::format(" (and {} more quantity/resolution sets; see the order lines)", more - 1)
-            : std::string(),
+        "the worst: {} at {}: {}{}; {} (expected order {}){}{}", failure.quantity,
+        resolutions_text(failure.N), why, dips(failure), rms_text(failure), verdict_.design, others,
         kind == ConvergenceClass::pre_asymptotic
             ? fmt::format("; the errors fall with N (every order of an RMS over time at least "
                           "{:g}, no tenth of the run where the finer member is worse)",

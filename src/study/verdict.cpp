@@ -124,7 +124,11 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
       }
       const bool falls = !(j.p_rms < kFallingOrder) && j.windows_worse == 0;
       const bool meets = !(j.p_rms < v.threshold) && j.windows_below == 0;
-      j.kind = !falls           ? ConvergenceClass::diverges
+      // kWindows or fewer judged times: each tenth of the run would be one time, and one time
+      // does not decide (header comment)
+      j.too_short = j.judged <= kWindows;
+      j.kind = j.too_short      ? ConvergenceClass::unjudged
+               : !falls         ? ConvergenceClass::diverges
                : !meets         ? ConvergenceClass::pre_asymptotic
                : j.at_floor > 0 ? ConvergenceClass::to_floor
                                 : ConvergenceClass::converges;
@@ -156,10 +160,27 @@ const OrderJudgement* Verdict::failure() const {
   if (k != ConvergenceClass::unjudged && k != ConvergenceClass::pre_asymptotic
       && k != ConvergenceClass::diverges)
     return nullptr;
+  // of the items of the study's class, the one with the lowest RMS order over time (the first
+  // of those without one)
+  const OrderJudgement* worst = nullptr;
   for (const auto& j : items)
-    if (j.kind == k)
-      return &j;
+    if (j.kind == k
+        && (!worst || j.p_rms < worst->p_rms || (std::isnan(j.p_rms) && !std::isnan(worst->p_rms))))
+      worst = &j;
+  if (worst)
+    return worst;
   return nothing_judged ? &items.front() : nullptr;
+}
+
+ConvergenceClass Verdict::kind_of(const std::string& prefix) const {
+  ConvergenceClass worst = ConvergenceClass::converges;
+  bool any = false;
+  for (const auto& j : items)
+    if (j.quantity.starts_with(prefix)) {
+      worst = std::max(worst, j.kind);
+      any = true;
+    }
+  return any ? worst : ConvergenceClass::unjudged;
 }
 
 const OrderJudgement* Verdict::weakest() const {

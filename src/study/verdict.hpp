@@ -3,7 +3,8 @@
 // (norms, exact value 0) or triple (field differences) of resolutions:
 //  - judged times: those where the finer value (the finer norm, or |f_b - f_c|) is above
 //    kFloorFactor times the round-off floor of the finest member involved (round_off_floor:
-//    eps (M/dr_min)^2 of the quantity's scale) and the coarse value is finite. The other times
+//    eps (M/dr)^2 of the quantity's scale, dr the smallest cell whose round-off can have
+//    reached where the quantity is taken) and the coarse value is finite. The other times
 //    are "at the floor" (their orders measure round-off, not truncation error), not judged;
 //    times where both values are exactly 0 (G^r of the initial data) are neither;
 //  - the order of the RMS over the judged times (the norms', or the differences', RMS over time,
@@ -23,6 +24,9 @@
 //     and no window's RMS order below 0: no tenth of the run where the finer member is worse),
 //     but some judged order is below the threshold;
 //  4. does not converge: the whole run's RMS order below kFallingOrder, or a window's below 0.
+// A quantity with 1 to kWindows judged times is too short to judge (each tenth of the run would
+// be a single time, and single times do not decide): not judged, whatever its orders read; a
+// study needs more judged times (a smaller --dt-series) for a verdict.
 #pragma once
 
 #include <cstddef>
@@ -41,13 +45,25 @@ inline constexpr double kFallingOrder = 1.0;
 /// A time is judged only where the finer value is above kFloorFactor times the round-off floor.
 inline constexpr double kFloorFactor = 10.0;
 
+/// Round-off made in a cell reaches a quantity taken elsewhere no faster than this coordinate
+/// speed (M per M): the characteristic speeds of the systems run (1+log's sqrt(2 alpha gamma^rr),
+/// light's alpha sqrt(gamma^rr), the Gamma-driver's, each plus |beta^r|) stay below 2 where
+/// alpha <= 1 and chi <= 1 (an assumption of the floor's estimate, not a measured bound: a
+/// faster signal would make the estimate too low at early times).
+inline constexpr double kSignalSpeed = 2.0;
+
 /// The round-off floor of a member, relative to the quantity's scale (1/M^2 for H and M_r, 1/M
 /// for G^r, the field's RMS for field differences): the round-off of a second difference at
-/// the member's finest spacing, eps_machine (M/dr_min)^2. Calibration: the measured floor of
-/// the standard gauge's H_L2_R (stationary 1+log trumpet, default sinh grid) was 3-8e-11 at
+/// spacing dr, eps_machine (M/dr)^2, where dr is the smallest cell whose round-off can have
+/// reached the quantity (MemberCells::reach: the cells of its window at t = 0, then those within
+/// kSignalSpeed t; after a few M the member's innermost cell). Calibration: the measured floor
+/// of the standard gauge's H_L2_R (stationary 1+log trumpet, default sinh grid) was 3-8e-11 at
 /// N = 3200 (dr_min = M/400) and 1.2-2.4e-10 at N = 6400 (M/800); the estimate gives 3.5e-11
-/// and 1.4e-10.
-double round_off_floor(double M, double dr_min);
+/// and 1.4e-10. At t = 0 the same trumpet's H_L2_ext at N = 1600 (1.55e-11) is the N = 800
+/// one's / 15.4 (order 3.95), not round-off, though within 10 times the innermost cell's
+/// estimate (8.9e-12): the reason the window's cells set the floor until the innermost ones'
+/// round-off can have arrived.
+double round_off_floor(double M, double dr);
 
 /// One quantity at one pair (2 resolutions: values with exact value 0, order
 /// ln(E_a/E_b)/ln(b/a)) or triple (3 resolutions: coarse = |f_a - f_b|, fine = |f_b - f_c|) of
@@ -97,6 +113,9 @@ struct OrderJudgement {
   std::size_t worse_begin = 0;   ///< time indices of the first of those: first time
   std::size_t worse_end = 0;     ///< and last time
   double worse_order = 0.0;      ///< its RMS order
+  /// 1 to kWindows judged times: too short to judge (each tenth of the run would be one time),
+  /// class unjudged whatever its orders
+  bool too_short = false;
   ConvergenceClass kind = ConvergenceClass::converges;
   /// Classes 1 and 2: every judged order meets the threshold.
   bool converges() const {
@@ -116,9 +135,13 @@ struct Verdict {
   ConvergenceClass kind() const;
   /// Classes 1 and 2.
   bool converges() const;
-  /// The first item (in the order given) of the study's class when that is not judged,
-  /// pre-asymptotic or does not converge: the item to name; nullptr when the study converges.
+  /// The item of the study's class with the lowest RMS order over time (the first without one)
+  /// when that class is not judged, pre-asymptotic or does not converge: the worst item, to
+  /// name; nullptr when the study converges.
   const OrderJudgement* failure() const;
+  /// The worst class of the items whose quantity begins with `prefix` ("H_": the Hamiltonian
+  /// constraint's norms, which the verdict names first); unjudged when there are none.
+  ConvergenceClass kind_of(const std::string& prefix) const;
   /// The converging item with the lowest RMS order, or nullptr if none was judged.
   const OrderJudgement* weakest() const;
 };

@@ -27,10 +27,11 @@ inline int run_study(const std::string& args, std::string* err = nullptr) {
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
-/// A study that ran to its end: converging (0), not converging (4) or pre-asymptotic (5). For
+/// A study that ran to its end: converging (0), not converging (4), pre-asymptotic (5) or not
+/// judged (6: too short, or nothing above the round-off floor). For
 /// tests about something else than the verdict, on grids too coarse to be sure of it.
 inline bool completed(int status) {
-  return status == 0 || status == 4 || status == 5;
+  return status == 0 || status == 4 || status == 5 || status == 6;
 }
 
 /// The data rows of a summary.dat, as text (its status and reason columns are words).

@@ -295,11 +295,63 @@ TEST_CASE("verdict: a norm without a value at any time (an empty window) is not 
   for (double& c : coarse_empty.coarse)
     c = nan;
   CHECK(judge_convergence({coarse_empty}, 4.0).kind() == ConvergenceClass::unjudged);
-  // one valued time is enough to judge
+  // one valued time is too short to judge; eleven are enough
   coarse_empty.coarse[7] = ratio_pair(1.0 / 16).coarse[7];
+  CHECK(judge_convergence({coarse_empty}, 4.0).kind() == ConvergenceClass::unjudged);
+  CHECK(judge_convergence({coarse_empty}, 4.0).items[0].too_short);
+  for (std::size_t q = 8; q < 18; ++q)
+    coarse_empty.coarse[q] = ratio_pair(1.0 / 16).coarse[q];
   CHECK(judge_convergence({coarse_empty}, 4.0).kind() == ConvergenceClass::converges);
   // a study that does not converge says so, whatever is not judged besides
   CHECK(judge_convergence({ratio_pair(1.0), empty}, 4.0).kind() == ConvergenceClass::diverges);
+}
+
+TEST_CASE("verdict: 10 judged times are too short to judge whatever their orders, 11 are judged") {
+  // the times after the first n are at the floor (not judged): n judged times remain
+  const auto first = [](OrderSeries s, std::size_t n) {
+    for (std::size_t q = n; q < s.fine.size(); ++q)
+      s.floor[q] = s.fine[q]; // within 10 times its floor
+    return s;
+  };
+  for (double ratio : {1.0 / 16, 1.0, 2.0}) { // converging, not falling, the finer worse
+    INFO(ratio);
+    const Verdict ten = judge_convergence({first(ratio_pair(ratio), 10)}, 4.0);
+    CHECK(ten.items[0].judged == 10);
+    CHECK(ten.items[0].too_short);
+    CHECK(ten.kind() == ConvergenceClass::unjudged);
+    CHECK_FALSE(ten.converges());
+    REQUIRE(ten.failure() != nullptr);
+    const Verdict eleven = judge_convergence({first(ratio_pair(ratio), 11)}, 4.0);
+    CHECK(eleven.items[0].judged == 11);
+    CHECK_FALSE(eleven.items[0].too_short);
+    CHECK(eleven.kind() == (ratio < 1.0 ? ConvergenceClass::to_floor : ConvergenceClass::diverges));
+  }
+  // a single time once decided: "over t = 0.75 ... 0.75 (a tenth of the run)"
+  const Verdict one = judge_convergence({first(ratio_pair(1.0 / 16, 0, 1, 2.0), 1)}, 4.0);
+  CHECK(one.items[0].too_short);
+  CHECK(one.items[0].windows_worse == 1);
+  CHECK(one.kind() == ConvergenceClass::unjudged);
+}
+
+TEST_CASE("verdict: the item named is the worst of the study's class, and H's class is its own") {
+  // two pre-asymptotic items: order 2 (G) and 1.5 (M); the worse, M, is named whatever the
+  // order given; H converges
+  OrderSeries g = ratio_pair(0.25), m = ratio_pair(std::pow(2.0, -1.5)), h = ratio_pair(1.0 / 16);
+  g.quantity = "G_L2_ext";
+  m.quantity = "M_L2_R";
+  for (const auto& order : {std::vector<OrderSeries>{h, g, m}, std::vector<OrderSeries>{m, h, g}}) {
+    const Verdict v = judge_convergence(order, 4.0);
+    CHECK(v.kind() == ConvergenceClass::pre_asymptotic);
+    REQUIRE(v.failure() != nullptr);
+    CHECK(v.failure()->quantity == "M_L2_R");
+    CHECK(v.kind_of("H_") == ConvergenceClass::converges);
+    CHECK(v.kind_of("G_") == ConvergenceClass::pre_asymptotic);
+    CHECK(v.kind_of("Theta_") == ConvergenceClass::unjudged); // no such item
+  }
+  // H's class is the worst of its norms'
+  OrderSeries h_r = ratio_pair(1.0);
+  h_r.quantity = "H_L2_R";
+  CHECK(judge_convergence({h, h_r, g}, 4.0).kind_of("H_") == ConvergenceClass::diverges);
 }
 
 TEST_CASE("the round-off floor: eps (M/dr_min)^2, as measured on the stationary trumpet") {
