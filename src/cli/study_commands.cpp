@@ -177,9 +177,9 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     // names it)
     const std::string earlier = study_resolutions(options.out);
     const std::string now = fmt::format("{}", fmt::join(options.N, ","));
-    say("gbssn1d converge: {} holds this study (same inputs{}): members continue from their "
-        "last checkpoints (a completed member from its last one before tmax, which it redoes "
-        "bit for bit); a member without one runs again\n",
+    say("gbssn1d converge: {} holds this study (same inputs{}): a completed member whose "
+        "output files are unchanged keeps its records, the others continue from their last "
+        "checkpoints; a member without one runs again\n",
         options.out,
         earlier == now ? "" : fmt::format(" but N: {} where it ran N = {}", now, earlier));
   }

@@ -148,12 +148,44 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
     rec.error = "not started: the study was interrupted";
     return;
   }
-  {
-    const std::lock_guard lock(log_mutex);
-    say("gbssn1d converge: member N = {} started\n", members[k].N);
-  }
   try {
-    const Params& p = members[k]; // its folder locked by the study (run_converge)
+    const Params& p = members[k];              // its folder locked by the study (run_converge)
+    const std::string config = config_text(p); // the member's own configuration
+    const std::string member_config = config + copy_hash_line(hAH);
+    // a member that completed with these inputs, whose output files are as it left them, is not
+    // run again: its records are taken from what it kept
+    const fs::path completed_file = fs::path(p.out) / completed_file_name;
+    std::string not_reused;
+    std::error_code examined;
+    const fs::file_status record = fs::symlink_status(completed_file, examined);
+    if (!examined && fs::exists(record)) {
+      const fs::file_status target = fs::status(completed_file, examined);
+      if (examined)
+        not_reused = fmt::format("it cannot be examined: {}", examined.message());
+      else if (!fs::is_regular_file(target))
+        not_reused = "it is not a regular file";
+      else if (auto kept = read_samples(completed_file, completed_key(samples_key, member_config),
+                                        output_files_hash(p.out), &not_reused)) {
+        rec = std::move(*kept);
+        const std::lock_guard lock(log_mutex);
+        say("gbssn1d converge: member N = {} completed earlier: its records are taken from its "
+            "{} (its inputs and output files unchanged since)\n",
+            p.N, completed_file_name);
+        return;
+      }
+      std::error_code ignored;
+      fs::remove(completed_file, ignored); // the member runs (or continues) now
+      const std::lock_guard lock(log_mutex);
+      say("gbssn1d converge: member N = {} is run: its {} is not used ({})\n", p.N,
+          completed_file_name,
+          not_reused == samples_other_step
+              ? "its output files changed since it completed: another command wrote its folder"
+              : not_reused);
+    }
+    {
+      const std::lock_guard lock(log_mutex);
+      say("gbssn1d converge: member N = {} started\n", p.N);
+    }
     const fs::path copy = fs::path(p.out) / std::string(prescribed_horizon_copy);
     Params from_copy = p;
     if (hAH) {
@@ -164,11 +196,10 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
       fs::remove(copy, ignored);
     }
     Simulation sim(evolution_config(from_copy));
-    const std::string config = config_text(p); // the member's own configuration
     // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
     write_file_atomically(fs::path(p.out) / "config.toml", header_text("") + config);
     sim.on_series = [&](Simulation& s) { record_samples(s, fields, radii, rec); };
-    sim.checkpoint_config = config + copy_hash_line(hAH);
+    sim.checkpoint_config = member_config;
     sim.label = fmt::format(" converge N={}", p.N);
     const fs::path samples_file = fs::path(p.out) / "converge_samples.bin";
     sim.on_checkpoint = [&](const Checkpoint& c) {
@@ -195,15 +226,18 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
     try {
       sim.run(&out);
       out.write_end(fmt::format("completed at t = {}", sim.time()));
-      const std::lock_guard lock(log_mutex);
-      say("gbssn1d converge: member N = {} completed at t = {} ({:.1f} s)\n", p.N, sim.time(),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     } catch (const OutputError&) {
       throw;
     } catch (const std::exception& e) { // stopped or interrupted: say so in the file too
       out.write_end(fmt::format("stopped: {}", e.what()));
       throw;
     }
+    out_storage.reset(); // its files closed: what a rerun compares
+    write_samples(completed_file, completed_key(samples_key, member_config),
+                  output_files_hash(p.out), rec);
+    const std::lock_guard lock(log_mutex);
+    say("gbssn1d converge: member N = {} completed at t = {} ({:.1f} s)\n", p.N, sim.time(),
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   } catch (const OutputError& e) {
     rec.error = e.what();
     rec.write_failed = true;

@@ -148,6 +148,12 @@ TEST_CASE("hostile inputs: each refused cleanly, naming its flag, nothing writte
       std::ofstream(dir / w[0]) << w[1];
       continue;
     }
+    if (line.rfind("@dir ", 0) == 0) { // @dir NAME: a folder in the place of NAME's file
+      std::error_code none;            // (NAME need not exist)
+      fs::remove(dir / line.substr(5), none);
+      REQUIRE(fs::create_directory(dir / line.substr(5)));
+      continue;
+    }
     if (line.rfind("@fifo ", 0) == 0) { // @fifo NAME: a named pipe nobody writes to
       REQUIRE(::mkfifo((dir / line.substr(6)).c_str(), 0644) == 0);
       continue;

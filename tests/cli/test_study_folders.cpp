@@ -94,13 +94,26 @@ TEST_CASE("converge: a member's saved samples with a flipped byte are not reused
   const int first = run(cmd).status;
   REQUIRE((first == 0 || first == 4 || first == 5 || first == 6));
   const std::string before = without_out(a / "convergence.dat");
-  const fs::path samples = a / "N48" / "converge_samples.bin";
-  std::string bytes = slurp(samples);
-  REQUIRE(bytes.size() > 64);
-  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
-  std::ofstream(samples, std::ios::binary) << bytes;
-  const Result rerun = run(cmd + " --force");
+  const auto flip = [](const fs::path& file) {
+    std::string bytes = slurp(file);
+    REQUIRE(bytes.size() > 64);
+    bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
+    std::ofstream(file, std::ios::binary) << bytes;
+  };
+  // its completed record flipped: not used, the member continues from its last checkpoint
+  flip(a / "N48" / "converge_completed.bin");
+  Result rerun = run(cmd + " --force");
   INFO(rerun.err);
+  CHECK(rerun.status == first);
+  CHECK(rerun.err.find("member N = 48 is run: its converge_completed.bin is not used (its "
+                       "checksum does not match (a flipped or cut byte))")
+        != std::string::npos);
+  CHECK(rerun.err.find("member N = 48 resumes at t = 2") != std::string::npos);
+  CHECK(without_out(a / "convergence.dat") == before);
+  // and the samples of that checkpoint flipped too: the member starts afresh
+  flip(a / "N48" / "converge_completed.bin");
+  flip(a / "N48" / "converge_samples.bin");
+  rerun = run(cmd + " --force");
   CHECK(rerun.status == first);
   CHECK(rerun.err.find("member N = 48 starts afresh") != std::string::npos);
   CHECK(rerun.err.find("checksum") != std::string::npos);
@@ -140,7 +153,7 @@ TEST_CASE("converge interrupted: exit 130, and its files and message say they ar
                            + out.string());
   INFO(again.err);
   CHECK((again.status == 0 || again.status == 4 || again.status == 5 || again.status == 6));
-  CHECK(again.err.find("members continue from their last checkpoints") != std::string::npos);
+  CHECK(again.err.find("the others continue from their last checkpoints") != std::string::npos);
   CHECK(again.err.find("resumes at t =") != std::string::npos);
   const std::string text = slurp(out / "convergence.dat");
   CHECK(text.substr(text.rfind("# end:")).find("# end: completed at t = 200") == 0);
@@ -342,7 +355,7 @@ TEST_CASE("converge killed (SIGKILL, no chance to write) continues when the same
   const Result again = run(args.substr(1));
   INFO(again.err);
   CHECK((again.status == 0 || again.status == 4 || again.status == 5 || again.status == 6));
-  CHECK(again.err.find("members continue from their last checkpoints") != std::string::npos);
+  CHECK(again.err.find("the others continue from their last checkpoints") != std::string::npos);
   CHECK(again.err.find("is invalid") == std::string::npos);
   fs::remove_all(out);
 }
@@ -383,6 +396,51 @@ TEST_CASE("converge interrupted with members still to run: no new member starts,
   CHECK(err.find("member N = 500 started") == std::string::npos);
   CHECK(err.find("failed: interrupted") == std::string::npos);
   fs::remove_all(out);
+  fs::remove(out.string() + ".err");
+}
+
+TEST_CASE("converge interrupted after a member completed: the rerun takes that member's records "
+          "from its folder instead of running it again, and a member folder another command "
+          "wrote since runs again, the study's numbers an uninterrupted study's") {
+  const fs::path out = scratch("converge_keep_completed"), fresh = scratch("converge_keep_fresh");
+  const std::string flags =
+      " converge --N 400,600,800 -j 1 --grid uniform --rmax 50 --tmax 300 --dt-series 2 --out ";
+  // interrupted as soon as N = 400 has completed (its record written), N = 600 running
+  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + flags + out.string() + " 2>"
+                          + out.string() + ".err & p=$!; while [ ! -e " + out.string()
+                          + "/N400/converge_completed.bin ]; do sleep 0.01; done; kill -INT $p; "
+                            "wait $p; exit $?'";
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  INFO(slurp(out.string() + ".err"));
+  REQUIRE(WEXITSTATUS(raw) == 130);
+  const std::string n400 = slurp(out / "N400" / "timeseries.dat");
+  const Result rerun = run(flags.substr(1) + out.string());
+  INFO(rerun.err);
+  CHECK(rerun.err.find("member N = 400 completed earlier: its records are taken from its "
+                       "converge_completed.bin")
+        != std::string::npos);
+  CHECK(rerun.err.find("member N = 400 started") == std::string::npos); // not run again
+  CHECK(slurp(out / "N400" / "timeseries.dat") == n400);
+  const Result whole = run(flags.substr(1) + fresh.string());
+  REQUIRE((whole.status == 0 || whole.status == 4 || whole.status == 5 || whole.status == 6));
+  CHECK(rerun.status == whole.status);
+  CHECK(without_out(out / "convergence.dat") == without_out(fresh / "convergence.dat"));
+  // another command's run in a member's folder (allowed once the study has ended): the member
+  // runs again, saying why, and the study's numbers are again its own
+  REQUIRE(run("evolve --N 600 --grid uniform --rmax 50 --tmax 300 --ko-sigma 0.2 --force --out "
+              + (out / "N600").string())
+              .status
+          == 0);
+  const Result again = run(flags.substr(1) + out.string());
+  INFO(again.err);
+  CHECK(again.err.find("member N = 600 is run: its converge_completed.bin is not used (its output "
+                       "files changed since it completed: another command wrote its folder)")
+        != std::string::npos);
+  CHECK(again.err.find("member N = 800 completed earlier") != std::string::npos);
+  CHECK(without_out(out / "convergence.dat") == without_out(fresh / "convergence.dat"));
+  fs::remove_all(out);
+  fs::remove_all(fresh);
   fs::remove(out.string() + ".err");
 }
 
@@ -446,19 +504,26 @@ TEST_CASE("--force leaves hard-linked copies of the earlier run as they were, an
   fs::remove_all(backup);
 }
 
-// A completed converge study rerun with the same inputs says what happens: its members keep no
-// checkpoint, so each runs again (and says so), rather than "continue from their checkpoints".
-TEST_CASE("converge rerun after completion: members without a checkpoint say they run again") {
+// A completed converge study rerun with the same inputs says what happens: each member keeps its
+// records (converge_completed.bin) and says so; a member whose record is gone, with no
+// checkpoint, runs again and says why.
+TEST_CASE("converge rerun after completion: completed members keep their records, one without "
+          "its record or a checkpoint says it runs again") {
   const fs::path out = scratch("converge_rerun_done");
   const std::string cmd = "converge --N 40,50,60 --id 1log-trumpet --grid uniform --rmax 20 "
                           "--tmax 1 --out "
                           + out.string();
   REQUIRE(run(cmd).status != 2);
+  const std::string before = without_out(out / "convergence.dat");
+  fs::remove(out / "N50" / "converge_completed.bin");
   const Result again = run(cmd);
   INFO(again.err);
   CHECK(again.status != 2);
   CHECK(again.err.find("a member without one runs again") != std::string::npos);
+  CHECK(again.err.find("member N = 40 completed earlier") != std::string::npos);
+  CHECK(again.err.find("member N = 60 completed earlier") != std::string::npos);
   CHECK(again.err.find("member N = 50 starts afresh: it has no checkpoint") != std::string::npos);
+  CHECK(without_out(out / "convergence.dat") == before);
   fs::remove_all(out);
 }
 
