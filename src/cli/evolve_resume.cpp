@@ -6,6 +6,7 @@
 #include "config/param_rules.hpp"
 #include "config/params.hpp"
 #include "config/paths.hpp"
+#include "config/same_run.hpp"
 #include "core/console.hpp"
 #include "core/registry.hpp"
 #include "core/stop_signal.hpp"
@@ -37,6 +38,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <unistd.h>
 #include <variant>
 
 namespace gbssn1d {
@@ -98,7 +100,7 @@ int evolve(Params p, bool print_config) {
   resolve_defaults(p);
   validate(p);
   if (print_config) {
-    const std::string text = config_text(p);
+    const std::string text = config_text(p) + rule_values_line(p);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
       throw OutputError(fmt::format("cannot write the configuration to standard output: {}",
                                     std::strerror(errno)));
@@ -143,7 +145,7 @@ int evolve(Params p, bool print_config) {
       std::filesystem::remove(dir / std::string(prescribed_horizon_copy), ignored);
   }
   const std::string config = config_text(p);
-  write_file_atomically(dir / "config.toml", header_text("") + config);
+  write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
   if (hAH_content)
     write_file_atomically(dir / std::string(prescribed_horizon_copy), *hAH_content);
   Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation);
@@ -245,6 +247,14 @@ void check_resume_dir(const std::string& dir_name, bool with_checkpoint) {
     throw ParamError("DIR", dir_name,
                      "has no checkpoint.bin (run with --checkpoint-every T, or stop a run with "
                      "a stop signal: SIGTERM, SIGINT, SIGHUP, SIGUSR1 or SIGUSR2)");
+  // resume replaces its config.toml and checkpoint.bin and rewrites its output files (each
+  // through a new file renamed into place): refused up front, as evolve refuses an --out it
+  // cannot write, not after the checks as a failed write
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw ParamError("DIR", printable(dir_name),
+                     fmt::format("is not writable ({}): resume writes its config.toml, "
+                                 "checkpoint.bin and output files into it",
+                                 std::strerror(errno)));
 }
 
 /// The run's copy of --rah-hAH-file as its checkpoints record it, and the parameters that
@@ -383,7 +393,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   }
   sim.show_progress = true;
   sim.checkpoint_config = config + kept.hash_line;
-  write_file_atomically(dir / "config.toml", header_text("") + config);
+  write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
   say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, time_text(c.t), c.step,
       time_text(p.tmax));
   Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation, c.marks);

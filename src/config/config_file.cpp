@@ -3,6 +3,7 @@
 #include "config/flag_table.hpp"
 #include "config/numbers.hpp"
 #include "config/paths.hpp"
+#include "config/same_run.hpp"
 #include "core/text.hpp"
 
 #include <CLI/CLI.hpp>
@@ -134,7 +135,31 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args,
     text << file.rdbuf();
     if (!file && !file.eof())
       throw ParamError("--config", path, "cannot be read");
+    // the keys the run did not give, but their rules (same_run.hpp: rule_values_line): left to
+    // their rules again, as the run left them
+    std::set<std::string> ruled;
+    {
+      std::istringstream lines(text.str());
+      for (std::string line; std::getline(lines, line);) {
+        if (!line.starts_with(rule_values_mark))
+          continue;
+        std::istringstream keys(line.substr(rule_values_mark.size()));
+        for (std::string key; std::getline(keys, key, ',');) {
+          key.erase(0, key.find_first_not_of(' '));
+          key.erase(key.find_last_not_of(" \r") + 1);
+          const auto& known = rule_keys();
+          if (std::find(known.begin(), known.end(), key) == known.end())
+            throw ParamError("--config", path,
+                             fmt::format("its line '{}' names '{}', which no rule gives",
+                                         printable(std::string(rule_values_mark.substr(2))),
+                                         printable(key)));
+          ruled.insert(key);
+        }
+      }
+    }
     for (const auto& [key, value] : read_config_text(text.str(), path)) {
+      if (ruled.count(key) != 0)
+        continue;
       const auto spec = std::find_if(param_specs().begin(), param_specs().end(),
                                      [&](const ParamSpec& s) { return key == s.name; });
       if (spec == param_specs().end())

@@ -64,6 +64,67 @@ std::vector<IdleFlags> idle_flags(const Params& p) {
   return groups;
 }
 
+namespace {
+
+/// Each rule's key, or keys (auto's profile and width are chosen together).
+const std::vector<std::vector<std::string>>& rules() {
+  static const std::vector<std::vector<std::string>> r{
+      {"eta"},       {"kappa1"},    {"kappa1-hole"},
+      {"norm-rmax"}, {"levels"},    {"box-taper"},
+      {"rah-rcut"},  {"rah-taper"}, {"rah-profile", "rah-width"}};
+  return r;
+}
+
+} // namespace
+
+const std::vector<std::string>& rule_keys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const auto& names : rules())
+      k.insert(k.end(), names.begin(), names.end());
+    return k;
+  }();
+  return keys;
+}
+
+std::vector<std::string> rule_valued_keys(const Params& p) {
+  // each rule's keys reset and resolved again from the others
+  std::vector<std::string> keys;
+  for (const auto& names : rules()) {
+    Params q = p;
+    const Params unset;
+    std::vector<const ParamSpec*> specs;
+    for (const auto& name : names) {
+      const auto spec = std::find_if(param_specs().begin(), param_specs().end(),
+                                     [&](const ParamSpec& s) { return s.name == name; });
+      specs.push_back(&*spec);
+      std::visit([&](auto member) { q.*member = unset.*member; }, spec->member);
+    }
+    try {
+      resolve_defaults(q);
+    } catch (const ParamError&) { // (not a rule's value: the rule refuses the others)
+      continue;
+    }
+    // (a rule's value, not the unset flag's own default: a run without the shift keeps auto)
+    if (std::all_of(specs.begin(), specs.end(),
+                    [&](const ParamSpec* s) {
+                      const auto given = value_text(p, *s);
+                      return given && given == value_text(q, *s);
+                    })
+        && std::any_of(specs.begin(), specs.end(), [&](const ParamSpec* s) {
+             return value_text(p, *s) != value_text(unset, *s);
+           }))
+      keys.insert(keys.end(), names.begin(), names.end());
+  }
+  return keys;
+}
+
+std::string rule_values_line(const Params& p) {
+  const std::vector<std::string> keys = rule_valued_keys(p);
+  return keys.empty() ? std::string()
+                      : fmt::format("{}{}\n", rule_values_mark, fmt::join(keys, ", "));
+}
+
 std::string IdleFlags::warning() const {
   return fmt::format("{} {} nothing {}: {}", fmt::join(given, ", "),
                      given.size() == 1 ? "does" : "do", because, instead);

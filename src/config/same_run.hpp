@@ -6,6 +6,7 @@
 #include "config/params.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gbssn1d {
@@ -34,5 +35,19 @@ Params effective(const Params& p);
 /// outputs but for the folder's name) exactly when their keys are equal. config_text() of the
 /// effective configuration.
 std::string run_key(const Params& p);
+
+/// The keys of resolved parameters whose values are what their rules give for the others (eta
+/// 2/M, Z4c's kappa1 0.02/M and kappa1-hole 1/M, norm-rmax, levels, box-taper, rah-rcut,
+/// rah-taper, and rah-profile with rah-width as auto chooses them): what a run did not give.
+std::vector<std::string> rule_valued_keys(const Params& p);
+/// Every key a rule gives (the candidates of rule_valued_keys()).
+const std::vector<std::string>& rule_keys();
+
+/// The line config.toml carries after its keys, naming rule_valued_keys() ("" for none): a
+/// configuration read back (`--config`, resume) leaves those keys to their rules again, so that
+/// a value a run never gave is neither a flag given (an idle-flag warning with another
+/// --formulation) nor kept where the inputs its rule reads have changed.
+std::string rule_values_line(const Params& p);
+inline constexpr std::string_view rule_values_mark = "# rule values, not given: ";
 
 } // namespace gbssn1d

@@ -1,6 +1,7 @@
 #include "study/converge.hpp"
 
 #include "config/paths.hpp"
+#include "config/same_run.hpp"
 #include "study/converge_records.hpp"
 #include "study/converge_report.hpp"
 
@@ -197,7 +198,8 @@ void run_member(ConvergeStudy& study, std::size_t k, const std::optional<std::st
     }
     Simulation sim(evolution_config(from_copy));
     // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
-    write_file_atomically(fs::path(p.out) / "config.toml", header_text("") + config);
+    write_file_atomically(fs::path(p.out) / "config.toml",
+                          header_text("") + config + rule_values_line(p));
     sim.on_series = [&](Simulation& s) { record_samples(s, fields, radii, rec); };
     sim.checkpoint_config = member_config;
     sim.label = fmt::format(" converge N={}", p.N);

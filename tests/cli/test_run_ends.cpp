@@ -297,3 +297,50 @@ TEST_CASE("a resumed run's progress line counts its speed from the resume, not f
   CHECK(speed < 1.6 * true_speed);                  // from t = 0 it read 2.2 times this
   CHECK(speed > 0.5 * true_speed);
 }
+
+TEST_CASE("resume of a folder its user cannot write is refused up front: exit 2 naming DIR, "
+          "nothing changed (it failed late, exit 1, at its config.toml)") {
+  const fs::path out = scratch("resume_unwritable");
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --N 64 --rmax 16 --tmax 2 "
+              "--checkpoint-every 1 --out "
+              + out.string())
+              .status
+          == 0);
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::directory_iterator(out))
+    before[e.path().filename().string()] = slurp(e.path());
+  // root writes anywhere: the resume then runs as nobody (the folder stays root's, 0755), its
+  // lock file open to others (as a user's own lock file is open to them in a folder they
+  // cannot write: the case that failed late)
+  std::string as_user;
+  if (::geteuid() == 0) {
+    fs::permissions(out / ".gbssn1d.lock", fs::perms::others_read | fs::perms::others_write,
+                    fs::perm_options::add);
+    as_user = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+    if (std::system((as_user + GBSSN1D_EXECUTABLE + " --version >/dev/null 2>&1").c_str()) != 0) {
+      MESSAGE("skipped: running as root, and the program cannot be run as nobody (no setpriv, "
+              "or a folder on its path closed to others)");
+      fs::remove_all(out);
+      return;
+    }
+  } else {
+    fs::permissions(out, fs::perms::owner_write, fs::perm_options::remove);
+  }
+  const fs::path err = out.string() + ".err";
+  const int raw = std::system(
+      (as_user + GBSSN1D_EXECUTABLE + " resume " + out.string() + " --tmax 4 2>" + err.string())
+          .c_str());
+  fs::permissions(out, fs::perms::owner_write, fs::perm_options::add);
+  REQUIRE(WIFEXITED(raw));
+  const std::string message = slurp(err);
+  INFO(message);
+  CHECK(WEXITSTATUS(raw) == 2);
+  CHECK(message.find("DIR = " + out.string() + " is invalid: is not writable")
+        != std::string::npos);
+  for (const auto& [name, text] : before) {
+    CAPTURE(name);
+    CHECK(slurp(out / name) == text);
+  }
+  fs::remove_all(out);
+  fs::remove(err);
+}

@@ -260,3 +260,47 @@ TEST_CASE("--kappa2 does nothing without damping (it only ever multiplies kappa1
   // the damping near the hole is damping too
   CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5")).empty());
 }
+
+TEST_CASE("rule values are recorded as such in config.toml and read back as unset: a Z4c run's "
+          "kappa1 reused with BSSN is no flag given, and a rule follows the inputs it reads") {
+  const fs::path z = scratch("rule_values_z4c"), b = scratch("rule_values_bssn"),
+                 m = scratch("rule_values_m2");
+  REQUIRE(run("evolve --formulation z4c --id 1log-trumpet --grid uniform --N 80 --rmax 20 "
+              "--tmax 0.5 --out "
+              + z.string())
+              .status
+          == 0);
+  const std::string text = slurp(z / "config.toml");
+  // the values are recorded (the run is repeatable from the file), and which came from rules
+  CHECK(text.find("\nkappa1 = 0.02\n") != std::string::npos);
+  CHECK(text.find("\n# rule values, not given: eta, kappa1, kappa1-hole, norm-rmax, box-taper\n")
+        != std::string::npos);
+  // reused with BSSN: no warning of a --kappa1 never given, and none recorded again
+  const auto bssn = run("evolve --config " + (z / "config.toml").string()
+                        + " --formulation bssn --force --out " + b.string());
+  INFO(bssn.err);
+  REQUIRE(bssn.status == 0);
+  CHECK(bssn.err.find("kappa1") == std::string::npos);
+  CHECK(slurp(b / "config.toml").find("kappa1") == std::string::npos);
+  // with another M the rules give that M's values (kappa1 0.02/M, eta 2/M), as the flags would
+  const auto m2 = run("evolve --config " + (z / "config.toml").string() + " --M 2 --out "
+                      + m.string() + " --force");
+  INFO(m2.err);
+  REQUIRE(m2.status == 0);
+  CHECK(slurp(m / "config.toml").find("\nkappa1 = 0.01\n") != std::string::npos);
+  CHECK(slurp(m / "config.toml").find("\neta = 1\n") != std::string::npos);
+  // given on the command line, a value equal to its rule's is still a rule's value
+  CHECK(rule_valued_keys(resolved(trumpet + " --formulation z4c --kappa1 0.02"))
+        == std::vector<std::string>{"eta", "kappa1", "kappa1-hole", "norm-rmax", "box-taper"});
+  CHECK(rule_valued_keys(resolved(trumpet + " --formulation z4c --kappa1 0.05"))
+        == std::vector<std::string>{"eta", "kappa1-hole", "norm-rmax", "box-taper"});
+  // a line naming a key no rule gives is refused (it would leave a given value unset)
+  std::ofstream(b / "edited.toml") << "N = 64\n# rule values, not given: N\n";
+  const auto edited =
+      run("evolve --config " + (b / "edited.toml").string() + " --out " + (b / "x").string());
+  CHECK(edited.status == 2);
+  CHECK(edited.err.find("names 'N', which no rule gives") != std::string::npos);
+  CHECK_FALSE(fs::exists(b / "x"));
+  for (const auto& d : {z, b, m})
+    fs::remove_all(d);
+}
