@@ -76,7 +76,7 @@ def main():
         except (KeyError, ValueError):
             raise DataError('no N (a whole number) in the header', path) from None
         data = blocks[0][1]
-        runs.append((n, column(columns, data, 't'), column(columns, data, a.y), path))
+        runs.append((n, column(columns, data, 't', path), column(columns, data, a.y, path), path))
     require_one_configuration(params_list, a.files)
     runs.sort(key=lambda run: run[0])
     t, E, tol = common_rows([(run[1], run[2]) for run in runs], [run[3] for run in runs])

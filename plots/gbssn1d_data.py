@@ -173,9 +173,11 @@ def blocks(path):
     return [(t, np.array([tuple(row) for row in data], dtype=dtype)) for t, data in parsed]
 
 
-def column(columns, data, name):
+def column(columns, data, name, path=None):
+    """The column `name` of a table parsed from `path`; a missing one is bad input (DataError:
+    exit status 2 through run_script()) naming the file, among several the one at fault."""
     if name not in columns:
-        raise SystemExit(f"no column '{name}'; columns are: {' '.join(columns)}")
+        raise DataError(f"no column '{name}'; its columns are: {' '.join(columns)}", path)
     return data[:, columns.index(name)]
 
 

@@ -35,13 +35,13 @@ def load(paths, y):
         text = read_text(path)
         columns, blocks = parse(text, path)
         data = blocks[0][1]
-        values = column(columns, data, y)
+        values = column(columns, data, y, path)
         found = np.isfinite(values).any()
         if not found:
             sys.stderr.write(f'note: {path} has no finite {y} (no horizon found); '
                              f'its legend entry has no curve\n')
         runs.append({'path': path, 'params': header_params(text), 'found': found,
-                     't': column(columns, data, 't'), 'y': values})
+                     't': column(columns, data, 't', path), 'y': values})
     return runs
 
 

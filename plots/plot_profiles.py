@@ -58,7 +58,8 @@ def main():
     keys = label_keys(params_list)
     order = sorted(range(len(a.files)),
                    key=lambda k: [sort_key(params_list[k].get(key)) for key in keys])
-    parsed, params_list, labels = ([seq[k] for k in order] for seq in (parsed, params_list, labels))
+    files, parsed, params_list, labels = ([seq[k] for k in order]
+                                         for seq in (a.files, parsed, params_list, labels))
     plt = pyplot()
     fig, ax = plt.subplots()
     # Curves are (file, column) series at several times: with one time, a colour per series;
@@ -77,16 +78,16 @@ def main():
         for i, tw in enumerate(wanted):
             t, data = blocks[int(np.argmin(abs(times - tw)))]
             if abs(t - tw) > 1e-9 * max(1.0, abs(tw)):  # said, so that no one reads t = tw
-                sys.stderr.write(f'{script_name()}: note: --times {tw:g}: {display_name(a.files[k])} '
+                sys.stderr.write(f'{script_name()}: note: --times {tw:g}: {display_name(files[k])} '
                                  f'has no block there; the nearest, t = {t:g}, is drawn\n')
-            x = column(columns, data, a.x)
+            x = column(columns, data, a.x, files[k])
             keep = np.ones_like(x, dtype=bool)
             if a.xmin is not None:
                 keep &= x >= a.xmin
             if a.xmax is not None:
                 keep &= x <= a.xmax
             for j, y in enumerate(a.y):
-                v = column(columns, data, y)[keep]
+                v = column(columns, data, y, files[k])[keep]
                 s = series + j
                 # the legend names what tells the curves apart: the run, the column, the time
                 parts = ([labels[k]] if len(a.files) > 1 else []) + (

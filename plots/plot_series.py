@@ -64,7 +64,7 @@ def main():
     targets = {}  # the horizon shift's target h: {h: colours of the runs aiming at it}
     for k, (path, (columns, data), params) in enumerate(zip(a.files, tables, params_list)):
         for j, y in enumerate(a.y):
-            values = column(columns, data, y)
+            values = column(columns, data, y, path)
             if not np.isfinite(values).any():
                 sys.stderr.write(f'note: {path}: {y} has no finite value; nothing to draw\n')
             color = column_colors[j] if column_colors else colors[k]
@@ -72,7 +72,7 @@ def main():
                 label = labels[k]
             else:
                 label = (f'{labels[k]}: ' if len(a.files) > 1 else '') + legend_name(y, params)
-            ax.plot(column(columns, data, a.x), abs(values) if a.logy else values, color=color,
+            ax.plot(column(columns, data, a.x, path), abs(values) if a.logy else values, color=color,
                     ls='none' if a.points else styles[j], marker='o' if a.points else None,
                     label=label)
             if y == 'r_ah' and a.x == 't' and shifted(params) and 'rah0' in params:

@@ -76,8 +76,8 @@ def study(out, name):
     columns, parsed = gd.parse(gd.read_text(path), path)
     data = parsed[0][1] if parsed else np.zeros((0, len(columns)))
     Ns = members(columns)
-    t = gd.column(columns, data, 't')
-    H = {n: gd.column(columns, data, f'{NORM}_N{n}') for n in Ns}
+    t = gd.column(columns, data, 't', path)
+    H = {n: gd.column(columns, data, f'{NORM}_N{n}', path) for n in Ns}
     spacing = {}
     for n in Ns:
         head = gd.header_params(gd.read_text(os.path.join(out, name, f'N{n}', 'timeseries.dat')))

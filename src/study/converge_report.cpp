@@ -238,11 +238,24 @@ void write_scaled_H(const ConvergeStudy& s, const std::string& base_config, cons
       for (std::size_t q = 0; q < n_times; ++q)
         if (std::abs(records.front().rows[q].t - tw) < std::abs(records.front().rows[s].t - tw))
           s = q;
-      const double t_row = records.front().rows[s].t;
-      if (std::abs(t_row - tw) > 1e-9 * std::max(1.0, std::abs(tw)))
-        say("gbssn1d converge: note: --scaled-times {} is no output time (rows every --dt-series "
-            "{}): its block is the nearest row's, t = {}\n",
-            time_text(tw), time_text(base.dt_series), time_text(t_row));
+      const double t_row = records.front().rows[s].t, t_last = records.front().rows[n_times - 1].t;
+      const double tol = 1e-9 * std::max(1.0, std::abs(tw));
+      // the time asked for (tmax when none is given)
+      const std::string asked =
+          options.scaled_times.empty()
+              ? fmt::format("the scaled profiles' time, tmax = {}", time_text(tw))
+              : fmt::format("--scaled-times {}", time_text(tw));
+      if (tw > t_last + tol)
+        say("gbssn1d converge: note: {} lies beyond the common times, which end at t = {} ({}): "
+            "its block is the last common row's\n",
+            asked, time_text(t_last),
+            e.signal != 0       ? "the study was interrupted; rerun it to complete"
+            : !e.failed.empty() ? e.failed
+                                : "a member's rows end there");
+      else if (std::abs(t_row - tw) > tol)
+        say("gbssn1d converge: note: {} is no output time (rows every --dt-series {}): its block "
+            "is the nearest row's, t = {}\n",
+            asked, time_text(base.dt_series), time_text(t_row));
       if (!written.insert(s).second) {
         say("gbssn1d converge: note: --scaled-times {} falls on the output at t = {}, which has "
             "its block already (one block per output time)\n",

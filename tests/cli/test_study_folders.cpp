@@ -139,6 +139,15 @@ TEST_CASE("converge interrupted: exit 130, and its files and message say they ar
   const std::string err = slurp(out.string() + ".err");
   CHECK(err.find("interrupted by SIGINT") != std::string::npos);
   CHECK(err.find("done;") == std::string::npos);
+  // the scaled profiles' time (tmax) lies beyond the common rows because the study was
+  // interrupted, and the note says so (it blamed --dt-series: "is no output time")
+  if (err.find("interrupted by SIGINT at t = 0 ") == std::string::npos) {
+    CHECK(err.find("note: the scaled profiles' time, tmax = 200 lies beyond the common times, "
+                   "which end at t = ")
+          != std::string::npos);
+    CHECK(err.find("(the study was interrupted; rerun it to complete)") != std::string::npos);
+  }
+  CHECK(err.find("is no output time") == std::string::npos);
   for (const char* file : {"convergence.dat", "scaled_H.dat"}) {
     const std::string text = slurp(out / file);
     INFO(file);

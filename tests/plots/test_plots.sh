@@ -278,6 +278,14 @@ cp "$dir/run/timeseries.dat" "$h/kept.dat"
 refused "$h/kept.dat" "$py" "$plots/plot_series.py" "$dir/run/timeseries.dat" -y alpha_center \
   -o "$h/kept.dat"
 cmp -s "$dir/run/timeseries.dat" "$h/kept.dat" || { echo "-o kept.dat overwrote it"; exit 1; }
+# a column one of several files lacks (a BSSN run has no Theta_L2_R): the file at fault named,
+# exit 2 (it read "no column 'Theta_L2_R'", no file, exit 1)
+for script in plot_series.py plot_horizons.py; do
+  refused "$dir/run/timeseries.dat" "$py" "$plots/$script" "$dir/z4c/timeseries.dat" \
+    "$dir/run/timeseries.dat" -y Theta_L2_R -o "$h/column.png"
+done
+refused "$dir/run/profiles.dat" "$py" "$plots/plot_profiles.py" "$dir/z4c/profiles.dat" \
+  "$dir/run/profiles.dat" -y Theta -o "$h/column.png"
 # --times between blocks: the nearest is drawn, and said; a time that is not a number: exit 2
 "$py" "$plots/plot_profiles.py" "$dir/run/profiles.dat" -y alpha --times 0.123 -o "$dir/near.png" \
   2>"$dir/err"
