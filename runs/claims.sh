@@ -42,8 +42,11 @@ export GBSSN1D_JOBS=$jobs
 [ -f "$z4cdoc" ] && [ -r "$z4cdoc" ] || { echo "claims: --z4c $z4cdoc: no such readable file" >&2; exit 2; }
 py=python3
 [ -x /usr/bin/python3 ] && py=/usr/bin/python3
-out=out/claims
-mkdir -p "$out"
+# every run through runs/lib.sh: a run of the same command and binary that completed is kept (a
+# rebuilt binary redoes them all), one that did not is redone, nothing is deleted before its
+# replacement completed, Ctrl-C stops at once; the timings (boxes_cost.py) are measured afresh
+lib_init runs/claims.sh "$caller" out/claims
+g=build/gbssn1d
 
 # --- the measurements (each once; the claims below read them)
 # Sec. 6.4 and the summary: the CPU time boxes (9 levels) need to reach the error of the sinh
@@ -56,9 +59,62 @@ cost_ratio=$(sed -n 's/^standard boxes, 5 alternating pairs .*: \([0-9.]*\) x si
   "$out/cost.txt")
 # Sec. 7.2 and the summary: the standard gauge's max |M_AH - M| to 100 M on the uniform M/16
 # grid (N = 1280, rmax 80 M, wormhole data, defaults otherwise)
-rm -rf "$out/uniform-m16"
-build/gbssn1d evolve --grid uniform --N 1280 --rmax 80 --tmax 100 --dt-series 0.5 \
-  --dt-profiles 100 --out "$out/uniform-m16" 2>"$out/uniform-m16.log"
+lib_run uniform-m16 $g evolve --grid uniform --N 1280 --rmax 80 --tmax 100 --dt-series 0.5 \
+  --dt-profiles 100 --out @OUT
+
+# The thesis's mechanism (README's answer, study Sec. 13 and 13.1): the hold-scaling table,
+# the published configuration's triples at M/16, M/24, M/32 with h_AH held over each step
+# (quadratic, RK4 stage values, no subcycling), the shrink's and the standard gauge's smooth
+# runs there, and converge's verdicts with a 1 M hold and with h_AH(t) from a file.
+bash runs/hold-scaling.sh "$out/hold-scaling" >"$out/hold-scaling.txt"
+published=(--id maximal-trumpet --grid boxes --levels 7 --rmax 128 --rah-profile rational
+           --rah-width 1 --rah-normal unit --driver-advection upwind-gd --cfl 0.25
+           --dt-series 0.25 --dt-profiles 20)
+for N in 32 48 64; do
+  for v in step:--ah-every=step:--time-interp=quadratic stages:--ah-every=step:--time-interp=rk-stages \
+           nosub:--ah-every=step:--no-subcycling:--time-interp=quadratic \
+           shrink:--rah0=0.6:--time-interp=quadratic standard:--rahA=0:--time-interp=quadratic; do
+    name=${v%%:*} extra=()
+    IFS=: read -r -a words <<<"${v#*:}"
+    for w in "${words[@]}"; do extra+=(${w/=/ }); done
+    [[ $name == shrink ]] && extra+=(--rahA 0.5)
+    [[ $name == standard || $name == shrink ]] || extra+=(--rahA 0.5 --rah0 0.89)
+    lib_run "triple-$name-$N" $g evolve "${published[@]}" --tmax 20 --N $N "${extra[@]}" --out @OUT
+  done
+done
+lib_run verdict-held $g converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
+  --rahA 0.5 --rah0 0.89 --ah-interval 1 --out @OUT
+lib_run verdict-ref192 $g evolve "${published[@]}" --time-interp quadratic --tmax 100 --rahA 0.5 \
+  --rah0 0.89 --N 192 --out @OUT
+# Z4c (README's Z4c paragraph, docs/z4c-study.md Sec. 5, 7, 9): the four long-run set-ups with
+# BSSN, Z4c's default and kappa1 = 0.02 everywhere; the sinh grid at N = 240, 320; the published
+# stretch on uniform grids M/8-M/16 in both formulations
+long=(--tmax 1000 --dt-series 1 --dt-profiles 10000)
+declare -A setups=([st]="--id 1log-trumpet --N 160" [sw]="--id wormhole --N 160"
+  [bt]="--id 1log-trumpet --grid boxes --levels 10 --rmax 2048 --N 64"
+  [bw]="--id wormhole --grid boxes --levels 10 --rmax 2048 --N 64"
+  [st240]="--id 1log-trumpet --N 240" [st320]="--id 1log-trumpet --N 320"
+  [sw240]="--id wormhole --N 240" [sw320]="--id wormhole --N 320")
+for s in "${!setups[@]}"; do
+  for f in bssn default k0.02; do
+    case $f in bssn) extra=() ;; default) extra=(--formulation z4c) ;; k0.02) extra=(--formulation z4c --kappa1-hole 0) ;; esac
+    # shellcheck disable=SC2086 # the set-up's words
+    lib_run "z4c-$s-$f" $g evolve ${setups[$s]} "${long[@]}" "${extra[@]}" --out @OUT
+  done
+done
+for f in bssn z4c; do
+  lib_run "z4c-published-$f" $g converge --N 1600,2400,3200 -j 1 --grid uniform --rmax 200 \
+    --tmax 100 --dt-series 1 --dt-profiles 100 --id 1log-trumpet --formulation $f --rahA 0.5 \
+    --rah0 0.89 --rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd \
+    --out @OUT
+done
+lib_wait
+# the file converge follows is the finished reference's horizon.dat (an input: redone with it)
+lib_check verdict-ref192
+lib_run verdict-file $g converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
+  --rahA 0.5 --rah0 0.89 --rah-hAH-file "$out/verdict-ref192/horizon.dat" --out @OUT
+lib_wait
+lib_check
 m16_error=$($py -c '
 import sys
 cols = None
@@ -70,67 +126,6 @@ for line in open(sys.argv[1]):
         v = float(line.split()[cols.index("M_ah_err")])
         worst = max(worst, abs(v))
 print(f"{worst:.6e}")' "$out/uniform-m16/timeseries.dat")
-
-# The thesis's mechanism (README's answer, study Sec. 13 and 13.1): the hold-scaling table,
-# the published configuration's triples at M/16, M/24, M/32 with h_AH held over each step
-# (quadratic, RK4 stage values, no subcycling), the shrink's and the standard gauge's smooth
-# runs there, and converge's verdicts with a 1 M hold and with h_AH(t) from a file. Every run
-# is made afresh: a folder of an earlier binary is redone (runs/lib.sh).
-GBSSN1D_JOBS=${GBSSN1D_JOBS:-$(nproc)} bash runs/hold-scaling.sh "$out/hold-scaling" >"$out/hold-scaling.txt"
-published=(--id maximal-trumpet --grid boxes --levels 7 --rmax 128 --rah-profile rational
-           --rah-width 1 --rah-normal unit --driver-advection upwind-gd --cfl 0.25
-           --dt-series 0.25 --dt-profiles 20)
-rm -rf "$out/triples"
-mkdir -p "$out/triples"
-for N in 32 48 64; do
-  for v in step:--ah-every=step:--time-interp=quadratic stages:--ah-every=step:--time-interp=rk-stages \
-           nosub:--ah-every=step:--no-subcycling:--time-interp=quadratic \
-           shrink:--rah0=0.6:--time-interp=quadratic standard:--rahA=0:--time-interp=quadratic; do
-    name=${v%%:*} extra=()
-    IFS=: read -r -a words <<<"${v#*:}"
-    for w in "${words[@]}"; do extra+=(${w/=/ }); done
-    [[ $name == shrink ]] && extra+=(--rahA 0.5)
-    [[ $name == standard || $name == shrink ]] || extra+=(--rahA 0.5 --rah0 0.89)
-    build/gbssn1d evolve "${published[@]}" --tmax 20 --N $N "${extra[@]}" \
-      --out "$out/triples/$name-$N" 2>/dev/null &
-    while [ "$(jobs -rp | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; do wait -n || true; done
-  done
-done
-wait || true # a run that failed leaves no timeseries.dat: the measurement below names it
-rm -rf "$out/verdicts"
-mkdir -p "$out/verdicts"
-build/gbssn1d converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
-  --rahA 0.5 --rah0 0.89 --ah-interval 1 --out "$out/verdicts/held" >"$out/verdicts/held.log" 2>&1 || true
-build/gbssn1d evolve "${published[@]}" --time-interp quadratic --tmax 100 --rahA 0.5 --rah0 0.89 --N 192 \
-  --out "$out/verdicts/ref192" 2>/dev/null
-build/gbssn1d converge --N 48,64,96 "${published[@]}" --time-interp quadratic --tmax 100 \
-  --rahA 0.5 --rah0 0.89 --rah-hAH-file "$out/verdicts/ref192/horizon.dat" --out "$out/verdicts/file" \
-  >"$out/verdicts/file.log" 2>&1 || true
-# Z4c (README's Z4c paragraph, docs/z4c-study.md Sec. 5, 7, 9): the four long-run set-ups with
-# BSSN, Z4c's default and kappa1 = 0.02 everywhere; the sinh grid at N = 240, 320; the published
-# stretch on uniform grids M/8-M/16 in both formulations
-rm -rf "$out/z4c"
-mkdir -p "$out/z4c"
-long=(--tmax 1000 --dt-series 1 --dt-profiles 10000)
-declare -A setups=([st]="--id 1log-trumpet --N 160" [sw]="--id wormhole --N 160"
-  [bt]="--id 1log-trumpet --grid boxes --levels 10 --rmax 2048 --N 64"
-  [bw]="--id wormhole --grid boxes --levels 10 --rmax 2048 --N 64"
-  [st240]="--id 1log-trumpet --N 240" [st320]="--id 1log-trumpet --N 320"
-  [sw240]="--id wormhole --N 240" [sw320]="--id wormhole --N 320")
-for s in "${!setups[@]}"; do
-  for f in bssn default k0.02; do
-    case $f in bssn) extra=() ;; default) extra=(--formulation z4c) ;; k0.02) extra=(--formulation z4c --kappa1-hole 0) ;; esac
-    build/gbssn1d evolve ${setups[$s]} "${long[@]}" "${extra[@]}" --out "$out/z4c/$s-$f" 2>/dev/null &
-    while [ "$(jobs -rp | wc -l)" -ge "${GBSSN1D_JOBS:-$(nproc)}" ]; do wait -n || true; done
-  done
-done
-wait || true
-for f in bssn z4c; do
-  build/gbssn1d converge --N 1600,2400,3200 -j "${GBSSN1D_JOBS:-$(nproc)}" --grid uniform --rmax 200 \
-    --tmax 100 --dt-series 1 --dt-profiles 100 --id 1log-trumpet --formulation $f --rahA 0.5 \
-    --rah0 0.89 --rah-profile rational --rah-width 1 --rah-normal unit --driver-advection upwind-gd \
-    --out "$out/z4c/published-$f" >"$out/z4c/published-$f.log" 2>&1 || true
-done
 measured=$out/measured.txt
 $py - "$out" >"$measured" <<'PY'
 import math, os, re, sys
@@ -167,23 +162,23 @@ coarse25 = [pair(0.25, T, 24, 32) for T in (1, 4, 8, 16)]
 coarse50 = [pair(0.5, T, 24, 32) for T in (1, 4, 8, 16)]
 v['coarse25_min'], v['coarse25_max'] = min(coarse25), max(coarse25)
 v['coarse50_min'], v['coarse50_max'] = min(coarse50), max(coarse50)
-tri = os.path.join(out, 'triples')
 for name in ('step', 'stages', 'nosub'):
-    e = [rms(os.path.join(tri, f'{name}-{N}')) for N in (32, 48, 64)]
+    e = [rms(os.path.join(out, f'triple-{name}-{N}')) for N in (32, 48, 64)]
     v[f'{name}_a'], v[f'{name}_b'] = order(e[0], e[1], 32, 48), order(e[1], e[2], 48, 64)
 s = [rows(N=N, cfl=0.25, rahA=0.5, T=1)['rms_H_smooth'][0] for N in (32, 48, 64)]
 v['smooth_a'], v['smooth_b'] = order(s[0], s[1], 32, 48), order(s[1], s[2], 48, 64)
 for k, N in enumerate((32, 48, 64)):
-    v[f'shrink_ratio_{N}'] = rms(os.path.join(tri, f'shrink-{N}')) / rms(os.path.join(tri, f'standard-{N}'))
+    v[f'shrink_ratio_{N}'] = (rms(os.path.join(out, f'triple-shrink-{N}'))
+                              / rms(os.path.join(out, f'triple-standard-{N}')))
 for name in ('held', 'file'):
-    text = open(os.path.join(out, 'verdicts', name, 'convergence.dat')).read()
+    text = open(os.path.join(out, f'verdict-{name}', 'convergence.dat')).read()
     m = re.search(r'\n# verdict: ([a-z -]+?)(:|$)', text, re.M)
     v[f'verdict_{name}'] = m.group(1).strip() if m else 'none'
-    log = open(os.path.join(out, 'verdicts', f'{name}.log')).read()
+    log = open(os.path.join(out, f'verdict-{name}.log')).read()
     m = re.search(r'the lowest over time is (-?[0-9.]+)', log)
     v[f'lowest_{name}'] = float(m.group(1)) if m else float('nan')
 def long_run(name):
-    d = np.genfromtxt(os.path.join(out, 'z4c', name, 'timeseries.dat'), names=True)
+    d = np.genfromtxt(os.path.join(out, f'z4c-{name}', 'timeseries.dat'), names=True)
     m = (d['t'] >= 100) & (d['t'] <= 1000)
     return float(np.sqrt(np.mean(d['H_L2_R'][m] ** 2))), float(np.max(np.abs(d['M_ah_err'][m])))
 for s in ('st', 'sw', 'bt', 'bw', 'st240', 'st320', 'sw240', 'sw320'):
@@ -197,7 +192,7 @@ for s in ('st', 'bt'):
 for s in ('sw', 'bw'):
     v[f'z4c_{s}_default_H_inv'] = 1 / v[f'z4c_{s}_default_H']
 for f in ('bssn', 'z4c'):
-    text = open(os.path.join(out, 'z4c', f'published-{f}', 'convergence.dat')).read()
+    text = open(os.path.join(out, f'z4c-published-{f}', 'convergence.dat')).read()
     cols, rows = None, []
     for line in text.splitlines():
         if line.startswith('# t '):
