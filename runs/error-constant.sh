@@ -3,10 +3,12 @@
 # Sec. 7.4): uniform grid, rmax 128 M, to 100 M, standard gauge; one switch at a time against
 # the defaults, then the resolution near the puncture alone (sinh grids). About 20 s.
 #
-#   bash runs/error-constant.sh          the table of switches (about 20 s)
+#   bash runs/error-constant.sh [table]  the table of switches (about 20 s)
 #   bash runs/error-constant.sh upwind   --upwind lopsided against biased at M/8 ... M/32 on
 #                                        wormhole and trumpet data, and a stretch and a shrink
 #                                        (about 2 minutes; out/error-constant-upwind/)
+#   bash runs/error-constant.sh MODE OUT writes into OUT instead (a relative OUT from where you
+#                                        stand)
 #
 # Output under out/error-constant/, the table on stdout and in out/error-constant/table.txt.
 # A rerun keeps every run that completed with the same command and binary (runs/lib.sh);
@@ -15,14 +17,18 @@ set -euo pipefail
 here=$PWD
 cd "$(dirname "$0")/.."
 source runs/lib.sh
-if [ "${1:-}" = upwind ]; then
-  lib_init runs/error-constant.sh "$here" out/error-constant-upwind
-else
-  lib_init runs/error-constant.sh "$here" out/error-constant
-fi
+mode=${1:-table}
+case $mode in
+upwind) lib_init runs/error-constant.sh "$here" out/error-constant-upwind "${2:-}" ;;
+table) lib_init runs/error-constant.sh "$here" out/error-constant "${2:-}" ;;
+*)
+  echo "runs/error-constant.sh: unknown mode '$mode' (table or upwind; then OUT)" >&2
+  exit 2
+  ;;
+esac
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 py=/usr/bin/python3
-if [ "${1:-}" = upwind ]; then
+if [ "$mode" = upwind ]; then
   queue() { # queue NAME FLAGS...
     local name=$1
     shift

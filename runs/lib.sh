@@ -5,8 +5,11 @@
 #                                     script that makes only scratch output, e.g. runs/claims.sh)
 #   lib_init NAME CALLER OUT_DEFAULT [OUT]
 #                                     resolve OUT against CALLER (the folder the user ran the
-#                                     script from), validate GBSSN1D_JOBS, take
-#                                     OUT's lock, stop at the first Ctrl-C; sets $out, $jobs
+#                                     script from), validate GBSSN1D_JOBS, refuse an OUT that is
+#                                     a link, a file, another command's output (config.toml or
+#                                     summary.dat at its top) or another script's (OUT/.script
+#                                     names the script that made it), take OUT's lock, stop at
+#                                     the first Ctrl-C; sets $out, $jobs
 #   lib_run NAME CMD...               run CMD (a gbssn1d evolve or converge whose --out is written
 #                                     as @OUT) into $out/NAME unless that folder already holds a
 #                                     completed run of the very same command; the new run is made in a
@@ -51,9 +54,24 @@ lib_init() {
     out=$PWD/$default
   fi
   [ ! -L "$out" ] || { echo "$name: $out is a symbolic link: refused (write into a real folder)" >&2; exit 2; }
+  if [ -e "$out" ] && [ ! -d "$out" ]; then
+    echo "$name: $out exists and is not a folder: refused (give another OUT)" >&2
+    exit 2
+  fi
+  # another command's output (a gbssn1d run, study or sweep: its config.toml or summary.dat at
+  # the top), or another script's results: not this script's folder, left as it is
+  if [ -e "$out/config.toml" ] || [ -e "$out/summary.dat" ]; then
+    echo "$name: $out holds another command's output (a gbssn1d run, study or sweep): refused, left as it is (give another OUT)" >&2
+    exit 2
+  fi
+  if [ -f "$out/.script" ] && [ "$(cat "$out/.script")" != "$name" ]; then
+    echo "$name: $out holds the results of $(cat "$out/.script"): refused, left as they are (give another OUT)" >&2
+    exit 2
+  fi
   mkdir -p "$out"
   exec 9>"$out/.lock"
   flock -n 9 || { echo "$name: another run is writing $out (lock $out/.lock)" >&2; exit 1; }
+  [ -f "$out/.script" ] || printf '%s\n' "$name" >"$out/.script"
   trap lib_interrupted INT TERM
 }
 

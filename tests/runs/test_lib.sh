@@ -25,6 +25,7 @@ for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-
     stage=()
     [ $script != z4c.sh ] || stage=(damping)
     [ $script != horizon-coarse.sh ] || stage=(reproduce)
+    [ $script != error-constant.sh ] || stage=(table)
     status=0
     (cd "$dir" && GBSSN1D_JOBS="$jobs" bash "$src/runs/$script" "${stage[@]}" "$target" >"$dir/jobs.out" 2>&1) ||
       status=$?
@@ -165,4 +166,20 @@ status=0
 exec 8>&-
 [ $status -eq 1 ] && grep -q "another run is writing" "$dir/s8.out" || fail "a second writer: exit $status ($(cat "$dir/s8.out"))"
 echo "a symlinked OUT and a second writer are refused"
+
+# 7. an OUT that is a file, another command's output or another script's results: refused with
+# exit 2 naming it, left byte for byte (mkdir failed with exit 1 on a file; a run's folder was
+# written into)
+printf 'notes\n' >"$dir/work/afile"
+"$gbssn1d" evolve --id 1log-trumpet --grid uniform --N 32 --rmax 8 --tmax 0.5 --out "$dir/work/arun" 2>/dev/null
+mkdir -p "$dir/work/other" && printf 'runs/other.sh\n' >"$dir/work/other/.script"
+for target in afile arun other; do
+  before=$(cd "$dir/work" && find "$target" -type f -exec sha256sum {} + | sort)
+  status=0
+  (cd "$dir/work" && bash "$dir/study.sh" "$target" >"$dir/s9.out" 2>&1) || status=$?
+  [ $status -eq 2 ] && grep -q "$target" "$dir/s9.out" || fail "OUT $target: exit $status ($(cat "$dir/s9.out"))"
+  [ "$(cd "$dir/work" && find "$target" -type f -exec sha256sum {} + | sort)" = "$before" ] || fail "OUT $target was changed"
+done
+grep -q "holds the results of runs/other.sh" "$dir/s9.out" || fail "another script's OUT: $(cat "$dir/s9.out")"
+echo "an OUT that is a file, another command's run or another script's results is refused"
 echo "runs/lib.sh: every case as documented"
