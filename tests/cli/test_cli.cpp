@@ -3,6 +3,7 @@
 #include "cli_support.hpp"
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
+#include "config/param_rules.hpp"
 #include "config/params.hpp"
 
 #include <fmt/format.h>
@@ -288,6 +289,56 @@ TEST_CASE("the Gamma-driver damping limit: eta dt = 2.7 runs, 2.8 is refused as 
   fs::remove_all(out);
   check_refused(grid.substr(0, grid.find("--tmax")) + "--eta " + std::to_string(2.8 / 1.25),
                 "--cfl");
+}
+
+// Guards Z4c's damping limit (config/validate.cpp): Theta decays at the rate
+// alpha kappa1 (2 + kappa2) ((Z3), Sec. 17; at most kappa1 max(2, 2 + kappa2), alpha <= 1), and
+// RK4 is stable for a decay rate times the step below eta_dt_max, the Gamma-driver's limit (the
+// test above). A limit twice as loose let --kappa1 200 run on the default grid (limit 139), which
+// then left the physical range at t = 0.32. The boundary here is computed from the step the run
+// takes, dt = cfl x the smallest cell of the grid the flags give (time_step, as validate() does),
+// on the default sinh grid (dt = 0.01) and a coarse uniform one (dt = 1.25), and kappa1 is put
+// 0.1% either side of it; with kappa2 = 1 it is kappa2 that makes the rate too fast, and named.
+TEST_CASE("Z4c's damping limit: kappa1 (2 + kappa2) dt just inside RK4's limit runs, just "
+          "beyond it is refused, naming the flag") {
+  auto amplification = [](double z) {
+    return 1 - z + z * z / 2 - z * z * z / 6 + z * z * z * z / 24;
+  };
+  REQUIRE(std::abs(amplification(gbssn1d::eta_dt_max * 1.001)) < 1.0); // inside RK4's region
+  struct Case {
+    std::string flags;
+    gbssn1d::Params p;
+  };
+  gbssn1d::Params coarse;
+  coarse.grid = gbssn1d::RadialGrid::uniform;
+  coarse.N = 20;
+  coarse.rmax = 100.0;
+  coarse.cfl = 0.25;
+  for (const auto& [flags, p] : {Case{"", gbssn1d::Params{}},
+                                 Case{"--grid uniform --N 20 --rmax 100 --cfl 0.25 ", coarse}}) {
+    const double dt = gbssn1d::time_step(p.cfl, gbssn1d::make_grid(gbssn1d::grid_spec(p)));
+    for (const double kappa2 : {0.0, 1.0}) {
+      const double limit = gbssn1d::eta_dt_max / (std::max(2.0, 2.0 + kappa2) * dt);
+      const std::string z4c =
+          flags + fmt::format("--formulation z4c --kappa1-hole 0 --kappa2 {} --kappa1 ", kappa2);
+      INFO(z4c << "...: dt = " << dt << ", kappa1 at most " << limit);
+      const fs::path out = scratch("kappa1_limit");
+      const Result inside = run("evolve --tmax 0 " + z4c + fmt::format("{:.17g}", 0.999 * limit)
+                                + " --out " + out.string());
+      INFO("inside: " << inside.err);
+      CHECK(inside.status == 0);
+      fs::remove_all(out);
+      const Result beyond = run("evolve --tmax 0 " + z4c + fmt::format("{:.17g}", 1.001 * limit)
+                                + " --out " + out.string());
+      INFO("beyond: " << beyond.err);
+      CHECK(beyond.status == 2);
+      CHECK(count_lines(beyond.err) == 1);
+      CHECK(beyond.err.find(kappa2 > 0.0 ? "--kappa2" : "--kappa1") != std::string::npos);
+      CHECK(beyond.err.find("RK4 limit of the constraint damping") != std::string::npos);
+      CHECK_FALSE(fs::exists(out));
+      fs::remove_all(out);
+    }
+  }
 }
 
 // CLI11 and strtol read "032" as octal 26; the one number reader reads decimal everywhere, so

@@ -16,12 +16,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace gbssn1d::testing;
@@ -444,6 +447,73 @@ TEST_CASE("resume checks the checkpoint and every file before it changes any: co
   fs::rename(dir / "profiles.moved", dir / "profiles.dat");
   // and with everything in place the run continues
   CHECK(run("resume " + dir.string() + " --tmax 6").status == 0);
+  fs::remove_all(dir);
+}
+
+// Guards the flag bytes of checkpoint.bin (evolution/checkpoint.cpp): each is 0 or 1, and resume
+// refuses any other value as a corrupt checkpoint, naming the flag, before it changes anything.
+// The byte is set with the checksum made valid again (patched), as only a deliberate edit or a
+// bug could: the checksum alone would refuse a byte flipped by accident. A flag of 2 was read as
+// 0 (a held h_AH dropped) and the run resumed; only the readers' fuzzer, outside ctest, tried it.
+// A single grid's flags: h_AH's, the horizon's and the report's after the output counters, and
+// the shared h_AH's after the states (format 4; a single grid has no level h_AH flags, which the
+// reader's test in tests/evolution/test_evolution.cpp covers with the rest).
+TEST_CASE("resume refuses a checkpoint whose flag byte is neither 0 nor 1, naming the flag, and "
+          "leaves the run as it was") {
+  const fs::path dir = scratch("resume_flag_bytes");
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --N 64 --rmax 20 --tmax 2 --rahA 0.5 "
+              "--rah0 1 --checkpoint-every 1 --out "
+              + dir.string())
+              .status
+          == 0);
+  const std::string good = slurp(dir / "checkpoint.bin");
+  const std::string magic = "gbssn1d checkpoint 4\n";
+  REQUIRE(good.rfind(magic, 0) == 0);
+  auto u64_at = [&](std::size_t at) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, good.data() + at, 8);
+    return v;
+  };
+  const std::size_t t_at = magic.size() + 8 + u64_at(magic.size()) + 8;
+  const std::size_t h_AH_at = t_at + 8 + 8 + 8 + 8; // after t, dt and the two output counters
+  const std::size_t state_at = h_AH_at + 1 + 8 + 1 + 1 + 8 + 9 * 8; // RHS count, marks, hashes
+  const std::size_t finer_at = state_at + 8 + 8 * u64_at(state_at);
+  REQUIRE(u64_at(finer_at) == 0); // a single grid: no finer levels
+  const std::size_t levels_at = finer_at + 8, n_levels = u64_at(levels_at);
+  std::vector<std::pair<std::size_t, std::string>> flags{
+      {h_AH_at, "h_AH flag"}, {h_AH_at + 9, "horizon flag"}, {h_AH_at + 10, "report flag"}};
+  for (std::size_t l = 0; l < n_levels; ++l)
+    flags.emplace_back(levels_at + 8 + 9 * l, "level h_AH flag");
+  flags.emplace_back(levels_at + 8 + 9 * n_levels, "shared h_AH flag");
+  // the run found its horizon and reported it: flags of both values are among these
+  CHECK(good[h_AH_at] == 1);
+  CHECK(good[h_AH_at + 9] == 1);
+  // each case starts from the run as it ended (a checkpoint wrongly accepted resumes the run)
+  const auto ended = folder(dir);
+  auto restore = [&](const std::string& checkpoint) {
+    for (const auto& e : fs::directory_iterator(dir))
+      if (ended.count(e.path().filename().string()) == 0)
+        fs::remove_all(e.path());
+    for (const auto& [name, bytes] : ended)
+      std::ofstream(dir / name, std::ios::binary | std::ios::trunc) << bytes;
+    std::ofstream(dir / "checkpoint.bin", std::ios::binary | std::ios::trunc) << checkpoint;
+  };
+  for (const auto& [at, what] : flags) {
+    REQUIRE((good[at] == 0 || good[at] == 1));
+    for (const unsigned char value : std::initializer_list<unsigned char>{2, 3, 128, 255}) {
+      restore(patched(good, at, &value, 1));
+      const auto before = folder(dir);
+      const Result r = run("resume " + dir.string() + " --tmax 3");
+      INFO(what << " = " << int{value} << ": " << r.err);
+      CHECK(r.status == 2);
+      CHECK(r.err.find("is corrupt (" + what + ")") != std::string::npos);
+      CHECK(r.err.find("DIR") != std::string::npos);
+      CHECK(folder(dir) == before);
+    }
+  }
+  // as written it resumes
+  restore(good);
+  CHECK(run("resume " + dir.string() + " --tmax 3").status == 0);
   fs::remove_all(dir);
 }
 

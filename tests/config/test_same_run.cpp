@@ -304,3 +304,30 @@ TEST_CASE("rule values are recorded as such in config.toml and read back as unse
   for (const auto& d : {z, b, m})
     fs::remove_all(d);
 }
+
+// Guards --z4c-lapse-adm's row of the table (Acts::with_z4c, config/flag_table.cpp): Theta is
+// driven by H ((I3), Sec. 17) whether or not it is damped, so the lapse driven by K-hat + 2 Theta
+// is another lapse than the one driven by K-hat in every Z4c run, undamped ones too. Called idle
+// without damping (as --kappa2 rightly is), two different undamped runs would share a run key,
+// the flag would be warned about as doing nothing, and left out of the effective configuration.
+TEST_CASE("--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and "
+          "numbers, idle in BSSN alone") {
+  const std::string undamped = trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0";
+  const Params base = resolved(undamped), with = resolved(undamped + " --z4c-lapse-adm");
+  CHECK(idle_names(with).count("z4c-lapse-adm") == 0);
+  CHECK(idle_names(with) == idle_names(base));
+  const auto w = warnings(with);
+  CHECK(std::none_of(w.begin(), w.end(), [](const std::string& s) {
+    return s.find("--z4c-lapse-adm") != std::string::npos;
+  }));
+  CHECK(run_key(with) != run_key(base));
+  CHECK(config_text(effective(with)).find("z4c-lapse-adm = true") != std::string::npos);
+  CHECK(config_text(effective(base)).find("z4c-lapse-adm = false") != std::string::npos);
+  CHECK(numbers_of(undamped + " --z4c-lapse-adm", "adm_a") != numbers_of(undamped, "adm_b"));
+  // with damping it acts too, and in BSSN it is idle: there is no Theta
+  CHECK(idle_names(resolved(trumpet + " --formulation z4c --z4c-lapse-adm")).count("z4c-lapse-adm")
+        == 0);
+  const Params bssn = resolved(trumpet), bssn_with = resolved(trumpet + " --z4c-lapse-adm");
+  CHECK(idle_names(bssn_with).count("z4c-lapse-adm") == 1);
+  CHECK(run_key(bssn_with) == run_key(bssn));
+}

@@ -21,13 +21,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
+#include <string>
 #include <tuple>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
@@ -474,6 +478,111 @@ TEST_CASE("a checkpoint whose states are empty goes through the file format unch
   REQUIRE(read.history[1].size() == 1);
   CHECK(read.history[1][0].t == 0.5);
   CHECK(read.history[1][0].u.empty());
+}
+
+// Guards the flag bytes of the checkpoint format (evolution/checkpoint.cpp, read_checkpoint):
+// each of h_AH's, the horizon's, the report's, every level's h_AH and the shared h_AH is 0 or 1,
+// and any other value is refused as corruption, naming the flag. The checksum catches a byte
+// changed by accident, so the byte is set here and the checksum (FNV-1a over every byte before
+// it, as tests/fuzz/readers_fuzz.py recomputes it) made valid again: only the flag check can
+// refuse the file. A flag byte of 2 was accepted (read as 0) with only the fuzzer, outside
+// ctest, trying it. Each flag's offset is found as the one byte in which the file with that flag
+// set differs from the file with every flag clear (an optional's value is written 0 when unset).
+TEST_CASE("a checkpoint's flag bytes: 0 and 1 read back, any other value is refused as corrupt, "
+          "naming the flag") {
+  Checkpoint clear;
+  clear.config = "N = 100\n";
+  clear.step = 3;
+  clear.u.assign(12, 0.25);
+  clear.finer.assign(2, State(12, 0.5));
+  clear.level_h_AH.assign(3, std::nullopt);
+  const std::filesystem::path file = gbssn1d::testing::scratch("flag_bytes_checkpoint.bin");
+  auto bytes_of = [&](const Checkpoint& c) {
+    write_checkpoint(file, c);
+    return gbssn1d::testing::slurp(file);
+  };
+  const std::string base = bytes_of(clear);
+  auto file_with = [&](const std::string& bytes) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    return file;
+  };
+  // FNV-1a 64, the checksum, from its definition
+  auto fnv1a_64 = [](const std::string& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const unsigned char c : bytes)
+      h = (h ^ c) * 0x100000001b3ull;
+    return h;
+  };
+  struct Flag {
+    std::string what;
+    std::function<void(Checkpoint&)> set;
+    std::function<bool(const Checkpoint&)> read;
+  };
+  const std::vector<Flag> flags{
+      {"h_AH flag", [](Checkpoint& c) { c.h_AH = 0.0; },
+       [](const Checkpoint& c) { return c.h_AH.has_value(); }},
+      {"horizon flag", [](Checkpoint& c) { c.had_horizon = true; },
+       [](const Checkpoint& c) { return c.had_horizon; }},
+      {"report flag", [](Checkpoint& c) { c.reported = true; },
+       [](const Checkpoint& c) { return c.reported; }},
+      {"level h_AH flag", [](Checkpoint& c) { c.level_h_AH[0] = 0.0; },
+       [](const Checkpoint& c) { return c.level_h_AH[0].has_value(); }},
+      {"level h_AH flag", [](Checkpoint& c) { c.level_h_AH[2] = 0.0; },
+       [](const Checkpoint& c) { return c.level_h_AH[2].has_value(); }},
+      {"shared h_AH flag", [](Checkpoint& c) { c.shared_h_AH = 0.0; },
+       [](const Checkpoint& c) { return c.shared_h_AH.has_value(); }},
+  };
+  std::vector<std::size_t> offsets;
+  for (const Flag& f : flags) {
+    INFO(f.what);
+    Checkpoint set = clear;
+    f.set(set);
+    const std::string bytes = bytes_of(set);
+    REQUIRE(bytes.size() == base.size());
+    std::vector<std::size_t> differ;
+    for (std::size_t k = 0; k + 8 < bytes.size(); ++k) // the checksum aside
+      if (bytes[k] != base[k])
+        differ.push_back(k);
+    REQUIRE(differ.size() == 1);
+    const std::size_t at = differ[0];
+    CHECK(std::find(offsets.begin(), offsets.end(), at) == offsets.end());
+    offsets.push_back(at);
+    REQUIRE(static_cast<unsigned char>(bytes[at]) == 1);
+    // as written, 0 and 1 read back
+    CHECK_FALSE(f.read(read_checkpoint(file_with(base))));
+    CHECK(f.read(read_checkpoint(file_with(bytes))));
+    // every other value is refused as corrupt, naming the flag, with a valid checksum (the
+    // flag and the checksum rewritten in place: truncating the file each time cost 3 ms a value)
+    file_with(base);
+    std::vector<int> not_refused;
+    for (int v = 2; v < 256; ++v) {
+      std::string bad = base;
+      bad[at] = static_cast<char>(v);
+      const std::uint64_t h = fnv1a_64(bad.substr(0, bad.size() - 8));
+      {
+        std::fstream out(file, std::ios::binary | std::ios::in | std::ios::out);
+        out.seekp(static_cast<std::streamoff>(at));
+        out.put(bad[at]);
+        out.seekp(static_cast<std::streamoff>(bad.size() - 8));
+        out.write(reinterpret_cast<const char*>(&h), 8);
+      }
+      try {
+        read_checkpoint(file);
+        not_refused.push_back(v);
+      } catch (const CheckpointError& e) {
+        const std::string message = e.what();
+        if (message != file.string() + " is corrupt (" + f.what + ")")
+          not_refused.push_back(v);
+      }
+    }
+    std::string listed;
+    for (const int v : not_refused)
+      listed += " " + std::to_string(v);
+    INFO("values not refused as \"" << file.string() << " is corrupt (" << f.what
+                                    << ")\":" << listed);
+    CHECK(not_refused.empty());
+  }
+  std::filesystem::remove(file);
 }
 
 // The check after every step (check_physical_range): its vectorised count lets a level pass

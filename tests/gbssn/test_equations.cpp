@@ -172,3 +172,40 @@ TEST_CASE("gauge: mu_L and xi enter (G1) and (G2) as written") {
   CHECK(standard.speed(Wave::shift) == 1.0);
   CHECK(standard.speed(Wave::light) == 1.0);
 }
+
+// (G1) of Sec. 17 with --z4c-lapse-adm (Z4cParams::lapse_adm_K): the lapse driven by the ADM
+// trace K = K-hat + 2 Theta, d_t alpha = [beta alpha'] - 2 alpha (K-hat + 2 Theta), BSSN's
+// slicing; without it by K-hat alone, d_t alpha = [beta alpha'] - 2 alpha K-hat. The expected
+// values are written out here from the reference rows' fields (Theta from 5e-4 to 5e-2 there),
+// not taken from the code's gauge functions, so that Theta's weight 2 is checked: the point-wise
+// test above runs with the flag off, and a lapse driven by K-hat + Theta passed every test. The
+// flag changes alpha's row and no other.
+TEST_CASE("Z4c: --z4c-lapse-adm drives the lapse by K-hat + 2 Theta, without it by K-hat") {
+  const auto t = read_table(std::string(GBSSN1D_TEST_DATA_DIR) + "/pointwise_reference_z4c.dat");
+  REQUIRE(t.rows.size() >= 8);
+  for (std::size_t row = 0; row < t.rows.size(); ++row) {
+    const PointData p = point_from_row(t, row, Formulation::z4c);
+    const double r = p.r, theta = p.f[Var::Theta];
+    REQUIRE(std::abs(theta) > 1e-4); // Theta's term is not lost in the tolerance
+    const Z4cParams khat{t.at(row, "kappa1"), t.at(row, "kappa2"), false, 0.0};
+    const Z4cParams adm{t.at(row, "kappa1"), t.at(row, "kappa2"), true, 0.0};
+    for (const bool advective : {false, true}) {
+      Gauge gauge;
+      gauge.shift.eta = t.at(row, "eta");
+      gauge.slicing.advective = advective;
+      const double advection = advective ? p.f[Var::beta] * p.d[Var::alpha] : 0.0;
+      const Rhs by_khat = Z4c{khat}.rhs(p, gauge, full_shift(p));
+      const Rhs by_adm = Z4c{adm}.rhs(p, gauge, full_shift(p));
+      const std::string form = advective ? " (advective)" : " (non-advective)";
+      check(by_khat[Var::alpha], advection - 2.0 * p.f[Var::alpha] * p.f[Var::K],
+            "alpha driven by K-hat" + form, r);
+      check(by_adm[Var::alpha], advection - 2.0 * p.f[Var::alpha] * (p.f[Var::K] + 2.0 * theta),
+            "alpha driven by K-hat + 2 Theta" + form, r);
+      for (const auto& e : evolved(Formulation::z4c))
+        if (e.var != Var::alpha) {
+          INFO(e.name << " at r = " << r << form);
+          CHECK(by_adm[e.var] == by_khat[e.var]);
+        }
+    }
+  }
+}
