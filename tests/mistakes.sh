@@ -176,6 +176,13 @@ mistakes=(
   "boxes' extrapolated h_AH with first-level divided differences throughout|src/evolution/horizon_tracker.cpp| / (h[j][0] - h[j - level][0]);| / (h[j][0] - h[j - 1][0]);|boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a horizon moving as a cubic in t"
   "diagnostic rows: the constraints never computed (the finder's instance for every call)|src/gbssn/diagnostic_rows.cpp|diagnostic_rows_at<p, formulation, true>(|diagnostic_rows_at<p, formulation, false>(|diagnostic rows agree with the constraints and expansion computed point by point, and the finder's rows without the constraints with them"
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
+  "Z4c's ADM-K lapse driven by K-hat + Theta|src/gbssn/z4c.hpp|lapse_theta(p.lapse_adm_K ? 2.0 : 0.0)|lapse_theta(p.lapse_adm_K ? 1.0 : 0.0)|Z4c: --z4c-lapse-adm drives the lapse by K-hat + 2 Theta, without it by K-hat"
+  "--z4c-lapse-adm's table row: idle without damping|src/config/flag_table.cpp|\"slicing) instead of K-hat\",\n       Acts::with_z4c},|\"slicing) instead of K-hat\",\n       Acts::with_z4c_damping},|--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and numbers, idle in BSSN alone"
+  "Z4c's damping limit twice as loose|src/config/validate.cpp|rate * dt_finest > eta_dt_max)|rate * dt_finest > 2.0 * eta_dt_max)|Z4c's damping limit: kappa1 (2 + kappa2) dt just inside RK4's limit runs, just beyond it is refused, naming the flag"
+  "a checkpoint's flag byte of 2 accepted|src/evolution/checkpoint.cpp|    if (v > 1)|    if (v > 2)|a checkpoint's flag bytes: 0 and 1 read back, any other value is refused as corrupt, naming the flag;resume refuses a checkpoint whose flag byte is neither 0 nor 1, naming the flag, and leaves the run as it was"
+  "the horizon's root tolerance divided by dx/dr|src/horizon/apparent_horizon.cpp|params.tolerance * grid.inv_dr_dx()|params.tolerance / grid.inv_dr_dx()|--ah-tol bounds the error of the horizon's radius in r, on the sinh and the uniform grid"
+  "the maximal trumpet's puncture series from u = 1e-7|src/initial_data/maximal_trumpet.cpp|  if (ln_u_small < std::log(1e-17))|  if (ln_u_small < std::log(1e-7))|MaximalTrumpet near the puncture: alpha, R and the initial data's fields to round-off across the switch to the puncture limit"
+  "the start's pilot interpolating one node off centre|src/evolution/horizon_tracker.cpp|(after - nodes.begin()) - 2, 0, last_start)|(after - nodes.begin()) - 1, 0, last_start)|the start's pilot: h_AH between the pilot's radii is the cubic through the two radii before t and the two after"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
@@ -246,7 +253,8 @@ problem() {
 # 2026-11-28, build stage 302 s), so that CI stays under 25 minutes on a slow host too.
 whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
                "the published driver stencil as the default again"
-               "driver-full-shift a no-op" "--force keeps the earlier run's checkpoint")
+               "driver-full-shift a no-op" "--force keeps the earlier run's checkpoint"
+               "Z4c's ADM-K lapse driven by K-hat + Theta")
 if [ -n "$only" ]; then
   selected=()
   for m in "${mistakes[@]}"; do
