@@ -59,12 +59,12 @@ lib_init() {
 
 lib_interrupted() {
   trap '' INT TERM
-  local pids pid
-  pids=$(jobs -p)
-  # each run's subshell and the gbssn1d it waits for (a signal sent to this script alone, not
-  # to the terminal's process group, reaches neither)
-  for pid in $pids; do
-    pkill -TERM -P "$pid" 2>/dev/null || true
+  local pid
+  # each run's subshell (a signal sent to this script alone, not to the terminal's process
+  # group, reaches neither it nor its gbssn1d): it passes the signal on to its gbssn1d and
+  # returns only when that has ended (a sweep stopping its members takes a moment), so that
+  # nothing is left running once this script has exited
+  for pid in $(jobs -p); do
     kill -TERM "$pid" 2>/dev/null || true
   done
   wait 2>/dev/null || true
@@ -126,10 +126,25 @@ lib_run() {
   fi
   while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
   (
-    trap - INT TERM
+    # a signal (lib_interrupted's TERM, or the terminal's Ctrl-C) is passed on to the program,
+    # which stops as an interrupted run does, and waited for; nothing is moved into place then
+    stopping="" child="" grandchildren=""
+    trap 'stopping=yes; lib_stop_child' INT TERM
     rm -rf "${out:?}/.new-$name"
+    [ -z "$stopping" ] || exit 130
+    "${cmd[@]}" >"$out/$name.log" 2>&1 &
+    child=$!
+    [ -z "$stopping" ] || lib_stop_child
     status=0
-    "${cmd[@]}" >"$out/$name.log" 2>&1 || status=$?
+    wait "$child" || status=$?
+    # (a wait cut short by the signal: the program is still stopping)
+    while [ -n "$(jobs -rp)" ]; do status=0; wait "$child" || status=$?; done
+    if [ -n "$stopping" ]; then
+      for pid in $grandchildren; do
+        while kill -0 "$pid" 2>/dev/null; do sleep 0.05; done
+      done
+      exit 130
+    fi
     case $status in 0 | 3 | 4 | 5 | 6) ;; *) status_ok=no ;; esac
     if [ "${status_ok:-yes}" = yes ] && { [ $status -le 3 ] || [ -f "$out/.new-$name/convergence.dat" ]; } &&
       lib_complete "$out/.new-$name"; then
@@ -143,6 +158,16 @@ lib_run() {
       echo "  $name: exit $status, see $out/$name.log (kept in $out/.new-$name; redone on a rerun)" >&2
     fi
   ) &
+}
+
+# (in a run's subshell) TERM to its program and to that program's own children: a wrapper such
+# as /usr/bin/time passes no signal on; they are waited for before the subshell ends
+lib_stop_child() {
+  [ -n "$child" ] || return 0
+  local pid
+  grandchildren+=" $(pgrep -P "$child" || true)"
+  kill -TERM "$child" 2>/dev/null || true
+  for pid in $grandchildren; do kill -TERM "$pid" 2>/dev/null || true; done
 }
 
 lib_names=()

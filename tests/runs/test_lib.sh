@@ -9,7 +9,8 @@
 #   - one SIGINT (or TERM) stops the script with exit 130, leaves no gbssn1d running and keeps
 #     what completed; the interrupted run is redone on the rerun;
 #   - a relative OUT is resolved against the caller's folder; a symlinked OUT and a second writer
-#     are refused.
+#     are refused;
+#   - an interrupted script returns only when its programs have stopped.
 set -euo pipefail
 gbssn1d=$1 src=$2 dir=$3
 rm -rf "$dir" && mkdir -p "$dir"
@@ -165,4 +166,28 @@ status=0
 exec 8>&-
 [ $status -eq 1 ] && grep -q "another run is writing" "$dir/s8.out" || fail "a second writer: exit $status ($(cat "$dir/s8.out"))"
 echo "a symlinked OUT and a second writer are refused"
+
+# 7. an interrupted script returns only when its programs have stopped: one that takes a second
+# to stop (as a sweep stopping its members) is not left running
+printf '%s\n' '#!/usr/bin/env bash' 'mkdir -p "$2"' "trap 'sleep 1; exit 143' TERM" 'sleep 60 &' 'wait' \
+  >"$dir/slowstop"
+chmod +x "$dir/slowstop"
+cat >"$dir/slow.sh" <<EOF_SLOW
+#!/usr/bin/env bash
+set -euo pipefail
+source "$src/runs/lib.sh"
+lib_init slow.sh "\$PWD" slowout
+lib_run s "$dir/slowstop" --out @OUT
+lib_wait
+EOF_SLOW
+(cd "$dir" && exec bash "$dir/slow.sh" >"$dir/w1.out" 2>&1) &
+pid=$!
+for _ in $(seq 50); do [ -d "$dir/slowout/.new-s" ] && break; sleep 0.1; done
+sleep 0.2
+kill -INT "$pid"
+status=0
+wait "$pid" || status=$?
+[ $status -eq 130 ] || fail "a slow stop: exit $status, expected 130 ($(cat "$dir/w1.out"))"
+! pgrep -f -- "$dir/slowstop" >/dev/null || fail "the script ended before its program had stopped"
+echo "an interrupted script returns only when its programs have stopped"
 echo "runs/lib.sh: every case as documented"
