@@ -10,7 +10,9 @@
 #     what completed; the interrupted run is redone on the rerun;
 #   - a relative OUT is resolved against the caller's folder; a symlinked OUT and a second writer
 #     are refused;
-#   - an interrupted script returns only when its programs have stopped.
+#   - an interrupted script returns only when its programs have stopped; a sweep (here in a
+#     subfolder) is kept also with another GBSSN1D_JOBS; a command of another program
+#     (lib_run_any) counts when it exited 0.
 set -euo pipefail
 gbssn1d=$1 src=$2 dir=$3
 rm -rf "$dir" && mkdir -p "$dir"
@@ -190,4 +192,42 @@ wait "$pid" || status=$?
 [ $status -eq 130 ] || fail "a slow stop: exit $status, expected 130 ($(cat "$dir/w1.out"))"
 ! pgrep -f -- "$dir/slowstop" >/dev/null || fail "the script ended before its program had stopped"
 echo "an interrupted script returns only when its programs have stopped"
+
+# a sweep into a subfolder (NAME part/s) is kept, also with another GBSSN1D_JOBS (its -j); a
+# command of another program (lib_run_any) is complete when it exited 0
+printf '%s\n' '#!/usr/bin/env bash' 'mkdir -p "$2" && echo measured >"$2/m.txt" && exit "${FAIL:-0}"' \
+  >"$dir/measure"
+chmod +x "$dir/measure"
+cat >"$dir/sub.sh" <<EOF_SUB
+#!/usr/bin/env bash
+set -euo pipefail
+source "$src/runs/lib.sh"
+lib_init sub.sh "\$PWD" subout
+lib_run part/s $gbssn1d sweep -j "\$jobs" --out @OUT --sweep N=32,48 --id 1log-trumpet \\
+  --grid uniform --rmax 20 --tmax 2 --dt-series 0.5 --dt-profiles 2
+lib_run_any m "$dir/measure" --out @OUT
+lib_wait
+lib_check
+EOF_SUB
+sub=$dir/subout
+(cd "$dir" && GBSSN1D_JOBS=1 bash "$dir/sub.sh" >"$dir/u1.out" 2>&1) || fail "a sweep in a subfolder: $(cat "$dir/u1.out")"
+[ -f "$sub/part/s/summary.dat" ] && [ -f "$sub/part/s.cmd" ] && [ -f "$sub/part/s.log" ] &&
+  [ ! -e "$sub/part/.new-s" ] && [ ! -e "$sub/.new-part" ] || fail "the sweep is not in place in $sub/part"
+[ -f "$sub/m/m.txt" ] && [ -f "$sub/m/.lib-complete" ] || fail "lib_run_any's folder is not in place"
+touch -d '2000-01-01' "$sub/part/s.log" "$sub/m.log"
+(cd "$dir" && GBSSN1D_JOBS=2 bash "$dir/sub.sh" >"$dir/u2.out" 2>&1) || fail "its rerun: $(cat "$dir/u2.out")"
+[ "$(date -r "$sub/part/s.log" +%Y)" = 2000 ] || fail "another GBSSN1D_JOBS redid a completed sweep"
+[ "$(date -r "$sub/m.log" +%Y)" = 2000 ] || fail "a completed lib_run_any was redone"
+# a sweep in place whose summary lists a member not run (missing) is not complete: redone
+sed -i '0,/^32 ok /s//32 missing /' "$sub/part/s/summary.dat"
+grep -q '^32 missing ' "$sub/part/s/summary.dat" || fail "no row of N = 32 in $sub/part/s/summary.dat"
+(cd "$dir" && bash "$dir/sub.sh" >"$dir/u4.out" 2>&1) || fail "a rerun of an incomplete sweep: $(cat "$dir/u4.out")"
+[ "$(date -r "$sub/part/s.log" +%Y)" != 2000 ] && ! grep -q ' missing ' "$sub/part/s/summary.dat" ||
+  fail "a sweep with a member missing was kept as complete"
+rm -rf "${sub:?}/m" "$sub/m.cmd"
+status=0
+(cd "$dir" && FAIL=1 bash "$dir/sub.sh" >"$dir/u3.out" 2>&1) || status=$?
+[ $status -eq 1 ] && grep -q "did not complete (m)" "$dir/u3.out" && [ ! -e "$sub/m" ] ||
+  fail "a failed lib_run_any: exit $status ($(cat "$dir/u3.out"))"
+echo "a sweep in a subfolder is kept, also with another GBSSN1D_JOBS; lib_run_any as documented"
 echo "runs/lib.sh: every case as documented"
