@@ -12,7 +12,9 @@
 #     are refused;
 #   - an interrupted script returns only when its programs have stopped; a sweep (here in a
 #     subfolder) is kept also with another GBSSN1D_JOBS; a command of another program
-#     (lib_run_any) counts when it exited 0.
+#     (lib_run_any) counts when it exited 0;
+#   - runs/horizon-robustness.sh (sweeps) interrupted and run again: exit 130, one line,
+#     nothing left running, the finished sweep kept, the interrupted one resumed.
 set -euo pipefail
 gbssn1d=$1 src=$2 dir=$3
 rm -rf "$dir" && mkdir -p "$dir"
@@ -22,12 +24,16 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-boundary.sh \
   horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
   boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
-  horizon-coarse.sh error-constant.sh; do
+  horizon-coarse.sh error-constant.sh horizon-experiments.sh horizon-robustness.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
-    stage=()
-    [ $script != z4c.sh ] || stage=(damping)
-    [ $script != horizon-coarse.sh ] || stage=(reproduce)
+    # the argument a script takes before OUT (a stage, a tmax)
+    case $script in
+    z4c.sh) stage=(damping) ;;
+    horizon-coarse.sh) stage=(reproduce) ;;
+    horizon-robustness.sh) stage=(1) ;;
+    *) stage=() ;;
+    esac
     status=0
     (cd "$dir" && GBSSN1D_JOBS="$jobs" bash "$src/runs/$script" "${stage[@]}" "$target" >"$dir/jobs.out" 2>&1) ||
       status=$?
@@ -230,4 +236,36 @@ status=0
 [ $status -eq 1 ] && grep -q "did not complete (m)" "$dir/u3.out" && [ ! -e "$sub/m" ] ||
   fail "a failed lib_run_any: exit $status ($(cat "$dir/u3.out"))"
 echo "a sweep in a subfolder is kept, also with another GBSSN1D_JOBS; lib_run_any as documented"
+
+# 8. a sweep-based script (runs/horizon-robustness.sh, to t = 2 M), interrupted in its second
+# sweep: exit 130, one line, nothing left running, the finished sweep and members kept; the
+# rerun (with another GBSSN1D_JOBS) resumes the interrupted sweep and makes the tables
+rob=$dir/work/rob
+(cd "$dir/work" && exec env GBSSN1D_JOBS=1 bash "$src/runs/horizon-robustness.sh" 2 rob >"$dir/r1.out" 2>&1) &
+pid=$!
+for _ in $(seq 1200); do
+  [ -f "$rob/uniform.cmd" ] && grep -l -s '^ok ' "$rob/.new-default-grid/logs/"*.status >/dev/null && break
+  kill -0 "$pid" 2>/dev/null ||
+    fail "horizon-robustness.sh ended before its second sweep had run a member ($(cat "$dir/r1.out"))"
+  sleep 0.05
+done
+kill -INT "$pid"
+status=0
+wait "$pid" || status=$?
+[ $status -eq 130 ] || fail "horizon-robustness.sh interrupted: exit $status ($(cat "$dir/r1.out"))"
+[ "$(wc -l <"$dir/r1.out")" -eq 1 ] && grep -q "interrupted.*kept.*run the same command again" "$dir/r1.out" ||
+  fail "horizon-robustness.sh interrupted: not one line saying what is kept ($(cat "$dir/r1.out"))"
+! pgrep -f -- "$rob/" >/dev/null || fail "horizon-robustness.sh interrupted: a gbssn1d is still running"
+[ -f "$rob/uniform/summary.dat" ] && [ ! -e "$rob/default-grid" ] ||
+  fail "horizon-robustness.sh interrupted: the finished sweep is gone, or the unfinished one was moved into place"
+member=$(grep -l '^ok ' "$rob/.new-default-grid/logs/"*.status | head -n 1)
+member=$(basename "$member" .status)
+touch -d '2000-01-01' "$rob/uniform.log" "$rob/.new-default-grid/$member/timeseries.dat"
+(cd "$dir/work" && GBSSN1D_JOBS=2 bash "$src/runs/horizon-robustness.sh" 2 rob >"$dir/r2.out" 2>&1) ||
+  fail "horizon-robustness.sh's rerun: $(cat "$dir/r2.out")"
+[ "$(date -r "$rob/uniform.log" +%Y)" = 2000 ] || fail "horizon-robustness.sh's rerun redid a finished sweep"
+[ "$(date -r "$rob/default-grid/$member/timeseries.dat" +%Y)" = 2000 ] ||
+  fail "horizon-robustness.sh's rerun did not resume the interrupted sweep (its finished member $member was redone)"
+[ "$(grep -c '^== ' "$dir/r2.out")" -eq 4 ] || fail "horizon-robustness.sh's rerun: not four tables ($(cat "$dir/r2.out"))"
+echo "horizon-robustness.sh: one Ctrl-C stops it (exit 130, nothing left running); the rerun keeps the finished sweep and resumes the other"
 echo "runs/lib.sh: every case as documented"
