@@ -13,8 +13,9 @@
 #   - an interrupted script returns only when its programs have stopped; a sweep (here in a
 #     subfolder) is kept also with another GBSSN1D_JOBS; a command of another program
 #     (lib_run_any) counts when it exited 0;
-#   - runs/horizon-robustness.sh (sweeps) interrupted and run again: exit 130, one line,
-#     nothing left running, the finished sweep kept, the interrupted one resumed.
+#   - runs/horizon-robustness.sh (sweeps) and runs/demo.sh (in a stand-in tree) interrupted and
+#     run again: exit 130, one line, nothing left running, the completed runs kept, the
+#     interrupted sweep resumed, the figures named from where the script was run.
 set -euo pipefail
 gbssn1d=$1 src=$2 dir=$3
 rm -rf "$dir" && mkdir -p "$dir"
@@ -24,7 +25,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-boundary.sh \
   horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
   boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
-  horizon-coarse.sh error-constant.sh horizon-experiments.sh horizon-robustness.sh; do
+  horizon-coarse.sh error-constant.sh horizon-experiments.sh horizon-robustness.sh demo.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
     # the argument a script takes before OUT (a stage, a tmax)
@@ -268,4 +269,51 @@ touch -d '2000-01-01' "$rob/uniform.log" "$rob/.new-default-grid/$member/timeser
   fail "horizon-robustness.sh's rerun did not resume the interrupted sweep (its finished member $member was redone)"
 [ "$(grep -c '^== ' "$dir/r2.out")" -eq 4 ] || fail "horizon-robustness.sh's rerun: not four tables ($(cat "$dir/r2.out"))"
 echo "horizon-robustness.sh: one Ctrl-C stops it (exit 130, nothing left running); the rerun keeps the finished sweep and resumes the other"
+
+# 9. runs/demo.sh in a stand-in tree (no set-up or build; figures drawn by stand-ins that check
+# the files they are given), interrupted after its first run, then run again twice
+tree=$dir/tree
+mkdir -p "$tree/runs" "$tree/.ci" "$tree/build" "$tree/plots"
+ln -s "$src/runs/demo.sh" "$tree/runs/demo.sh"
+ln -s "$src/runs/lib.sh" "$tree/runs/lib.sh"
+ln -s "$gbssn1d" "$tree/build/gbssn1d"
+echo 'true' >"$tree/.ci/install-deps"
+echo 'echo "[100%] Built target gbssn1d"' >"$tree/.ci/build"
+for p in plot_profiles plot_series compare_trumpet constraint_orders plot_horizons plot_sweep; do
+  printf '%s\n' 'import os' 'import sys' 'a = sys.argv[1:]' \
+    "missing = [f for f in a if f.endswith('.dat') and not os.path.isfile(f)]" \
+    "if missing or '-o' not in a:" '    sys.exit(f"{sys.argv[0]}: missing {missing}")' \
+    "open(a[a.index('-o') + 1], 'w').close()" >"$tree/plots/$p.py"
+done
+dout=$dir/work/dout
+(cd "$dir/work" && exec env GBSSN1D_JOBS=1 bash "$tree/runs/demo.sh" dout >"$dir/m1.out" 2>&1) &
+pid=$!
+for _ in $(seq 1000); do
+  [ -f "$dout/wormhole.cmd" ] && break
+  kill -0 "$pid" 2>/dev/null || fail "demo.sh ended before its first run had completed ($(cat "$dir/m1.out"))"
+  sleep 0.02
+done
+kill -INT "$pid"
+status=0
+wait "$pid" || status=$?
+[ $status -eq 130 ] || fail "demo.sh interrupted: exit $status ($(cat "$dir/m1.out"))"
+tail -n 1 "$dir/m1.out" | grep -q "interrupted.*kept.*run the same command again" && ! grep -q "kept in" "$dir/m1.out" ||
+  fail "demo.sh interrupted: its last line does not say what is kept ($(cat "$dir/m1.out"))"
+! pgrep -f -- "$dout/" >/dev/null || fail "demo.sh interrupted: a gbssn1d is still running"
+[ -f "$dout/wormhole/timeseries.dat" ] || fail "demo.sh interrupted: the completed wormhole run is gone"
+touch -d '2000-01-01' "$dout/wormhole.log"
+(cd "$dir/work" && GBSSN1D_JOBS=1 bash "$tree/runs/demo.sh" dout >"$dir/m2.out" 2>&1) || fail "demo.sh's rerun: $(cat "$dir/m2.out")"
+[ "$(date -r "$dout/wormhole.log" +%Y)" = 2000 ] || fail "demo.sh's rerun redid the completed wormhole run"
+figures=$(sed -n 's/^figures: //p' "$dir/m2.out")
+[ "$(echo "$figures" | wc -w)" -eq 8 ] || fail "demo.sh: not 8 figures ($figures)"
+for f in $figures; do
+  case $f in dout/*) ;; *) fail "demo.sh: $f is not named from where it was run" ;; esac
+  [ -f "$dir/work/$f" ] || fail "demo.sh: $f does not exist"
+done
+touch -d '2000-01-01' "$dout"/*.log
+(cd "$dir/work" && bash "$tree/runs/demo.sh" dout >"$dir/m3.out" 2>&1) || fail "demo.sh's third run: $(cat "$dir/m3.out")"
+for f in "$dout"/*.log; do
+  [ "$(date -r "$f" +%Y)" = 2000 ] || fail "demo.sh's third run redid $f"
+done
+echo "demo.sh: one Ctrl-C stops it (exit 130, nothing left running, its completed runs kept); a rerun redoes none of them"
 echo "runs/lib.sh: every case as documented"
