@@ -25,13 +25,17 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-boundary.sh \
   horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
   boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
-  horizon-coarse.sh error-constant.sh horizon-experiments.sh horizon-robustness.sh demo.sh; do
+  horizon-coarse.sh error-constant.sh boxes.sh box-interfaces.sh refinement.sh demo.sh \
+  horizon-experiments.sh horizon-robustness.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
-    # the argument a script takes before OUT (a stage, a tmax)
+    # the argument a script takes before OUT (a stage, a part, a tmax)
     case $script in
     z4c.sh) stage=(damping) ;;
     horizon-coarse.sh) stage=(reproduce) ;;
+    boxes.sh) stage=(thesis) ;;
+    box-interfaces.sh) stage=(wormhole) ;;
+    refinement.sh) stage=(onset) ;;
     horizon-robustness.sh) stage=(1) ;;
     *) stage=() ;;
     esac
