@@ -15,38 +15,65 @@
 #   bash runs/box-interfaces.sh cells      # the published grid's wormhole run with 2 and 4 times
 #                                          # more cells on every box at the same finest spacing
 #   bash runs/box-interfaces.sh all
+#   (a second argument OUT writes into OUT instead of out/box-interfaces, a relative OUT from
+#   where you stand)
 #
 # Output under out/box-interfaces/, tables on stdout (also in out/box-interfaces/*.txt). The
 # boxes run at cfl 0.25, as when the study doc's tables were made (the boxes' default until
 # 2026-11-26; the stage values' errors are the same at 0.5 to 2-3 digits, Sec. 11).
+# GBSSN1D_JOBS=n runs n runs or studies at once (a positive whole number; default: the core
+# count; the CPU times of `cells` are measured one run at a time). A rerun keeps every run that
+# completed with the same command and binary and redoes the rest (runs/lib.sh; a kept run's CPU
+# time is the one measured when it ran); a result is replaced only by a completed one; Ctrl-C
+# stops at once; the tables are made only from completed runs.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
-[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+stage=${1:-wormhole}
+case $stage in
+wormhole | published | shifted | trumpet | widths | five | cells | all) ;;
+*)
+  echo "usage: runs/box-interfaces.sh wormhole|published|shifted|trumpet|widths|five|cells|all [OUT] (not '$stage')" >&2
+  exit 2
+  ;;
+esac
+# shellcheck source=runs/lib.sh
+source runs/lib.sh
+lib_init runs/box-interfaces.sh "$here" out/box-interfaces "${2:-}"
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 py=/usr/bin/python3
-out=out/box-interfaces
-mkdir -p "$out"
-jobs=${GBSSN1D_JOBS:-$(nproc)}
 
 # the tapers compared: name and flags
 tapers=("off:--box-taper 0" "half-all:--box-taper 0.5 --box-taper-from 0"
         "half-from8:--box-taper 0.5 --box-taper-from 8" "default:")
 
-evolve() { # evolve NAME FLAGS...: one run into out/box-interfaces/NAME
+evolve() { # evolve NAME FLAGS...: one run into $out/NAME (runs/lib.sh)
   local name=$1
   shift
-  rm -rf "${out:?}/$name"
   local cfl=() # boxes at 0.25, the sinh grid at its default
   [[ " $* " == *" boxes "* ]] && cfl=(--cfl 0.25)
-  build/gbssn1d evolve "${cfl[@]}" "$@" --out "$out/$name" >"$out/$name.log" 2>&1 ||
-    echo "  ($name stopped: see $out/$name.log)"
+  lib_run "$name" build/gbssn1d evolve "${cfl[@]}" "$@" --out @OUT
+  runs+=("$name")
 }
 family() { # family NAME "N list" FLAGS...: one converge study (at cfl ${cfl:-0.25})
   local name=$1 Ns=$2
   shift 2
-  rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" --cfl "${cfl:-0.25}" "$@" \
-    >"$out/$name.log" 2>&1 ||
-    echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
+  lib_run "$name" build/gbssn1d converge --N "$Ns" -j 1 --out @OUT --cfl "${cfl:-0.25}" "$@"
+  runs+=("$name")
+}
+runs=()
+# every run since the last call completed (else exit 1, no table), then which of them stopped or
+# did not converge (their exit status)
+finished() {
+  lib_wait
+  lib_check "${runs[@]}"
+  local name status
+  for name in "${runs[@]}"; do
+    status=$(cat "$out/$name.status")
+    [ "$status" = 0 ] ||
+      echo "  ($name: exit $status: a run or member stopped (3), the study does not converge (4), is pre-asymptotic (5) or is not judged (6), see $out/$name.log)"
+  done
+  runs=()
 }
 # max |M_AH - M| per time window of each run's timeseries.dat; the first run is the reference
 windows() { # windows "t0-t1 ..." REFERENCE RUN...
@@ -80,10 +107,10 @@ wormhole() {
   for n in 64 128; do
     for t in "${tapers[@]}"; do
       # shellcheck disable=SC2086
-      evolve "boxes10-N$n-${t%%:*}" "${common[@]}" --grid boxes --levels 10 --N $n ${t#*:} &
+      evolve "boxes10-N$n-${t%%:*}" "${common[@]}" --grid boxes --levels 10 --N $n ${t#*:}
     done
-    wait
   done
+  finished
   {
     echo "== wormhole data, 10 boxes to 2048 M, N = 64 (M/16), max |M_AH - M|; ratio to the sinh grid"
     windows "0-50 50-200 200-500 500-1000 0-1000" "$out/sinh-M16" "$out"/boxes10-N64-*/
@@ -98,6 +125,7 @@ published() {
     # shellcheck disable=SC2086
     family "published-${t%%:*}" 24,32,48 "${grid[@]}" ${t#*:}
   done
+  finished
   {
     echo "== wormhole data, 8 boxes to 256 M: RMS H_L2_R over 10-100 M, ratio to no taper"
     $py plots/horizon_study.py table "$out/published-off" "$out"/published-*/ --t0 10 --t1 100
@@ -118,6 +146,7 @@ shifted() {
       family "shifted-$h-${t%%:*}" 24,32,48 "${grid[@]}" --rah0 $h ${t#*:}
     done
   done
+  finished
   {
     for h in 0.89 0.6; do
       echo "== 1+log trumpet, rah0 $h, 7 boxes to 128 M: RMS H_L2_R over 10-100 M, ratio to no taper"
@@ -133,6 +162,7 @@ trumpet() {
     # shellcheck disable=SC2086
     family "trumpet-${t%%:*}" 48,64,96 "${grid[@]}" ${t#*:}
   done
+  finished
   for w in "10 1000" "10 500" "500 1000"; do
     set -- $w
     echo "== 1+log trumpet on 9 boxes, RMS H_L2_R over t in [$1, $2] M, ratio to no taper"
@@ -145,10 +175,9 @@ widths() {
           --box-taper-from 0)
   for nk in 64:6 64:12 64:24 64:32 128:6 128:12 128:24 128:32 128:48 128:64; do
     n=${nk%:*} k=${nk#*:}
-    evolve "widths-N$n-k$k" "${common[@]}" --N "$n" --box-taper "$($py -c "print($k / $n)")" &
-    [ "$k" = 24 ] || [ "$k" = 48 ] && wait
+    evolve "widths-N$n-k$k" "${common[@]}" --N "$n" --box-taper "$($py -c "print($k / $n)")"
   done
-  wait
+  finished
   {
     echo "== wormhole data, 10 boxes to 2048 M: taper of k cells on every box, max |M_AH - M|"
     windows "0-1000" "$out/widths-N64-k6" "$out"/widths-N64-*/
@@ -162,14 +191,17 @@ five() {
   # cells), before the taper (--box-taper 0) and with today's defaults, at cfl 0.5
   common=(--id 1log-trumpet --rmax 64 --tmax 30 --dt-series 0.5 --dt-profiles 30 --norm-Rmin 3)
   for n in 64 96 128; do
-    build/gbssn1d evolve "${common[@]}" --grid uniform --N $((16 * n)) --out "$out/five-uniform-N$n" \
-      >"$out/five-uniform-N$n.log" 2>&1 &
-    build/gbssn1d evolve "${common[@]}" --grid boxes --levels 5 --N $n --box-taper 0 \
-      --out "$out/five-off-N$n" >"$out/five-off-N$n.log" 2>&1 &
-    wait
-    build/gbssn1d evolve "${common[@]}" --grid boxes --levels 5 --N $n \
-      --out "$out/five-default-N$n" >"$out/five-default-N$n.log" 2>&1
+    for run in uniform off default; do
+      case $run in
+      uniform) grid=(--grid uniform --N $((16 * n))) ;;
+      off) grid=(--grid boxes --levels 5 --N $n --box-taper 0) ;;
+      default) grid=(--grid boxes --levels 5 --N $n) ;;
+      esac
+      lib_run "five-$run-N$n" build/gbssn1d evolve "${common[@]}" "${grid[@]}" --out @OUT
+      runs+=("five-$run-N$n")
+    done
   done
+  finished
   $py - "$out" <<'PY' | tee "$out/five.txt"
 import sys
 import numpy as np
@@ -205,8 +237,9 @@ cells() {
     l=${lk%:*} k=${lk#*:}
     cfl=0.5 family "cells-L$l" "$((24 * k)),$((32 * k)),$((48 * k))" "${common[@]}" --levels "$l"
   done
-  cfl=0.5 family cells-uniform 3072,4096,6144 --grid uniform --rmax 256 --tmax 100 \
+    cfl=0.5 family cells-uniform 3072,4096,6144 --grid uniform --rmax 256 --tmax 100 \
     --dt-series 0.5 --dt-profiles 10
+  finished
   {
     echo "== wormhole data to 100 M, finest spacing M/12, M/16, M/24: RMS H_L2_R over 10-100 M"
     for d in L8 L7 L6 uniform; do
@@ -221,15 +254,24 @@ cells() {
   # the same question for the cost study's wormhole runs (Sec. 6.4): 9 boxes to 1024 M at
   # N = 64 (finest M/16) against 8 boxes at 128 and 7 at 256 (the same finest spacing) and the
   # sinh grid with innermost M/16, to 1000 M, one run at a time (CPU times)
+  # (the CPU time, "user system" in s, is the last line of each run's log; copied beside it
+  # into layout-*.time)
   common=(--id wormhole --rmax 1024 --tmax 1000 --dt-series 1 --dt-profiles 1000)
-  for lk in 9:64 8:128 7:256; do
-    /usr/bin/time -f "%U %S" -o "$out/layout-L${lk%:*}.time" build/gbssn1d evolve "${common[@]}" \
-      --grid boxes --levels "${lk%:*}" --N "${lk#*:}" --out "$out/layout-L${lk%:*}" --force \
-      >"$out/layout-L${lk%:*}.log" 2>&1
+  for lk in 9:64 8:128 7:256 sinh; do
+    if [ $lk = sinh ]; then
+      name=layout-sinh grid=(--grid sinh --N 400 --dr-inner 0.0625)
+    else
+      name=layout-L${lk%:*} grid=(--grid boxes --levels "${lk%:*}" --N "${lk#*:}")
+    fi
+    lib_run "$name" /usr/bin/time -f "%U %S" build/gbssn1d evolve "${common[@]}" "${grid[@]}" \
+      --out @OUT --force
+    runs+=("$name")
+    lib_wait
   done
-  /usr/bin/time -f "%U %S" -o "$out/layout-sinh.time" build/gbssn1d evolve "${common[@]}" \
-    --grid sinh --N 400 --dr-inner 0.0625 --out "$out/layout-sinh" --force \
-    >"$out/layout-sinh.log" 2>&1
+  finished
+  for name in layout-L9 layout-L8 layout-L7 layout-sinh; do
+    tail -n 1 "$out/$name.log" >"$out/$name.time"
+  done
   $py - "$out" <<'PY' | tee -a "$out/cells.txt"
 import sys
 import numpy as np
@@ -246,7 +288,7 @@ for name in ('layout-L9', 'layout-L8', 'layout-L7', 'layout-sinh'):
 PY
 }
 
-case ${1:-wormhole} in
+case $stage in
 wormhole) wormhole ;;
 published) published ;;
 shifted) shifted ;;
@@ -255,5 +297,4 @@ widths) widths ;;
 five) five ;;
 cells) cells ;;
 all) wormhole; published; shifted; trumpet; widths; five; cells ;;
-*) echo "usage: $0 wormhole|published|shifted|trumpet|widths|five|cells|all" >&2; exit 2 ;;
 esac

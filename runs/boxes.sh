@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Box-in-box mesh refinement (docs/horizon-shift-study.md, Sec. 6). Every family is one
-# `gbssn1d converge` run, made afresh each time (box runs take seconds; nothing is reused from an
-# earlier invocation); norms are H_L2_R, the areal-radius window norm-Rmin M <= R <= 12 M (the
+# `gbssn1d converge` run; norms are H_L2_R, the areal-radius window norm-Rmin M <= R <= 12 M (the
 # same place in every gauge), and a table gives the RMS over time per resolution and the
 # pairwise orders of those (plots/horizon_study.py table).
 #
@@ -13,31 +12,56 @@
 #   bash runs/boxes.sh order     # --fd-order 6 against 4 on the published grid, 6 boxes and 9 boxes
 #   bash runs/boxes.sh taper     # beta_H's outer taper (quartic, step, none) on coarse boxes
 #   bash runs/boxes.sh bursts    # wormhole data on boxes: H bursts against where the boxes end
+#   (a second argument OUT writes into OUT instead of out/boxes, a relative OUT from where you stand)
 #
 # Output under out/boxes/: one folder per family, tables on stdout (also in out/boxes/*.txt),
-# figures *.png.
+# figures *.png. GBSSN1D_JOBS=n runs n families (or runs) at once (a positive whole number;
+# default: the core count). A rerun keeps every family and run that completed with the same
+# command and binary and redoes the rest (runs/lib.sh; `cost` and `speed` are measurements of
+# this machine: they are kept too, and their times are those of the run in place); a result is
+# replaced only by a completed one; Ctrl-C stops at once; tables are made only from completed
+# runs.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
-[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
+stage=${1:-thesis}
+case $stage in
+trumpet | thesis | interp | cost | speed | order | taper | bursts) ;;
+*)
+  echo "usage: runs/boxes.sh trumpet|thesis|interp|cost|speed|order|taper|bursts [OUT] (not '$stage')" >&2
+  exit 2
+  ;;
+esac
+# shellcheck source=runs/lib.sh
+source runs/lib.sh
+lib_init runs/boxes.sh "$here" out/boxes "${2:-}"
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 py=/usr/bin/python3
-out=out/boxes
-mkdir -p "$out"
-jobs=${GBSSN1D_JOBS:-$(nproc)}
 
 # The tables of the study doc's Sec. 6 and 7.3 were made at cfl 0.25, the boxes' default until
 # 2026-11-26 (their stage-value errors are the same at 0.5, the default since: Sec. 11); the
 # quadratic time interpolation's are not. `cost` and `speed` measure the defaults.
 cfl=(--cfl 0.25)
-family() { # family NAME "N list" [evolve flags]: one converge run into out/boxes/NAME, made afresh
+family() { # family NAME "N list" [evolve flags]: one converge study into $out/NAME (runs/lib.sh)
   local name=$1 Ns=$2
   shift 2
-  rm -rf "${out:?}/$name"
-  build/gbssn1d converge --N "$Ns" -j "$jobs" --out "$out/$name" "${cfl[@]}" "$@" >"$out/$name.log" 2>&1 ||
-    echo "  ($name: a member stopped (exit 3), the study does not converge (4) or is pre-asymptotic (5), see $out/$name.log)"
+  lib_run "$name" build/gbssn1d converge --N "$Ns" -j 1 --out @OUT "${cfl[@]}" "$@"
+  families+=("$name")
+}
+families=()
+# every family so far completed, then which of them did not converge (their exit status)
+finished() {
+  lib_wait
+  lib_check
+  local name status
+  for name in "${families[@]}"; do
+    status=$(cat "$out/$name.status")
+    [ "$status" = 0 ] ||
+      echo "  ($name: exit $status: a member stopped (3), the study does not converge (4), is pre-asymptotic (5) or is not judged (6), see $out/$name.log)"
+  done
 }
 table() { $py plots/horizon_study.py table "$@"; }
 
-stage=${1:-thesis}
 case $stage in
 trumpet)
   # 9 boxes to rmax 1024: finest box r <= 4 M with spacing 4/N M (N = 48: M/12)
@@ -51,6 +75,7 @@ trumpet)
   # the same boxes inside a tenth box to 2048 M: the outer boundary's influence cannot reach
   # R = 12 M before about 1440 M
   family trumpet-1000M-rmax2048 48,64,96 "${common[@]}" --levels 10 --rmax 2048
+  finished
   for w in "10 1000" "10 500" "500 1000"; do
     set -- $w
     echo "== 1+log trumpet on 9 boxes, t in [$1, $2] M"
@@ -82,6 +107,7 @@ thesis)
     family "thesis-$id-stretch-held" 24,32,48 "${boxes[@]}" --id $id --rahA 0.5 --rah0 0.89 \
       --ah-every step
   done
+  finished
   for id in 1log-trumpet maximal-trumpet; do
     echo "== $id on the published grid (7 boxes, rmax 128), t in [10, 100] M"
     table "$out/thesis-$id-standard" "$out/thesis-$id"-*/ --t0 10 --t1 100
@@ -125,6 +151,7 @@ interp)
     --rah0 2 "${w3[@]}" --time-interp quadratic --no-subcycling
   family interp-hstd-boxes6-quadratic-nosub 48,64,96 "${common[@]}" "${six[@]}" \
     --time-interp quadratic --no-subcycling
+  finished
   for h in 0.6 0.89 1.2 2; do
     echo "== h = $h M (A = 0.5): ratio to the standard gauge on the same grid kind"
     for kind in boxes-stages boxes-quadratic boxes-held sinh uniform; do
@@ -147,11 +174,17 @@ interp)
     "$out"/interp-h1.2-sinh "$out"/interp-h2-boxes6-*/
   ;;
 cost)
-  # wall time (one core, each member alone) against the RMS of H_L2_R over [10, 1000] M
-  $py plots/boxes_cost.py --out "$out/cost" --tmax 1000 | tee "$out/cost.txt"
+  # wall time (one core, each member alone) against the RMS of H_L2_R over [10, 1000] M; each
+  # measurement alone, its table (printed into its log) kept in $out/cost.txt
+  lib_run_any cost $py plots/boxes_cost.py --out @OUT --tmax 1000 --bin build/gbssn1d
+  lib_wait
   # and on wormhole data (standard gauge; boxes and the sinh grid)
-  $py plots/boxes_cost.py --out "$out/cost-wormhole" --tmax 1000 --id wormhole --kinds boxes,sinh \
-    --gauges standard | tee "$out/cost-wormhole.txt"
+  lib_run_any cost-wormhole $py plots/boxes_cost.py --out @OUT --tmax 1000 --id wormhole \
+    --kinds boxes,sinh --gauges standard --bin build/gbssn1d
+  lib_wait
+  lib_check
+  tee "$out/cost.txt" <"$out/cost.log"
+  tee "$out/cost-wormhole.txt" <"$out/cost-wormhole.log"
   ;;
 order)
   # --fd-order 6 against 4, each order's own standard gauge as the reference: the published
@@ -172,6 +205,7 @@ order)
     family "order-p$p-nine-stretch" 48,64,96 "${nine[@]}" --id 1log-trumpet --fd-order $p --norm-Rmin 3 \
       --rahA 0.5 --rah0 0.89
   done
+  finished
   for p in 4 6; do
     for id in 1log-trumpet maximal-trumpet; do
       echo "== --fd-order $p, $id on the published grid (7 boxes, rmax 128), t in [10, 100] M"
@@ -203,6 +237,7 @@ taper)
     family "taper-seven-h0.89-$taper" 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.89 --rah-taper $taper
     family "taper-seven-h0.6-$taper" 24,32,48 "${seven[@]}" --rahA 0.5 --rah0 0.6 --rah-taper $taper
   done
+  finished
   {
     echo "== h = 2 M on 6 boxes (rmax 128), t in [10, 100] M"
     table "$out/taper-six-standard" "$out"/taper-six-h2-*/ --t0 10 --t1 100
@@ -217,12 +252,14 @@ bursts)
   # lapse's speed sqrt 2 and come back at speed 1
   # (and, as the reference with the outer boundary out of the way to 1000 M, the rmax 1000 boxes
   # inside a ninth box to 2000 M)
+  # (a run that stops by itself is a result too)
   for rl in 1000:8 1400:8 2000:9; do
     rmax=${rl%:*}
-    rm -rf "$out/bursts-rmax$rmax"
-    build/gbssn1d evolve --grid boxes --levels "${rl#*:}" --N 96 --rmax $rmax --tmax 1000 "${cfl[@]}" \
-      --dt-series 1 --dt-profiles 1000 --out "$out/bursts-rmax$rmax" >"$out/bursts-rmax$rmax.log" 2>&1 || true
+    lib_run "bursts-rmax$rmax" build/gbssn1d evolve --grid boxes --levels "${rl#*:}" --N 96 \
+      --rmax $rmax --tmax 1000 "${cfl[@]}" --dt-series 1 --dt-profiles 1000 --out @OUT
   done
+  lib_wait
+  lib_check
   $py - "$out" <<'PY' | tee "$out/bursts.txt"
 import math, os, sys
 import numpy as np
@@ -245,13 +282,12 @@ PY
   ;;
 speed)
   # the stretched study on 9 boxes to rmax 1024, finest M/8, M/12, M/16, to 1000 M
-  rm -rf "$out/speed"
-  /usr/bin/time -f "wall %e s" build/gbssn1d converge --N 32,48,64 -j 2 --out "$out/speed" \
+  # (the wall time is the last line of its log: that of the run in place)
+  lib_run speed /usr/bin/time -f "wall %e s" build/gbssn1d converge --N 32,48,64 -j 2 --out @OUT \
     --grid boxes --levels 9 --rmax 1024 --id 1log-trumpet --rahA 0.5 --rah0 0.89 --tmax 1000 \
-    --dt-series 1 --dt-profiles 1000 2>&1 | tail -1
-  ;;
-*)
-  echo "usage: $0 trumpet|thesis|interp|cost|speed" >&2
-  exit 2
+    --dt-series 1 --dt-profiles 1000
+  lib_wait
+  lib_check
+  tail -n 1 "$out/speed.log"
   ;;
 esac

@@ -8,25 +8,45 @@
 # does not settle on wormhole data (docs/horizon-shift-study.md, Sec. 4).
 # About 25 minutes on 2 cores.
 #
-#   bash runs/horizon-robustness.sh [tmax]      (default 1000)
+#   bash runs/horizon-robustness.sh [tmax] [OUT]   (default 1000; OUT default
+#                                                  out/horizon-robustness, a relative OUT from
+#                                                  where you stand)
+#
+# Each of the four sweeps is one `gbssn1d sweep -j GBSSN1D_JOBS` (a positive whole number;
+# default: the core count), run one after the other into OUT/<sweep> (runs/lib.sh): a rerun keeps
+# every sweep that finished with the same command and binary; an interrupted one (Ctrl-C stops
+# at once) is resumed by the rerun, keeping its finished members; the tables are printed only
+# when all four finished.
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
-[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
 tmax=${1:-1000}
-out=out/horizon-robustness
-mkdir -p "$out"
+if ! [[ $tmax =~ ^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$ ]] || ! awk -v t="$tmax" 'BEGIN { exit !(t > 0) }'; then
+  echo "runs/horizon-robustness.sh: tmax = '$tmax' is invalid: it must be a positive number (M)" >&2
+  exit 2
+fi
+# shellcheck source=runs/lib.sh
+source runs/lib.sh
+lib_init runs/horizon-robustness.sh "$here" out/horizon-robustness "${2:-}"
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
+# sweep NAME FLAGS...: one sweep into $out/NAME, waited for (it runs $jobs members at once)
+sweep() {
+  local name=$1
+  shift
+  lib_run "$name" build/gbssn1d sweep -j "$jobs" --out @OUT "$@"
+  lib_wait
+}
 axes=(--sweep id=1log-trumpet,maximal-trumpet,wormhole
   --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6,0.5:0.89,0.5:1.2,0.5:1.5,0.5:2.0)
 run=(--tmax "$tmax" --dt-series 1 --dt-profiles "$tmax")
-build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/uniform" "${axes[@]}" "${run[@]}" \
-  --sweep N=1600,3200 --grid uniform --rmax 200 || true
-build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/default-grid" "${axes[@]}" "${run[@]}" \
-  --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
+sweep uniform "${axes[@]}" "${run[@]}" --sweep N=1600,3200 --grid uniform --rmax 200
+sweep default-grid "${axes[@]}" "${run[@]}" --sweep rah-ramp=0,20 --grid sinh --N 400 \
+  --dr-inner 0.02 --rmax 100
 shrinks=(--id wormhole --eta 1 --sweep rahA,rah0=0:0.89,0.5:0.5,0.5:0.6)
-build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/wormhole-eta1-uniform" "${shrinks[@]}" "${run[@]}" \
-  --sweep N=1600,3200 --grid uniform --rmax 200 || true
-build/gbssn1d sweep -j "${GBSSN1D_JOBS:-$(nproc)}" --out "$out/wormhole-eta1-default-grid" "${shrinks[@]}" \
-  "${run[@]}" --sweep rah-ramp=0,20 --grid sinh --N 400 --dr-inner 0.02 --rmax 100 || true
+sweep wormhole-eta1-uniform "${shrinks[@]}" "${run[@]}" --sweep N=1600,3200 --grid uniform --rmax 200
+sweep wormhole-eta1-default-grid "${shrinks[@]}" "${run[@]}" --sweep rah-ramp=0,20 --grid sinh \
+  --N 400 --dr-inner 0.02 --rmax 100
+lib_check
 for s in uniform default-grid wormhole-eta1-uniform wormhole-eta1-default-grid; do
   echo "== $s (|r_ah/h - 1| at the end; M_ah_err_max = max |M_AH - M|)"
   # columns by name from the header line (the '#' line that names a status column; the other

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The horizon shift under refinement (docs/horizon-shift-study.md, Sec. 12), every run made
-# afresh in out/refinement/<part>/ and summarised by plots/refinement_study.py.
+# The horizon shift under refinement (docs/horizon-shift-study.md, Sec. 12), every run in
+# out/refinement/<part>/ and summarised by plots/refinement_study.py.
 #   bash runs/refinement.sh onset      (~1 min on 2 cores) the published stencil of B's driver
 #       term (--driver-advection upwind-gd): when and where a stretch to 1.5M (1+log trumpet,
 #       A = 0.5) goes non-finite against N on the sinh grid (N = 800 ... 3200) and on uniform
@@ -24,22 +24,66 @@
 #       spacing M/16 ... M/64 for N = 32 ... 128) to 40M, 1+log trumpet: the standard gauge,
 #       h = 0.89 in the published form, h = 1.5 with the default, unit and conformal normals
 #       (the last two with the published profile), each with the upwind-gd and matched stencils.
-#   bash runs/refinement.sh            onset, converge, uniform, published and boxes
-# IDS="wormhole" bash runs/refinement.sh converge  reruns one data set's families of converge or
-#       uniform (out/refinement/<part>/<id>/), keeping the others' folders.
+#   bash runs/refinement.sh [all]      onset, converge, uniform, published and boxes
+#   bash runs/refinement.sh PART OUT   into OUT/<part>/ instead of out/refinement/<part>/ (a
+#       relative OUT from where you stand)
+# IDS="wormhole" bash runs/refinement.sh converge  runs one data set's families of converge or
+#       uniform (out/refinement/<part>/<id>/) and makes its table alone, leaving the others'
+#       folders as they are.
+#
+# GBSSN1D_JOBS=n runs n at once (a positive whole number; default: the core count). A rerun
+# keeps every run that completed with the same command and binary and redoes the rest
+# (runs/lib.sh); a result is replaced only by a completed one; Ctrl-C stops at once; a part's
+# table is made only when all its runs completed (a run that goes non-finite is a result).
 set -euo pipefail
+here=$PWD
 cd "$(dirname "$0")/.."
-[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }
-py=/usr/bin/python3
-parts=("$@")
-[ ${#parts[@]} -eq 0 ] && parts=(onset converge uniform published boxes)
+all=(onset converge uniform published boxes)
+case ${1:-all} in
+all) parts=("${all[@]}") ;;
+onset | converge | uniform | published | boxes) parts=("$1") ;;
+*)
+  echo "runs/refinement.sh: unknown part '$1' (onset, converge, uniform, published, boxes, all)" >&2
+  exit 2
+  ;;
+esac
+case ${2:-} in
+onset | converge | uniform | published | boxes | all)
+  echo "runs/refinement.sh: '$2' is a part, not OUT: one part (or all) at a time, then OUT" >&2
+  exit 2
+  ;;
+esac
+for id in ${IDS:-}; do
+  case $id in
+  1log-trumpet | maximal-trumpet | wormhole) ;;
+  *)
+    echo "runs/refinement.sh: IDS = '$IDS' is invalid: its data sets are 1log-trumpet, maximal-trumpet, wormhole" >&2
+    exit 2
+    ;;
+  esac
+done
+# shellcheck source=runs/study-helpers.sh
 source runs/study-helpers.sh
+lib_init runs/refinement.sh "$here" out/refinement "${2:-}"
+[ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
+py=/usr/bin/python3
+# run KIND NAME FLAGS...: evolve_run or uniform_run (runs/study-helpers.sh) of NAME within the
+# part's folder ($d = $out/<part>, the run in $d/NAME), named in $names for the part's check
+run() {
+  local kind=$1 name=$2
+  shift 2
+  "$kind" "$part/$name" "$@"
+  names+=("$part/$name")
+}
+# the part's runs all completed (else exit 1, no table)
+finished() {
+  lib_wait
+  lib_check "${names[@]}"
+}
 
 for part in "${parts[@]}"; do
-  out=out/refinement/$part
-  # converge and uniform remove only the data sets they rerun (IDS)
-  case $part in converge | uniform) ;; *) rm -rf "$out" ;; esac
-  mkdir -p "$out"
+  d=$out/$part
+  names=()
   case $part in
   onset)
     stretch=(--id 1log-trumpet --rahA 0.5 --rah0 1.5 --dt-series 0.05)
@@ -48,65 +92,63 @@ for part in "${parts[@]}"; do
         # fields every 0.1 M of the published stencil's runs: the measured growth rate
         dtp=1000
         [ "$st" = upwind-gd ] && dtp=0.1
-        evolve_run "sinh-$st-N$n" "${stretch[@]}" --N "$n" --tmax 6 --dt-profiles "$dtp" \
+        run evolve_run "sinh-$st-N$n" "${stretch[@]}" --N "$n" --tmax 6 --dt-profiles "$dtp" \
           --driver-advection "$st"
       done
       for m in 16 32 64; do
-        evolve_run "uniform-$st-M$m" "${stretch[@]}" --grid uniform --rmax 200 --N $((200 * m)) \
+        run evolve_run "uniform-$st-M$m" "${stretch[@]}" --grid uniform --rmax 200 --N $((200 * m)) \
           --tmax 6 --dt-profiles 1000 --driver-advection "$st"
       done
     done
     # the backgrounds of the predictions: fields every 0.25 M of runs that do not blow up
-    evolve_run background-sinh "${stretch[@]}" --N 800 --tmax 6 --dt-profiles 0.25 \
+    run evolve_run background-sinh "${stretch[@]}" --N 800 --tmax 6 --dt-profiles 0.25 \
       --driver-advection upwind-gd
-    evolve_run background-uniform "${stretch[@]}" --grid uniform --rmax 200 --N 3200 --tmax 6 \
+    run evolve_run background-uniform "${stretch[@]}" --grid uniform --rmax 200 --N 3200 --tmax 6 \
       --dt-profiles 0.25 --driver-advection upwind-gd
-    wait
+    finished
     {
       echo "# sinh: N = 800 x 1/factor; uniform: M/16 x 1/factor"
       echo "# sinh"
-      $py docs/hyperbolicity.py --profiles "$out/background-sinh/profiles.dat" \
+      $py docs/hyperbolicity.py --profiles "$d/background-sinh/profiles.dat" \
         --spacing-factor 0.6667 0.5 0.3333 0.25
       echo "# uniform"
-      $py docs/hyperbolicity.py --profiles "$out/background-uniform/profiles.dat" \
+      $py docs/hyperbolicity.py --profiles "$d/background-uniform/profiles.dat" \
         --spacing-factor 0.5 0.25
-    } >"$out/predicted.txt"
+    } >"$d/predicted.txt"
     # the continuum speeds on the same fields (real? eigenvectors complete?)
-    $py docs/hyperbolicity.py --profiles "$out/background-sinh/profiles.dat" --continuum \
-      >"$out/continuum.txt"
-    $py plots/refinement_study.py onset "$out" | tee "$out/table.txt"
+    $py docs/hyperbolicity.py --profiles "$d/background-sinh/profiles.dat" --continuum \
+      >"$d/continuum.txt"
+    $py plots/refinement_study.py onset "$d" | tee "$d/table.txt"
     ;;
   converge | uniform)
     # ${IDS:-...}: the data sets to (re)run; each has its own folder out/refinement/<part>/<id>
-    for id in ${IDS:-1log-trumpet maximal-trumpet wormhole}; do
-      rm -rf "${out:?}/$id"
-      mkdir -p "$out/$id"
+    ids=${IDS:-1log-trumpet maximal-trumpet wormhole}
+    for id in $ids; do
       for h in 0 0.5 0.6 0.89 1.2 1.5 2; do
         g=()
         [ "$h" != 0 ] && g=(--rahA 0.5 --rah0 "$h")
         if [ "$part" = converge ]; then
           for n in 400 800 1600 3200; do
-            evolve_run "$id/h$h-sinh-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 30 \
+            run evolve_run "$id/h$h-sinh-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 30 \
               --dt-series 0.25 --dt-profiles 1000
           done
           for n in 400 800 1600 3200 6400; do
-            evolve_run "$id/h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
+            run evolve_run "$id/h$h-sinh12-N$n" --id "$id" "${g[@]}" --N "$n" --tmax 12 \
               --dt-series 0.25 --dt-profiles 1000
           done
         else
           for m in 16 32 64 128; do
-            evolve_run "$id/h$h-uniform-M$m" --id "$id" "${g[@]}" --grid uniform --rmax 100 \
+            run evolve_run "$id/h$h-uniform-M$m" --id "$id" "${g[@]}" --grid uniform --rmax 100 \
               --N $((100 * m)) --tmax 20 --dt-series 0.25 --dt-profiles 1000
           done
         fi
       done
     done
-    wait
-    for id in 1log-trumpet maximal-trumpet wormhole; do
-      [ -d "$out/$id" ] || continue
+    finished
+    for id in $ids; do
       echo "## $id"
-      $py plots/refinement_study.py converge "$out/$id"
-    done | tee "$out/table.txt"
+      $py plots/refinement_study.py converge "$d/$id"
+    done | tee "$d/table.txt"
     ;;
   published)
     for h in 0.89 1.5; do
@@ -114,38 +156,34 @@ for part in "${parts[@]}"; do
         neither:conformal:matched; do
         IFS=: read -r name normal stencil <<<"$v"
         for m in 8 16 32 64; do
-          uniform_run "h$h-$name-M$m" --id 1log-trumpet --rahA 0.5 --rah0 "$h" --rmax 200 \
+          run uniform_run "h$h-$name-M$m" --id 1log-trumpet --rahA 0.5 --rah0 "$h" --rmax 200 \
             --N $((200 * m)) --tmax 40 --rah-profile rational --rah-width 1 --rah-normal "$normal" \
             --driver-advection "$stencil"
         done
       done
     done
-    wait
-    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
+    finished
+    $py plots/refinement_study.py converge "$d" | tee "$d/table.txt"
     ;;
   boxes)
     grid=(--id 1log-trumpet --grid boxes --levels 7 --rmax 128 --tmax 40 --dt-series 0.25
       --dt-profiles 1000)
     pub=(--rah-profile rational --rah-width 1)
     for n in 32 48 64 96 128; do
-      evolve_run "h0-std-N$n" "${grid[@]}" --N "$n"
+      run evolve_run "h0-std-N$n" "${grid[@]}" --N "$n"
       for st in upwind-gd matched; do
-        evolve_run "h0.89-unit-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 0.89 "${pub[@]}" \
+        run evolve_run "h0.89-unit-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 0.89 "${pub[@]}" \
           --rah-normal unit --driver-advection "$st"
-        evolve_run "h1.5-default-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 \
+        run evolve_run "h1.5-default-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 \
           --driver-advection "$st"
         for normal in unit conformal; do
-          evolve_run "h1.5-$normal-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 "${pub[@]}" \
+          run evolve_run "h1.5-$normal-$st-N$n" "${grid[@]}" --N "$n" --rahA 0.5 --rah0 1.5 "${pub[@]}" \
             --rah-normal "$normal" --driver-advection "$st"
         done
       done
     done
-    wait
-    $py plots/refinement_study.py converge "$out" | tee "$out/table.txt"
-    ;;
-  *)
-    echo "runs/refinement.sh: unknown part '$part' (onset, converge, uniform, published, boxes)" >&2
-    exit 2
+    finished
+    $py plots/refinement_study.py converge "$d" | tee "$d/table.txt"
     ;;
   esac
 done
