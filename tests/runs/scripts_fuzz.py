@@ -40,8 +40,10 @@ BAD_JOBS = ["0", "-1", "abc", "2000", "1 2", "07", "1e3", " "]
 STAGES = {
     "z4c.sh": ["damping", "kappa2", "resolution", "hole"],
     "horizon-coarse.sh": ["reproduce", "mechanism"],
-    "box-interfaces.sh": ["trumpet", "shifted"],
-    "boxes.sh": ["trumpet", "interp"],
+    "box-interfaces.sh": ["wormhole", "five"],
+    "boxes.sh": ["thesis", "bursts"],
+    "refinement.sh": ["onset"],
+    "horizon-robustness.sh": ["1"],  # its tmax
     "error-constant.sh": ["table", "upwind"],
 }
 NO_OUT = {"claims.sh"}
@@ -96,10 +98,18 @@ def tree_hash(path):
     return h.hexdigest()
 
 
-def run_quick(cmd, cwd, env, timeout=60):
-    p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                       text=True, timeout=timeout)
-    return p.returncode, p.stdout + p.stderr
+def run_quick(cmd, cwd, env, timeout=15):
+    """A command that must refuse at once: its status and output, or a Failure (its process
+    group stopped) when it is still running after `timeout` s (it did not refuse: it ran)."""
+    proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        text, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        raise Failure(f"{' '.join(cmd)}: still running after {timeout} s (not refused: it ran)")
+    return proc.returncode, text
 
 
 def base_env(jobs="1"):
