@@ -60,5 +60,6 @@ for N in 24 32 48; do
   for T in 1 4 8 16; do pair $N 0.5 0.5 $T; done
 done
 lib_wait
+lib_check # no table from a run that did not complete
 /usr/bin/python3 plots/hold_scaling.py "$out" "${rows[@]}"
 echo "runs/hold-scaling.sh: $(( $(date +%s) - start )) s; table $out/scaling.dat, figure $out/scaling.png"

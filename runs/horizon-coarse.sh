@@ -17,6 +17,13 @@
 set -euo pipefail
 here=$PWD
 cd "$(dirname "$0")/.."
+case ${1:-reproduce} in
+reproduce | mechanism | threshold | cost) ;;
+*)
+  echo "usage: $0 reproduce|mechanism|threshold|cost [OUT] (not '$1')" >&2
+  exit 2
+  ;;
+esac
 source runs/lib.sh
 lib_init runs/horizon-coarse.sh "$here" out/horizon-coarse "${2:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build >/dev/null; }

@@ -54,6 +54,16 @@ for jobs in 0 abc; do
   [ $status -eq 2 ] && grep -q GBSSN1D_JOBS "$dir/jobs.out" || fail "claims.sh with GBSSN1D_JOBS='$jobs': exit $status"
 done
 echo "a bad GBSSN1D_JOBS: refused by every script (exit 2), nothing made"
+# an unknown stage, part or mode: refused before anything is made (horizon-coarse.sh made OUT
+# and its lock first)
+for script in z4c.sh horizon-coarse.sh boxes.sh box-interfaces.sh refinement.sh error-constant.sh; do
+  target=$dir/stage-$script
+  status=0
+  (cd "$dir" && bash "$src/runs/$script" bogus "$target" >"$dir/stage.out" 2>&1) || status=$?
+  [ $status -eq 2 ] && grep -q bogus "$dir/stage.out" || fail "$script bogus: exit $status ($(cat "$dir/stage.out"))"
+  [ ! -e "$target" ] || fail "$script bogus made $target"
+done
+echo "an unknown stage: refused by every script that takes one (exit 2), nothing made"
 
 # 2. a study script of two runs on the library
 cat >"$dir/study.sh" <<EOF
