@@ -1,4 +1,4 @@
-// Every evolve flag and bound has a test of its own number:
+// Every evolve flag, bound and tolerance has a test of its own number:
 //  A. every flag of the table (config/flag_table.cpp: param_specs()) changes some number a run
 //     writes, and the run key, in a configuration where its row says it acts; the flags that by
 //     design change no number are listed with why, and what they do change is checked instead;
@@ -6,7 +6,9 @@
 //  B. every fixed limit validate() enforces is refused just beyond (exit 2, the flag named,
 //     nothing written) and accepted just inside (--print-config, which runs the same checks);
 //     a limit that depends on the step takes dt as validate() computes it; every flag
-//     validate.cpp names has a row or a reason.
+//     validate.cpp names has a row or a reason;
+//  C. every tolerance flag meets its tolerance: the horizon radius found with --ah-tol lies
+//     within it of a much tighter search, on the uniform and the default sinh grid.
 #include "../cli/cli_support.hpp"
 #include "config/config_file.hpp"
 #include "config/flag_table.hpp"
@@ -643,4 +645,50 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
     INFO(flag << " (" << why << ") is not named in validate.cpp");
     CHECK(named.count(flag) == 1);
   }
+}
+
+TEST_CASE("every flag's tolerance is met: the horizon radius with --ah-tol lies within it of a "
+          "much tighter search, on the uniform and the default sinh grid") {
+  // --ah-tol is the one evolve flag that sets a tolerance (flag_table.cpp). Without the shift the
+  // searches change nothing of the evolution, so the two runs search the same states, at every
+  // row of horizon.dat.
+  const double tight = 1e-14;
+  auto radii = [](const std::string& args) {
+    const fs::path out = scratch("every_tolerance_out");
+    const auto r = run("evolve " + args + " --out " + out.string());
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    const auto table = gbssn1d::testing::read_table((out / "horizon.dat").string());
+    std::vector<double> r_ah;
+    for (std::size_t k = 0; k < table.rows.size(); ++k)
+      r_ah.push_back(table.at(k, "r_ah"));
+    fs::remove_all(out);
+    return r_ah;
+  };
+  // the uniform grid, the default sinh grid (N 400, rmax 1000, dr-inner 0.02), and its map at
+  // 64 cells
+  const std::vector<std::string> grids{"--grid uniform --N 64 --rmax 16", "", "--N 64"};
+  double loose_worst = 0.0; // at the loosest tolerance: the tolerance reached the finder
+  for (const std::string& grid : grids) {
+    for (const std::string id : {"1log-trumpet", "maximal-trumpet", "wormhole"}) {
+      const std::string base = grid + " --id " + id + " --tmax 1 --dt-series 0.25 --dt-profiles 1";
+      const std::vector<double> exact = radii(base + " --ah-tol " + text(tight));
+      REQUIRE(exact.size() == 5);
+      // the loosest tolerance validate() accepts, and tighter ones
+      const double loosest = ah_tol_over_spacing_max * steps_of(base).min_spacing;
+      for (const double tol : {loosest, 1e-6, 1e-8, 1e-10}) {
+        const std::vector<double> found = radii(base + " --ah-tol " + text(tol));
+        REQUIRE(found.size() == exact.size());
+        for (std::size_t k = 0; k < exact.size(); ++k) {
+          INFO(base << " --ah-tol " << tol << ": row " << k << ", r_ah " << found[k] << " against "
+                    << exact[k]);
+          REQUIRE(std::isfinite(exact[k]));
+          CHECK(std::abs(found[k] - exact[k]) <= tol + tight);
+          if (tol == loosest)
+            loose_worst = std::max(loose_worst, std::abs(found[k] - exact[k]));
+        }
+      }
+    }
+  }
+  CHECK(loose_worst > 0.0);
 }
