@@ -232,7 +232,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
     CHECK_FALSE(why.empty());
   }
   for (const auto& spec : param_specs()) {
-    INFO("--" << spec.name
+    INFO("--" << std::string(spec.name)
               << " has no row in this test's table and no reason to have none: add "
                  "a configuration where it acts");
     CHECK((covered.count(spec.name) + exempt_from_numbers().count(spec.name)) == 1);
