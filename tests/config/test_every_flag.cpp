@@ -1,0 +1,694 @@
+// Every evolve flag, bound and tolerance has a test of its own number:
+//  A. every flag of the table (config/flag_table.cpp: param_specs()) changes some number a run
+//     writes, and the run key, in a configuration where its row says it acts; the flags that by
+//     design change no number are listed with why, and what they do change is checked instead;
+//     a flag in neither list fails (a new flag needs a row here);
+//  B. every fixed limit validate() enforces is refused just beyond (exit 2, the flag named,
+//     nothing written) and accepted just inside (--print-config, which runs the same checks);
+//     a limit that depends on the step takes dt as validate() computes it; every flag
+//     validate.cpp names has a row or a reason;
+//  C. every tolerance flag meets its tolerance: the horizon radius found with --ah-tol lies
+//     within it of a much tighter search, on the uniform and the default sinh grid.
+#include "../cli/cli_support.hpp"
+#include "config/config_file.hpp"
+#include "config/flag_table.hpp"
+#include "config/param_rules.hpp"
+#include "config/params.hpp"
+#include "config/same_run.hpp"
+#include "evolution/evolution_config.hpp"
+#include "evolution/levels.hpp"
+#include "gbssn/rhs_params.hpp"
+#include "grid/grid.hpp"
+#include "mesh/hierarchy.hpp"
+#include "mesh/layout.hpp"
+
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace gbssn1d;
+using gbssn1d::testing::run;
+using gbssn1d::testing::scratch;
+using gbssn1d::testing::slurp;
+
+namespace {
+
+std::vector<std::string> words(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;)
+    out.push_back(w);
+  return out;
+}
+
+/// The resolved parameters of an evolve command line.
+Params resolved(const std::string& args) {
+  Params p = parse_evolve_args(words(args));
+  resolve_defaults(p);
+  return p;
+}
+
+/// What a run wrote: each .dat file's lines that are not '#' comments (headers echo the flags,
+/// which differ by design), the number of profile blocks, and whether it left a checkpoint.
+struct Written {
+  std::map<std::string, std::string> numbers;
+  int profile_blocks = 0;
+  bool checkpoint = false;
+};
+
+Written written(const fs::path& dir) {
+  Written w;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().filename() == "checkpoint.bin")
+      w.checkpoint = true;
+    if (e.path().extension() != ".dat")
+      continue;
+    std::istringstream in(slurp(e.path()));
+    std::string kept;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("# t = ", 0) == 0 && e.path().filename() == "profiles.dat")
+        ++w.profile_blocks;
+      if (line.rfind('#', 0) != 0)
+        kept += line + "\n";
+    }
+    w.numbers[e.path().filename().string()] = kept;
+  }
+  return w;
+}
+
+/// What an evolve run with `args` wrote (it must succeed); runs of the same arguments are made
+/// once.
+const Written& run_of(const std::string& args) {
+  static std::map<std::string, Written> done;
+  if (const auto it = done.find(args); it != done.end())
+    return it->second;
+  const fs::path out = scratch("every_flag_run");
+  const auto r = run("evolve " + args + " --out " + out.string());
+  INFO(args << "\n" << r.err);
+  REQUIRE(r.status == 0);
+  Written w = written(out);
+  REQUIRE(w.numbers.count("timeseries.dat") == 1);
+  REQUIRE(w.numbers.count("profiles.dat") == 1);
+  fs::remove_all(out);
+  return done.emplace(args, std::move(w)).first->second;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);)
+    out.push_back(line);
+  return out;
+}
+
+const ParamSpec* spec_of(const std::string& name) {
+  const auto& specs = param_specs();
+  const auto it =
+      std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+  return it == specs.end() ? nullptr : &*it;
+}
+
+// cheap configurations: a 1+log trumpet on 32 uniform cells to t = 0.5 (0.1 s a run)
+const std::string rows = " --tmax 0.5 --dt-series 0.25 --dt-profiles 0.5";
+const std::string trumpet = "--id 1log-trumpet --grid uniform --N 32 --rmax 16" + rows;
+const std::string shifted = trumpet + " --rahA 0.5 --rah0 1";
+const std::string boxes = "--id 1log-trumpet --grid boxes --N 32 --rmax 16" + rows;
+const std::string z4c = trumpet + " --formulation z4c";
+
+/// A row of A: `flag value` (value "" for a switch) acts on `base`, which does not give it.
+struct Acting {
+  std::string flag, base, value;
+  std::string with() const { return base + " --" + flag + (value.empty() ? "" : " " + value); }
+};
+
+/// The flags that by design change no number a run writes, and why.
+const std::map<std::string, std::string>& exempt_from_numbers() {
+  static const std::map<std::string, std::string> exempt{
+      {"dt-series", "a cadence: which rows of timeseries.dat are written, not their numbers"},
+      {"dt-profiles", "a cadence: which blocks of profiles.dat are written, not their numbers"},
+      {"checkpoint-every", "a cadence of checkpoint.bin, which a resume reads; no .dat number"},
+      {"out", "the folder's name: the same run wherever it is written"},
+      {"force", "permission to write into a non-empty folder: the same run"},
+  };
+  return exempt;
+}
+
+} // namespace
+
+TEST_CASE("every flag acts where its table row says it acts: a number the run writes and the run "
+          "key change with it, and the flags that change no number by design do what they do") {
+  const fs::path hAH = scratch("every_flag_hAH.dat");
+  {
+    std::ofstream f(hAH);
+    f << "# t r_ah\n";
+    for (int k = 0; k <= 4; ++k)
+      f << 0.25 * k << " " << 0.8304 + 0.01 * k << "\n";
+  }
+  const std::string boxes64 = "--id 1log-trumpet --grid boxes --N 32 --rmax 64" + rows;
+  const std::vector<Acting> table{
+      // the grid (a base without the flag takes its default)
+      {"N", "--id 1log-trumpet --grid uniform --rmax 16" + rows, "48"},
+      {"rmax", "--id 1log-trumpet --grid uniform --N 32 --eta 0.1" + rows, "16"},
+      {"grid", "--id 1log-trumpet --N 32 --rmax 16" + rows, "uniform"},
+      {"levels", boxes, "2"}, // (the rule gives 3)
+      {"time-interp", boxes, "quadratic"},
+      {"no-subcycling", boxes, ""},
+      // tapered only where a fine box reaches beyond --box-taper-from (16 M): rmax 64
+      {"box-taper", boxes64, "0.25"},
+      {"box-taper-from", boxes, "2"},
+      {"dr-inner", "--id 1log-trumpet --N 32 --rmax 16" + rows, "0.03"},
+      // initial data and formulation
+      {"id", "--grid uniform --N 32 --rmax 16" + rows, "1log-trumpet"},
+      {"M", trumpet, "1.1"},
+      {"lapse0", "--grid uniform --N 32 --rmax 16" + rows, "one"},
+      {"formulation", trumpet, "z4c"},
+      {"kappa1", z4c, "0.3"},
+      {"kappa1-hole", z4c, "0"},
+      {"kappa2", z4c, "0.5"},
+      {"z4c-lapse-adm", z4c, ""},
+      // gauge and numerics
+      {"eta", trumpet, "1"},
+      {"advective-shift", trumpet, ""},
+      {"non-advective-lapse", trumpet, ""},
+      {"cfl", trumpet, "0.25"},
+      {"ko-sigma", trumpet, "0.2"},
+      {"fd-order", trumpet, "6"},
+      {"upwind", trumpet, "biased"},
+      {"chi-floor", trumpet, "0.1"}, // (0.01 lies below chi at every cell of this run)
+      {"driver-advection", trumpet, "centred"},
+      {"delta-advection", trumpet, "centred"},
+      {"tmax",
+       "--id 1log-trumpet --grid uniform --N 32 --rmax 16 --dt-series 0.25 --dt-profiles "
+       "0.5",
+       "1"},
+      // the norm windows
+      {"norm-rmin", trumpet, "2"},
+      {"norm-rmax", trumpet, "6"},
+      {"norm-Rmin", trumpet, "3"},
+      {"norm-Rmax", trumpet, "6"},
+      {"norm-Rint", trumpet, "1.5"},
+      // the horizon-adjusting shift and its searches
+      {"rahA", trumpet, "0.5"},
+      {"rah0", trumpet + " --rahA 0.5", "1.2"},
+      {"rah-width", shifted + " --rah-profile rational", "2"},
+      {"rah-rcut", shifted, "6"},
+      {"rah-taper", shifted, "step"},
+      {"rah-ramp", shifted, "3"},
+      {"rah-profile", shifted, "gauss"},
+      {"rah-normal", shifted, "unit"},
+      {"rah-chi-smooth", shifted + " --rah-normal smooth", "0.1"},
+      {"rah-hAH-file", shifted, hAH.string()},
+      {"ah-every", shifted, "4"},
+      {"ah-interval", shifted, "0.1"},
+      {"ah-tmin", shifted, "0.25"},
+      {"ah-tmax", shifted, "0.25"},
+      {"ah-tol", trumpet, "1e-5"},
+      {"rah-variant", shifted, "driver-full-shift"},
+  };
+
+  // complete: every flag of the table has a row or a reason, and no row names another
+  std::set<std::string> covered;
+  for (const auto& row : table) {
+    INFO("row --" << row.flag);
+    CHECK(spec_of(row.flag) != nullptr);
+    CHECK(covered.insert(row.flag).second); // one row a flag
+    CHECK(exempt_from_numbers().count(row.flag) == 0);
+  }
+  for (const auto& [flag, why] : exempt_from_numbers()) {
+    INFO("exempt --" << flag << ": " << why);
+    CHECK(spec_of(flag) != nullptr);
+    CHECK_FALSE(why.empty());
+  }
+  for (const auto& spec : param_specs()) {
+    INFO("--" << std::string(spec.name)
+              << " has no row in this test's table and no reason to have none: add "
+                 "a configuration where it acts");
+    CHECK((covered.count(spec.name) + exempt_from_numbers().count(spec.name)) == 1);
+  }
+
+  // each row: the table says the flag acts there, and the key and some number change with it
+  for (const auto& row : table) {
+    const ParamSpec* spec = spec_of(row.flag);
+    if (spec == nullptr)
+      continue;
+    INFO("--" << row.flag << " " << row.value << " on: " << row.base);
+    const auto given = words(row.base);
+    CHECK(std::find(given.begin(), given.end(), "--" + row.flag) == given.end());
+    const Params base = resolved(row.base), with = resolved(row.with());
+    CHECK(acts(spec->acts, with));
+    CHECK(run_key(with) != run_key(base));
+    CHECK(run_of(row.with()).numbers != run_of(row.base).numbers);
+  }
+
+  // the exempt flags: what each does change
+  {
+    INFO("--dt-series: more rows, the same numbers at the times both write");
+    const std::string base = "--id 1log-trumpet --grid uniform --N 32 --rmax 16 --tmax 0.5 "
+                             "--dt-profiles 0.5"; // every 0.25 (the default)
+    const std::string with = base + " --dt-series 0.125";
+    CHECK(run_key(resolved(with)) != run_key(resolved(base)));
+    const Written &a = run_of(base), &b = run_of(with);
+    // the rows of timeseries.dat and horizon.dat, at t = 0, 0.125, ..., 0.5 against 0, 0.25, 0.5
+    for (const std::string file : {"timeseries.dat", "horizon.dat"}) {
+      INFO(file);
+      const std::vector<std::string> c = lines(a.numbers.at(file)), f = lines(b.numbers.at(file));
+      CHECK(c.size() == 3);
+      CHECK(f.size() == 2 * c.size() - 1);
+      for (std::size_t k = 0; k < c.size() && 2 * k < f.size(); ++k)
+        CHECK(f[2 * k] == c[k]);
+    }
+    CHECK(b.numbers.at("profiles.dat") == a.numbers.at("profiles.dat"));
+    CHECK(b.numbers.size() == a.numbers.size());
+  }
+  {
+    INFO("--dt-profiles: more blocks of profiles.dat, nothing else");
+    const std::string base = "--id 1log-trumpet --grid uniform --N 32 --rmax 16 --tmax 0.5 "
+                             "--dt-series 0.25"; // every 5 (the default): t = 0 and the end
+    const std::string with = base + " --dt-profiles 0.125";
+    CHECK(run_key(resolved(with)) != run_key(resolved(base)));
+    const Written &a = run_of(base), &b = run_of(with);
+    CHECK(a.profile_blocks == 2);
+    CHECK(b.profile_blocks == 5);
+    CHECK(b.numbers.at("profiles.dat").size() > a.numbers.at("profiles.dat").size());
+    for (const auto& [file, numbers] : a.numbers)
+      if (file != "profiles.dat")
+        CHECK(b.numbers.at(file) == numbers);
+  }
+  {
+    INFO("--checkpoint-every: a checkpoint, the same numbers");
+    const std::string with = trumpet + " --checkpoint-every 0.25";
+    CHECK(run_key(resolved(with)) != run_key(resolved(trumpet))); // recorded: resume keeps it
+    CHECK(run_of(with).checkpoint);
+    CHECK_FALSE(run_of(trumpet).checkpoint);
+    CHECK(run_of(with).numbers == run_of(trumpet).numbers);
+  }
+  {
+    INFO("--out and --force: the same run, the same numbers");
+    Params elsewhere = resolved(trumpet);
+    elsewhere.out = "elsewhere";
+    elsewhere.force = true;
+    CHECK(run_key(elsewhere) == run_key(resolved(trumpet)));
+    const fs::path full = scratch("every_flag_force", true);
+    std::ofstream(full / "notes.txt") << "kept\n";
+    const auto r = run("evolve " + trumpet + " --force --out " + full.string());
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(written(full).numbers == run_of(trumpet).numbers); // (run_of: another --out)
+    fs::remove_all(full);
+  }
+
+  // known defects: the table says these act here, but the run's numbers are the same, so the
+  // run key tells apart two runs that are the same (same_run.hpp: the same run exactly when
+  // the keys are equal). Reported, not passed silently; a row that acts again fails until it
+  // moves into the table above.
+  const std::vector<std::pair<Acting, std::string>> known{
+      {{"box-taper", boxes, "0.25"},
+       "no fine box reaches beyond --box-taper-from (16 M) with rmax 16: no box is tapered, yet "
+       "the table's row acts on every boxes run"},
+      {{"delta-advection", trumpet, "upwind-gd"},
+       "with --rahA 0 beta_GD is the whole shift, so upwind-gd is upwind-full"},
+      {{"driver-advection", trumpet, "upwind-gd"},
+       "with --rahA 0 beta_H = 0, so upwind-gd is matched (the default)"},
+      {{"driver-advection", trumpet, "upwind-full"},
+       "with --rahA 0 beta_H = 0, so upwind-full is matched (the default)"},
+  };
+  for (const auto& [row, why] : known) {
+    INFO("--" << row.flag << " " << row.value << " on: " << row.base);
+    const Params base = resolved(row.base), with = resolved(row.with());
+    REQUIRE(spec_of(row.flag) != nullptr);
+    CHECK(acts(spec_of(row.flag)->acts, with));
+    CHECK(run_key(with) != run_key(base));
+    const bool same = run_of(row.with()).numbers == run_of(row.base).numbers;
+    if (same)
+      MESSAGE("known defect: --" << row.flag << " " << row.value
+                                 << " changes no number where the table says it acts: " << why);
+    else
+      FAIL_CHECK("--" << row.flag << " " << row.value
+                      << " now changes the numbers: remove it from the known defects");
+  }
+  fs::remove(hAH);
+}
+
+namespace {
+
+/// A number as the command line reads it back exactly (the shortest text that round-trips).
+std::string text(double v) {
+  return fmt::format("{}", v);
+}
+double up(double v) {
+  return std::nextafter(v, std::numeric_limits<double>::infinity());
+}
+double down(double v) {
+  return std::nextafter(v, -std::numeric_limits<double>::infinity());
+}
+/// Just beyond or inside 0: the smallest normal number (a subnormal one is refused as such).
+constexpr double tiny = std::numeric_limits<double>::min();
+
+/// The steps and spacing validate() reads for `args`: the hierarchy's whole step, the finest
+/// level's step and its smallest cell, computed as validate() computes them.
+struct Steps {
+  double dt, dt_finest, min_spacing;
+};
+Steps steps_of(const std::string& args) {
+  const Params p = resolved(args);
+  const EvolutionConfig config = mesh_config(p);
+  const mesh::MeshLayout layout = make_layout(config);
+  const Grid& finest = layout.grid(layout.levels() - 1);
+  return {mesh::hierarchy_dt(layout, config.stepping), time_step(p.cfl, finest),
+          finest.min_spacing()};
+}
+
+/// A row of B: `--key beyond` on `base` is refused naming `flag` (its message holding `why`),
+/// `--key inside` accepted; inside "" is not run (`why_not_inside` says why).
+struct Bound {
+  std::string flag, base, key, beyond, inside, why;
+  std::string why_not_inside = "";
+};
+
+/// The value config text gives `key` (quotes taken off), "" if none.
+std::string config_value(const std::string& config, const std::string& key) {
+  std::istringstream in(config);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key + " = ", 0) == 0) {
+      std::string value = line.substr(key.size() + 3);
+      if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+        value = value.substr(1, value.size() - 2);
+      return value;
+    }
+  return "";
+}
+
+void check_bound(const Bound& b) {
+  const bool has_tmax = b.key == "tmax" || b.base.find("--tmax") != std::string::npos;
+  const std::string args = b.base + (has_tmax ? "" : " --tmax 0") + " --" + b.key + " ";
+  INFO("bound of " << b.flag << ": " << args << "[" << b.beyond << " refused, " << b.inside
+                   << " accepted]");
+  const fs::path out = scratch("every_bound_out");
+  const auto refused = run("evolve " + args + b.beyond + " --out " + out.string());
+  INFO("stderr: " << refused.err);
+  CHECK(refused.status == 2);
+  CHECK(refused.err.rfind("gbssn1d: error: " + b.flag + " = ", 0) == 0);
+  CHECK(refused.err.find(b.why) != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  if (b.inside.empty()) {
+    CHECK_FALSE(b.why_not_inside.empty());
+    return;
+  }
+  const auto accepted = run("evolve " + args + b.inside + " --print-config");
+  INFO("accepted? stderr: " << accepted.err);
+  CHECK(accepted.status == 0);
+  CHECK(config_value(accepted.out, b.key) == b.inside);
+}
+
+/// The flags validate.cpp names (each string literal that is a flag alone).
+std::set<std::string> flags_validate_names() {
+  const std::string source = slurp(fs::path(GBSSN1D_SOURCE_DIR) / "src/config/validate.cpp");
+  const std::regex literal("\"(--[A-Za-z0-9][A-Za-z0-9-]*)\"");
+  std::set<std::string> flags;
+  for (auto it = std::sregex_iterator(source.begin(), source.end(), literal);
+       it != std::sregex_iterator(); ++it)
+    flags.insert((*it)[1].str());
+  return flags;
+}
+
+/// Flags validate.cpp names that have no numeric limit of their own, and why.
+const std::map<std::string, std::string>& no_numeric_limit() {
+  static const std::map<std::string, std::string> flags{
+      {"--grid", "a choice of names (tests/cli/hostile_inputs.txt)"},
+      {"--id", "a choice of names"},
+      {"--lapse0", "a choice of names"},
+      {"--time-interp", "a choice, refused without two or more boxes: no number"},
+      {"--no-subcycling", "a switch, refused without two or more boxes: no number"},
+      {"--rah-profile", "a choice of names"},
+      {"--rah-normal", "a choice of names"},
+      {"--rah-taper", "a choice of names"},
+      {"--driver-advection", "a choice of names"},
+      {"--delta-advection", "a choice of names"},
+      {"--upwind", "a choice, refused with a study variant of --rah-variant: no number"},
+      {"--formulation", "a choice, refused with a study variant of --rah-variant: no number"},
+      {"--rah-variant", "a choice and its combinations (boxes, --ah-every): no number"},
+  };
+  return flags;
+}
+
+} // namespace
+
+TEST_CASE("every flag's bound: each limit validate() enforces is refused just beyond and accepted "
+          "just inside") {
+  const std::string uniform = "--id 1log-trumpet --grid uniform --N 32 --rmax 16";
+  const std::string boxes3 = "--id 1log-trumpet --grid boxes --N 32 --rmax 16";
+  const std::string sinh = "--id 1log-trumpet"; // the default grid: sinh, N 400, rmax 1000
+  const std::string z4c_uniform = uniform + " --formulation z4c";
+  const Params defaults;
+  std::vector<Bound> bounds{
+      // the grid
+      {"--N", "--id 1log-trumpet --grid uniform --rmax 16", "N", "15", "16",
+       "must be at least 16 cells"},
+      {"--N", "--id 1log-trumpet --grid uniform --rmax 16", "N", std::to_string(N_max + 1), "",
+       fmt::format("at most {} cells", N_max),
+       "accepting it builds the grid of N_max cells (12 s, 0.9 GB)"},
+      {"--N", "--id 1log-trumpet --grid boxes --rmax 16 --levels 3", "N", "33", "34",
+       "must be even with --grid boxes"},
+      {"--levels", "--id 1log-trumpet --grid boxes --N 16 --rmax 16", "levels", "0", "1",
+       fmt::format("must lie in 1 ... {}", levels_max)},
+      // (the finest of 30 boxes of 16 cells is 16/2^29/16 = 1.9e-9, above 1e-10 x rmax)
+      {"--levels", "--id 1log-trumpet --grid boxes --N 16 --rmax 16", "levels",
+       std::to_string(levels_max + 1), std::to_string(levels_max),
+       fmt::format("must lie in 1 ... {}", levels_max)},
+      {"--box-taper", boxes3, "box-taper", text(-tiny), "0", "must lie in 0 ... 0.5"},
+      {"--box-taper", boxes3, "box-taper", text(up(0.5)), "0.5", "must lie in 0 ... 0.5"},
+      {"--box-taper-from", boxes3, "box-taper-from", text(-tiny), "0",
+       "must be a finite radius >= 0"},
+      {"--fd-order", uniform, "fd-order", "10", "8", "must be 2, 4, 6 or 8"},
+      {"--fd-order", boxes3, "fd-order", "8", "6", "must be 2, 4 or 6 with --grid boxes"},
+      // lengths in units of M: rmax / M at most rmax_over_M_max (no damping: eta dt would
+      // refuse such cells first)
+      {"--rmax", "--id 1log-trumpet --grid uniform --N 32 --eta 0", "rmax",
+       text(up(rmax_over_M_max)), text(rmax_over_M_max), "is beyond"},
+      {"--M", "--id 1log-trumpet --grid uniform --N 32 --rmax 1 --eta 0 --norm-rmin 0", "M",
+       text(1.0 / rmax_over_M_max * (1 - 1e-9)), text(1.0 / rmax_over_M_max * (1 + 1e-9)),
+       "gives --rmax / M"},
+      {"--M", "--id 1log-trumpet --grid uniform --N 32 --rmax 1 --eta 0 --norm-rmin 0", "M", "0",
+       text(1.0 / rmax_over_M_max * (1 + 1e-9)), "must be > 0"},
+      {"--rmax", "--id 1log-trumpet --grid uniform --N 32", "rmax", text(down(4.0)), "4",
+       "the outer boundary must lie outside the black hole"},
+      {"--rmax", "--id 1log-trumpet --grid sinh --N 32 --dr-inner 0.04", "rmax",
+       text(0.04 * static_cast<double>(sinh_reference_N)),
+       text(up(0.04 * static_cast<double>(sinh_reference_N))), "the sinh map with --dr-inner"},
+      // the gauge, numerics, times and output cadences
+      {"--eta", uniform, "eta", text(-tiny), "0", "must be >= 0"},
+      {"--cfl", uniform, "cfl", text(down(cfl_min)), text(cfl_min), "such steps only accumulate"},
+      {"--cfl", uniform, "cfl", text(up(cfl_max)), text(cfl_max), "outside the stable range"},
+      {"--ko-sigma", uniform, "ko-sigma", text(-tiny), "0", "must lie in [0, 1]"},
+      {"--ko-sigma", uniform, "ko-sigma", text(up(1.0)), "1", "must lie in [0, 1]"},
+      {"--chi-floor", uniform, "chi-floor", text(-tiny), "0", "must lie in [0, 1)"},
+      {"--chi-floor", uniform, "chi-floor", "1", text(down(1.0)), "must lie in [0, 1)"},
+      {"--tmax", uniform, "tmax", text(-tiny), "0", "must be >= 0"},
+      {"--dt-series", uniform, "dt-series", "0", text(tiny), "must be > 0"},
+      {"--dt-series", uniform + " --tmax 1", "dt-series", text(1.0 / rows_max * (1 - 1e-9)),
+       text(1.0 / rows_max * (1 + 1e-9)), "rows to --tmax"},
+      {"--dt-profiles", uniform, "dt-profiles", "0", text(tiny), "must be > 0"},
+      {"--dt-profiles", uniform + " --tmax 1", "dt-profiles", text(100.0 / rows_max * (1 - 1e-9)),
+       text(100.0 / rows_max * (1 + 1e-9)), "profile blocks to --tmax"},
+      {"--checkpoint-every", uniform, "checkpoint-every", text(-tiny), "0", "must be >= 0"},
+      // the norm windows
+      {"--norm-rmin", uniform, "norm-rmin", text(-tiny), "0", "must be >= 0"},
+      {"--norm-rmax", uniform + " --norm-rmin 1", "norm-rmax", "1", text(up(1.0)),
+       "must be > --norm-rmin"},
+      {"--norm-rmax", uniform, "norm-rmax", text(up(16.0)), "16", "must not exceed --rmax"},
+      {"--norm-Rmin", uniform, "norm-Rmin", "0", text(tiny), "must be > 0"},
+      {"--norm-Rmax", uniform, "norm-Rmax", text(defaults.norm_Rmin), text(up(defaults.norm_Rmin)),
+       "must be > --norm-Rmin"},
+      {"--norm-Rint", uniform, "norm-Rint", "0", text(tiny), "must be > 0"},
+      // the horizon-adjusting shift (validated with the shift off too: the values are recorded)
+      {"--rahA", uniform, "rahA", text(-tiny), "0", "must be >= 0"},
+      {"--rah0", uniform, "rah0", "0", text(tiny), "must be > 0"},
+      {"--rah0", uniform + " --rahA 0.5 --rah-rcut 64", "rah0", "16", text(down(16.0)),
+       "must be below --rmax"},
+      {"--rah-width", uniform, "rah-width", "0", text(tiny), "must be > 0"},
+      {"--rah-rcut", uniform, "rah-rcut", "0", text(tiny), "must be > 0"},
+      {"--rah-chi-smooth", uniform, "rah-chi-smooth", "0", text(tiny), "must be > 0"},
+      {"--rah-ramp", uniform, "rah-ramp", text(-tiny), "0", "must be >= 0"},
+      // Z4c's damping
+      {"--kappa1", z4c_uniform, "kappa1", text(-tiny), "0", "must be >= 0"},
+      {"--kappa1-hole", z4c_uniform + " --kappa1 0.5", "kappa1-hole", text(down(0.5)), "0.5",
+       "must be 0 (off) or at least --kappa1"},
+      {"--kappa2", z4c_uniform, "kappa2", "-1", text(up(-1.0)), "must be > -1"},
+      // the horizon searches
+      {"--ah-tol", uniform, "ah-tol", "0", text(tiny), "must be > 0"},
+      {"--ah-every", uniform, "ah-every", "0", "1", "a whole number of steps >= 1"},
+      {"--ah-interval", uniform, "ah-interval", "0", text(tiny), "must be > 0"},
+      {"--ah-tmin", uniform, "ah-tmin", text(-tiny), "0", "must be >= 0"},
+      {"--ah-tmax", uniform + " --ah-tmin 1", "ah-tmax", text(down(1.0)), "1",
+       "must be >= --ah-tmin"},
+  };
+
+  {
+    // the shift must act at the horizon: rcut at least 4 max(rah0, M)
+    const std::string shift = uniform + " --rahA 0.5 --rah0 1.2";
+    const Params p = resolved(shift);
+    const double rcut = 4.0 * std::max(p.rah0, p.M);
+    bounds.push_back({"--rah-rcut", shift, "rah-rcut", text(down(rcut)), text(rcut),
+                      "must be at least 4 max(rah0, M)"});
+  }
+  // the limits that depend on the grid and the step, computed as validate() computes them
+  for (const std::string& grid : {uniform, boxes3, sinh}) {
+    const Steps s = steps_of(grid);
+    // a step to take: tmax/dt above 1e-9, at most steps_max steps
+    bounds.push_back({"--tmax", grid, "tmax", text(s.dt * 1e-9 * (1 - 1e-6)),
+                      text(s.dt * 1e-9 * (1 + 1e-6)), "the run would take no step"});
+    bounds.push_back({"--tmax", grid + " --dt-series 1e300 --dt-profiles 1e300", "tmax",
+                      text(s.dt * (steps_max + 0.5)), text(s.dt * (steps_max - 0.5)),
+                      "would take"});
+    // checkpoints between whole steps of the hierarchy
+    bounds.push_back({"--checkpoint-every", grid, "checkpoint-every", text(s.dt * (1 - 1e-9)),
+                      text(s.dt), "is shorter than the time step"});
+    // the horizon found within 1e-3 of the smallest cell
+    const double ah_tol = ah_tol_over_spacing_max * s.min_spacing;
+    bounds.push_back(
+        {"--ah-tol", grid, "ah-tol", text(up(ah_tol)), text(ah_tol), "must be at most"});
+    // the Gamma-driver's damping, eta dt_finest at most eta_dt_max (the flag named: --cfl)
+    const double eta = eta_dt_max / s.dt_finest;
+    bounds.push_back({"--cfl", grid, "eta", text(eta * (1 + 1e-9)), text(eta * (1 - 1e-9)),
+                      "RK4 limit of the Gamma-driver damping"});
+  }
+  {
+    // Z4c's constraint damping, kappa1 max(2, 2 + kappa2) dt_finest at most eta_dt_max, named
+    // by the flag that makes it too fast; and near the hole (kappa1-hole > kappa1), max(2, 2 +
+    // kappa2) min(kappa1_dr_max cfl, kappa1-hole dt_finest)
+    const Steps s = steps_of(z4c_uniform);
+    const double kappa1 = eta_dt_max / (2.0 * s.dt_finest);
+    bounds.push_back({"--kappa1", z4c_uniform + " --kappa1-hole 0", "kappa1",
+                      text(kappa1 * (1 + 1e-9)), text(kappa1 * (1 - 1e-9)),
+                      "RK4 limit of the constraint damping"});
+    const double kappa2 = eta_dt_max / (1.0 * s.dt_finest);
+    bounds.push_back({"--kappa2", z4c_uniform + " --kappa1-hole 0 --kappa1 1", "kappa2",
+                      text(kappa2 * (1 + 1e-9) - 2.0), text(kappa2 * (1 - 1e-9) - 2.0),
+                      "RK4 limit of the constraint damping"});
+    const Params p = resolved(z4c_uniform);
+    const double near = std::min(Z4cParams::kappa1_dr_max * p.cfl,
+                                 p.kappa1_hole.value_or(kappa1_hole_rule(p)) * s.dt_finest);
+    bounds.push_back({"--kappa2", z4c_uniform, "kappa2", text(eta_dt_max / near * (1 + 1e-9) - 2.0),
+                      text(eta_dt_max / near * (1 - 1e-9) - 2.0), "the damping near the hole"});
+    // (that refusal names --kappa1-hole where kappa2 <= 0: unreachable, the rate per step is
+    // then at most 2 kappa1_dr_max cfl_max)
+    CHECK(2.0 * Z4cParams::kappa1_dr_max * cfl_max <= eta_dt_max);
+  }
+  {
+    // the smallest cell, at least min_spacing_over_rmax x rmax: the sinh grid's innermost width
+    // (its spacings scale with --dr-inner) and the boxes' finest level
+    const std::string base = "--id 1log-trumpet --grid sinh --N 400 --rmax 16";
+    const double least = min_spacing_over_rmax * 16.0;
+    // bisected in the width (the map is not linear in it), to 1e-9 relative
+    double beyond = 1e-10, inside = 1e-8;
+    REQUIRE(steps_of(base + " --dr-inner " + text(beyond)).min_spacing < least);
+    REQUIRE(steps_of(base + " --dr-inner " + text(inside)).min_spacing >= least);
+    while (inside / beyond - 1.0 > 1e-9) {
+      const double mid = std::sqrt(beyond * inside);
+      (steps_of(base + " --dr-inner " + text(mid)).min_spacing < least ? beyond : inside) = mid;
+    }
+    bounds.push_back({"--dr-inner", base, "dr-inner", text(beyond), text(inside),
+                      "which double precision cannot difference"});
+    int levels = 1;
+    while (levels < levels_max
+           && steps_of(boxes3 + " --levels " + std::to_string(levels + 1)).min_spacing >= least)
+      ++levels;
+    REQUIRE(levels < levels_max);
+    bounds.push_back({"--levels", boxes3, "levels", std::to_string(levels + 1),
+                      std::to_string(levels), "which double precision cannot difference"});
+  }
+  // boxes of too few cells for the order's buffer and transfer stencils: an even --N (odd ones
+  // are refused first) below mesh::min_cells; where that lies below --N's minimum of 16 the
+  // limit cannot be reached
+  for (const int order : {2, 4, 6}) {
+    const int least = static_cast<int>(mesh::min_cells(order));
+    INFO("--fd-order " << order << ": at least " << least << " cells a box");
+    if (least <= 16)
+      continue;
+    const int beyond = least % 2 == 0 ? least - 2 : least - 1, inside = beyond + 2;
+    CHECK(beyond >= 16);
+    bounds.push_back(
+        {"--N", "--id 1log-trumpet --grid boxes --rmax 16 --fd-order " + std::to_string(order), "N",
+         std::to_string(beyond), std::to_string(inside),
+         fmt::format("must be at least {} with --grid boxes", least)});
+  }
+
+  for (const auto& b : bounds)
+    check_bound(b);
+
+  // every flag validate.cpp names has a bound row, or no numeric limit (and why)
+  const std::set<std::string> named = flags_validate_names();
+  CHECK(named.size() > 40);
+  std::set<std::string> with_row;
+  for (const auto& b : bounds) {
+    with_row.insert(b.flag);
+    INFO(b.flag << " is not named in validate.cpp");
+    CHECK(named.count(b.flag) == 1);
+  }
+  for (const auto& flag : named) {
+    INFO(flag << " is named in validate.cpp: give it a bound row, or say why it has no limit");
+    CHECK(with_row.count(flag) + no_numeric_limit().count(flag) == 1);
+  }
+  for (const auto& [flag, why] : no_numeric_limit()) {
+    INFO(flag << " (" << why << ") is not named in validate.cpp");
+    CHECK(named.count(flag) == 1);
+  }
+}
+
+TEST_CASE("every flag's tolerance is met: the horizon radius with --ah-tol lies within it of a "
+          "much tighter search, on the uniform and the default sinh grid") {
+  // --ah-tol is the one evolve flag that sets a tolerance (flag_table.cpp). Without the shift the
+  // searches change nothing of the evolution, so the two runs search the same states, at every
+  // row of horizon.dat.
+  const double tight = 1e-14;
+  auto radii = [](const std::string& args) {
+    const fs::path out = scratch("every_tolerance_out");
+    const auto r = run("evolve " + args + " --out " + out.string());
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    const auto table = gbssn1d::testing::read_table((out / "horizon.dat").string());
+    std::vector<double> r_ah;
+    for (std::size_t k = 0; k < table.rows.size(); ++k)
+      r_ah.push_back(table.at(k, "r_ah"));
+    fs::remove_all(out);
+    return r_ah;
+  };
+  // the uniform grid, the default sinh grid (N 400, rmax 1000, dr-inner 0.02), and its map at
+  // 64 cells
+  const std::vector<std::string> grids{"--grid uniform --N 64 --rmax 16", "", "--N 64"};
+  double loose_worst = 0.0; // at the loosest tolerance: the tolerance reached the finder
+  for (const std::string& grid : grids) {
+    for (const std::string id : {"1log-trumpet", "maximal-trumpet", "wormhole"}) {
+      const std::string base = grid + " --id " + id + " --tmax 1 --dt-series 0.25 --dt-profiles 1";
+      const std::vector<double> exact = radii(base + " --ah-tol " + text(tight));
+      REQUIRE(exact.size() == 5);
+      // the loosest tolerance validate() accepts, and tighter ones
+      const double loosest = ah_tol_over_spacing_max * steps_of(base).min_spacing;
+      for (const double tol : {loosest, 1e-6, 1e-8, 1e-10}) {
+        const std::vector<double> found = radii(base + " --ah-tol " + text(tol));
+        REQUIRE(found.size() == exact.size());
+        for (std::size_t k = 0; k < exact.size(); ++k) {
+          INFO(base << " --ah-tol " << tol << ": row " << k << ", r_ah " << found[k] << " against "
+                    << exact[k]);
+          REQUIRE(std::isfinite(exact[k]));
+          CHECK(std::abs(found[k] - exact[k]) <= tol + tight);
+          if (tol == loosest)
+            loose_worst = std::max(loose_worst, std::abs(found[k] - exact[k]));
+        }
+      }
+    }
+  }
+  CHECK(loose_worst > 0.0);
+}
