@@ -8,6 +8,19 @@
 
 namespace gbssn1d {
 
+namespace {
+
+/// B's driver stencil as it differences without beta_H: centred, or one upwind stencil
+/// (upwind-gd and upwind-full agree when beta_GD is the whole shift; matched is the
+/// --delta-advection stencil of Delta^r's own term).
+AdvectionStencil upwind_or_centred(AdvectionStencil driver, const Params& p) {
+  const AdvectionStencil s =
+      driver == AdvectionStencil::matched ? p.delta_advection.value() : driver;
+  return s == AdvectionStencil::centred ? AdvectionStencil::centred : AdvectionStencil::upwind_full;
+}
+
+} // namespace
+
 /// Whether a flag that acts `where` acts in `p`.
 bool acts(Acts where, const Params& p) {
   switch (where) {
@@ -31,6 +44,15 @@ bool acts(Acts where, const Params& p) {
     return damped_z4c(p);
   case Acts::with_searches:
     return shift_on(p) && !uses_hAH_file(p);
+  case Acts::with_tapered_boxes:
+    return p.grid == RadialGrid::boxes && p.levels.value_or(1) > 1
+           && 0.5 * p.rmax > p.box_taper_from * p.M;
+  case Acts::with_delta_stencil:
+    return shift_on(p) || p.delta_advection.value() == AdvectionStencil::centred;
+  case Acts::with_driver_stencil:
+    return shift_on(p)
+           || upwind_or_centred(p.driver_advection.value(), p)
+                  != upwind_or_centred(AdvectionStencil::matched, p);
   }
   return true;
 }
@@ -71,6 +93,19 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
   case Acts::with_z4c:
     return {"with --formulation " + p.formulation.name(),
             "BSSN has no constraint damping (give --formulation z4c)"};
+  case Acts::with_tapered_boxes:
+    if (p.grid == RadialGrid::boxes)
+      return {fmt::format("with no fine box beyond --box-taper-from {} (the largest reaches {} M)",
+                          p.box_taper_from, 0.5 * p.rmax / p.M),
+              "a taper relaxes only boxes reaching beyond --box-taper-from M (give a larger "
+              "--rmax or a smaller --box-taper-from)"};
+    return {"with --grid " + p.grid.name(), "only boxes have boxes"};
+  case Acts::with_delta_stencil:
+  case Acts::with_driver_stencil:
+    return {"with --rahA 0",
+            "without the horizon shift beta_GD is the whole shift: upwind-gd and upwind-full are "
+            "one stencil, and B's matched term is --delta-advection's (give --rahA A, or a "
+            "centred stencil)"};
   case Acts::always:
     break;
   }
@@ -103,7 +138,7 @@ std::vector<ParamSpec> evolution_specs() {
        "--grid boxes: the outermost fraction F of a fine box's cells (round(F N) cells) is "
        "relaxed smoothly towards its parent at every synchronisation (a tapered buffer that "
        "absorbs what the parent cannot carry), 0 ... 0.5; 0: off",
-       Acts::on_boxes},
+       Acts::with_tapered_boxes},
       {"box-taper-from", &Params::box_taper_from, "Grid",
        "--grid boxes: --box-taper only on the boxes that reach beyond this radius, in units "
        "of M",
@@ -220,9 +255,11 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
        "stencil of beta_GD d_r Delta^r in B's driver: matched (Delta^r's own term minus beta_H "
        "d_r Delta^r centred: stable at every spacing) | upwind-gd (published; with the horizon "
        "shift it grows at the grid scale at a rate ~ |beta_H|/dr: a blow-up whose onset time "
-       "falls with the spacing) | upwind-full | centred"},
+       "falls with the spacing) | upwind-full | centred",
+       Acts::with_driver_stencil},
       {"delta-advection", &Params::delta_advection, "Numerics",
-       "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred"},
+       "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred",
+       Acts::with_delta_stencil},
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), extrapolated (after every step, h_AH at the "
        "RK stages from the last four radii; on two or more boxes the same as substage), step, "

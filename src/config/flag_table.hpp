@@ -41,6 +41,16 @@ enum class Acts {
   with_z4c,           ///< --formulation z4c
   with_z4c_damping,   ///< --formulation z4c with its damping on (kappa1 > 0): damped_z4c()
   with_searches,      ///< horizon searches steer the shift: shift_on(), no --rah-hAH-file
+  /// --grid boxes with a fine box reaching beyond --box-taper-from (the level-1 box, rmax/2):
+  /// the only boxes a taper relaxes
+  with_tapered_boxes,
+  /// --delta-advection: with the shift on, or centred (without beta_H, beta_GD is the whole
+  /// shift: upwind-gd is upwind-full)
+  with_delta_stencil,
+  /// --driver-advection: with the shift on, or a stencil other than what the default becomes
+  /// without beta_H (matched is --delta-advection's own term, upwind-gd and upwind-full one
+  /// upwind stencil)
+  with_driver_stencil,
 };
 
 /// Whether a flag that acts `where` acts in `p`.

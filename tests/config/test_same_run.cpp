@@ -102,6 +102,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
   const std::string hAH = shifted + " --rah-hAH-file " + file.string();
   const std::string boxes = "--id 1log-trumpet --grid boxes --levels 3 --N 32 --rmax 16 --tmax 1 "
                             "--dt-series 0.25 --dt-profiles 0.5";
+  const std::string boxes64 = "--id 1log-trumpet --grid boxes --levels 3 --N 32 --rmax 64 "
+                              "--tmax 1 --dt-series 0.25 --dt-profiles 0.5";
   const std::vector<Case> cases{
       {trumpet, "--rah0 0.6", trumpet + " --rahA 0.5"},
       // an explicit profile: auto sets the width itself (--rah-width is then not used)
@@ -140,7 +142,16 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
       {hAH, "--ah-tmin 0.5", shifted},
       {hAH, "--ah-tmax 0.5", shifted},
       // a taper radius without a taper
-      {boxes + " --box-taper 0", "--box-taper-from 2", boxes},
+      {boxes64 + " --box-taper 0", "--box-taper-from 2", boxes64},
+      // a taper where no fine box reaches beyond --box-taper-from (16 M): rmax 16, the largest
+      // fine box 8 M; with rmax 64 the level-1 box reaches 32 M
+      {boxes, "--box-taper 0.25", boxes64},
+      // without the horizon shift beta_GD is the whole shift: upwind-gd is upwind-full, and B's
+      // matched driver term is Delta^r's own (with the shift, upwind-gd differs only where
+      // beta_H turns the full shift against beta_GD: a strong stretch, not --rahA 0.5 --rah0 1)
+      {trumpet, "--delta-advection upwind-gd", trumpet + " --rahA 2 --rah0 1.5"},
+      {trumpet, "--driver-advection upwind-gd", shifted},
+      {trumpet, "--driver-advection upwind-full", shifted},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
@@ -162,7 +173,9 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
         || c.flag == "--rah-rcut 6" || c.flag == "--rah0 0.6" || c.flag == "--dr-inner 0.03"
         || c.flag == "--lapse0 one" || c.flag == "--rah-chi-smooth 0.1"
         || c.flag == "--rah-profile gauss" || c.flag == "--kappa1 0.3" || c.flag == "--ah-tmin 0.5"
-        || c.flag == "--ah-interval 0.5" || c.flag == "--box-taper-from 2")
+        || c.flag == "--ah-interval 0.5" || c.flag == "--box-taper-from 2"
+        || c.flag == "--box-taper 0.25" || c.flag.rfind("--delta-advection", 0) == 0
+        || c.flag.rfind("--driver-advection", 0) == 0)
       CHECK(numbers_of(c.acting + " " + c.flag, "acts_a") != numbers_of(c.acting, "acts_b"));
   }
   fs::remove(file);
@@ -243,10 +256,18 @@ TEST_CASE("a taper radius is warned about where it tapers nothing: without a tap
   CHECK(warned(resolved(boxes + " --box-taper-from 8"), "--box-taper-from 8 (M)") == 1);
   CHECK(warned(resolved(boxes + " --box-taper-from 7.5"), "--box-taper-from") == 0);
   CHECK(warned(resolved(boxes), "--box-taper-from") == 0); // the default 16 M: by design
-  // the taper's radius without a taper: an idle flag
-  const auto untapered = idle_flags(resolved(boxes + " --box-taper 0 --box-taper-from 8"));
+  // the taper's radius without a taper: an idle flag (from 4 M the 8 M box would be tapered)
+  const auto untapered = idle_flags(resolved(boxes + " --box-taper 0 --box-taper-from 4"));
   REQUIRE(untapered.size() == 1);
-  CHECK(untapered[0].warning().rfind("--box-taper-from 8 does nothing with --box-taper 0: ", 0)
+  CHECK(untapered[0].warning().rfind("--box-taper-from 4 does nothing with --box-taper 0: ", 0)
+        == 0);
+  // and a taper where no fine box reaches beyond its radius: idle too, saying why
+  const auto unreached = idle_flags(resolved(boxes + " --box-taper 0.25"));
+  REQUIRE(unreached.size() == 1);
+  CHECK(unreached[0].warning().rfind(
+            "--box-taper 0.25 does nothing with no fine box beyond --box-taper-from 16 (the "
+            "largest reaches 8 M): ",
+            0)
         == 0);
 }
 
