@@ -65,8 +65,12 @@ status=0
 # the horizon moving both ways and the trumpet on five boxes (kernels the faster cases run); and
 # Z4c's converge study, noise for 1000 M (four runs), the flat-space pulse and the damping's rate
 # (102, 298, 70, 75 s under the sanitizers at 66e18bc: Z4c's point loop runs under them in its
-# resume case, on a grid and on boxes, its equations in its point-wise case).
+# resume case, on a grid and on boxes, its equations in its point-wise case); and a converge
+# study interrupted after its first member completed, rerun twice (131 s under the sanitizers at
+# 4778d41: three members to 300 M; a completed member's kept records are read and refused in the
+# faster "converge rerun after completion" and "samples ... flipped byte" cases).
 slow=(
+  "converge interrupted after a member completed"
   "a resumed run's progress line counts its speed from the resume"
   "a stretched horizon (0.89 M) converges at coarse spacing"
   "sweep on a cluster: emitted lines run from any folder"
