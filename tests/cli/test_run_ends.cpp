@@ -344,3 +344,30 @@ TEST_CASE("resume of a folder its user cannot write is refused up front: exit 2 
   fs::remove_all(out);
   fs::remove(err);
 }
+
+TEST_CASE("resume of a completed run to its own tmax does nothing and changes no file, and a "
+          "resumed run does not report its start's horizon again") {
+  const fs::path out = scratch("resume_complete_same_tmax");
+  const auto first =
+      run("evolve --id 1log-trumpet --N 64 --tmax 1 --checkpoint-every 0.5 --out " + out.string());
+  REQUIRE(first.status == 0);
+  CHECK(first.err.find("apparent horizon at t = 0:") != std::string::npos);
+  std::map<std::string, std::string> before;
+  for (const auto& e : fs::directory_iterator(out))
+    before[e.path().filename().string()] = slurp(e.path());
+  // --tmax equal to the run's end: nothing to do (it ran again and rewrote every file)
+  const auto same = run("resume " + out.string() + " --tmax 1");
+  INFO(same.err);
+  CHECK(same.status == 0);
+  CHECK(same.err.find("is complete at t = 1; nothing to do") != std::string::npos);
+  for (const auto& [name, text] : before) {
+    CAPTURE(name);
+    CHECK(slurp(out / name) == text);
+  }
+  // continued to a later tmax: the horizon reported at the start is not reported again
+  const auto later = run("resume " + out.string() + " --tmax 2");
+  INFO(later.err);
+  CHECK(later.status == 0);
+  CHECK(later.err.find("apparent horizon at t =") == std::string::npos);
+  fs::remove_all(out);
+}
