@@ -3,6 +3,8 @@
 #pragma once
 
 #include "../test_support.hpp"
+#include "config/config_file.hpp"
+#include "config/params.hpp"
 
 #include <doctest/doctest.h>
 
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace gbssn1d::testing {
 
@@ -20,6 +23,22 @@ struct Result {
   int status;
   std::string err, out;
 };
+
+/// The words of a command line, split at white space (no quoting).
+inline std::vector<std::string> command_words(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;)
+    out.push_back(w);
+  return out;
+}
+
+/// The resolved parameters of an evolve command line (split at white space, no quoting).
+inline Params resolved_evolve(const std::string& args) {
+  Params p = parse_evolve_args(command_words(args));
+  resolve_defaults(p);
+  return p;
+}
 
 /// The executable run with `args` (a shell command line after the program's name).
 inline Result run(const std::string& args) {

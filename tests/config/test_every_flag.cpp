@@ -39,30 +39,17 @@
 
 namespace fs = std::filesystem;
 using namespace gbssn1d;
+using gbssn1d::testing::command_words;
+using gbssn1d::testing::resolved_evolve;
 using gbssn1d::testing::run;
 using gbssn1d::testing::scratch;
 using gbssn1d::testing::slurp;
 
 // its own namespace: in the sanitizers' unity build it shares a translation unit with
-// test_same_run.cpp, whose helpers have the same names
+// test_same_run.cpp, whose configurations (trumpet, shifted, boxes) have the same names
 namespace every_flag_test {
 
 namespace {
-
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string w; in >> w;)
-    out.push_back(w);
-  return out;
-}
-
-/// The resolved parameters of an evolve command line.
-Params resolved(const std::string& args) {
-  Params p = parse_evolve_args(words(args));
-  resolve_defaults(p);
-  return p;
-}
 
 /// What a run wrote: each .dat file's lines that are not '#' comments (headers echo the flags,
 /// which differ by design), the number of profile blocks, and whether it left a checkpoint.
@@ -248,9 +235,9 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
     if (spec == nullptr)
       continue;
     INFO("--" << row.flag << " " << row.value << " on: " << row.base);
-    const auto given = words(row.base);
+    const auto given = command_words(row.base);
     CHECK(std::find(given.begin(), given.end(), "--" + row.flag) == given.end());
-    const Params base = resolved(row.base), with = resolved(row.with());
+    const Params base = resolved_evolve(row.base), with = resolved_evolve(row.with());
     CHECK(acts(spec->acts, with));
     CHECK(run_key(with) != run_key(base));
     CHECK(run_of(row.with()).numbers != run_of(row.base).numbers);
@@ -262,7 +249,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
     const std::string base = "--id 1log-trumpet --grid uniform --N 32 --rmax 16 --tmax 0.5 "
                              "--dt-profiles 0.5"; // every 0.25 (the default)
     const std::string with = base + " --dt-series 0.125";
-    CHECK(run_key(resolved(with)) != run_key(resolved(base)));
+    CHECK(run_key(resolved_evolve(with)) != run_key(resolved_evolve(base)));
     const Written &a = run_of(base), &b = run_of(with);
     // the rows of timeseries.dat and horizon.dat, at t = 0, 0.125, ..., 0.5 against 0, 0.25, 0.5
     for (const std::string file : {"timeseries.dat", "horizon.dat"}) {
@@ -281,7 +268,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
     const std::string base = "--id 1log-trumpet --grid uniform --N 32 --rmax 16 --tmax 0.5 "
                              "--dt-series 0.25"; // every 5 (the default): t = 0 and the end
     const std::string with = base + " --dt-profiles 0.125";
-    CHECK(run_key(resolved(with)) != run_key(resolved(base)));
+    CHECK(run_key(resolved_evolve(with)) != run_key(resolved_evolve(base)));
     const Written &a = run_of(base), &b = run_of(with);
     CHECK(a.profile_blocks == 2);
     CHECK(b.profile_blocks == 5);
@@ -293,17 +280,18 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
   {
     INFO("--checkpoint-every: a checkpoint, the same numbers");
     const std::string with = trumpet + " --checkpoint-every 0.25";
-    CHECK(run_key(resolved(with)) != run_key(resolved(trumpet))); // recorded: resume keeps it
+    CHECK(run_key(resolved_evolve(with))
+          != run_key(resolved_evolve(trumpet))); // recorded: resume keeps it
     CHECK(run_of(with).checkpoint);
     CHECK_FALSE(run_of(trumpet).checkpoint);
     CHECK(run_of(with).numbers == run_of(trumpet).numbers);
   }
   {
     INFO("--out and --force: the same run, the same numbers");
-    Params elsewhere = resolved(trumpet);
+    Params elsewhere = resolved_evolve(trumpet);
     elsewhere.out = "elsewhere";
     elsewhere.force = true;
-    CHECK(run_key(elsewhere) == run_key(resolved(trumpet)));
+    CHECK(run_key(elsewhere) == run_key(resolved_evolve(trumpet)));
     const fs::path full = scratch("every_flag_force", true);
     std::ofstream(full / "notes.txt") << "kept\n";
     const auto r = run("evolve " + trumpet + " --force --out " + full.string());
@@ -341,7 +329,7 @@ struct Steps {
   double dt, dt_finest, min_spacing;
 };
 Steps steps_of(const std::string& args) {
-  const Params p = resolved(args);
+  const Params p = resolved_evolve(args);
   const EvolutionConfig config = mesh_config(p);
   const mesh::MeshLayout layout = make_layout(config);
   const Grid& finest = layout.grid(layout.levels() - 1);
@@ -517,7 +505,7 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
   {
     // the shift must act at the horizon: rcut at least 4 max(rah0, M)
     const std::string shift = uniform + " --rahA 0.5 --rah0 1.2";
-    const Params p = resolved(shift);
+    const Params p = resolved_evolve(shift);
     const double rcut = 4.0 * std::max(p.rah0, p.M);
     bounds.push_back({"--rah-rcut", shift, "rah-rcut", text(down(rcut)), text(rcut),
                       "must be at least 4 max(rah0, M)"});
@@ -556,7 +544,7 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
     bounds.push_back({"--kappa2", z4c_uniform + " --kappa1-hole 0 --kappa1 1", "kappa2",
                       text(kappa2 * (1 + 1e-9) - 2.0), text(kappa2 * (1 - 1e-9) - 2.0),
                       "RK4 limit of the constraint damping"});
-    const Params p = resolved(z4c_uniform);
+    const Params p = resolved_evolve(z4c_uniform);
     const double near = std::min(Z4cParams::kappa1_dr_max * p.cfl,
                                  p.kappa1_hole.value_or(kappa1_hole_rule(p)) * s.dt_finest);
     bounds.push_back({"--kappa2", z4c_uniform, "kappa2", text(eta_dt_max / near * (1 + 1e-9) - 2.0),

@@ -21,26 +21,13 @@
 
 namespace fs = std::filesystem;
 using namespace gbssn1d;
+using gbssn1d::testing::command_words;
+using gbssn1d::testing::resolved_evolve;
 using gbssn1d::testing::run;
 using gbssn1d::testing::scratch;
 using gbssn1d::testing::slurp;
 
 namespace {
-
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string w; in >> w;)
-    out.push_back(w);
-  return out;
-}
-
-/// The resolved parameters of an evolve command line.
-Params resolved(const std::string& args) {
-  Params p = parse_evolve_args(words(args));
-  resolve_defaults(p);
-  return p;
-}
 
 /// The names of the flags idle_flags() calls idle in `p`.
 std::set<std::string> idle_names(const Params& p) {
@@ -157,7 +144,7 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     const Case& c = cases[k];
     INFO("flag " << c.flag << " with " << c.base);
     // the table: idle with the base, and the same run key
-    const Params base = resolved(c.base), with = resolved(c.base + " " + c.flag);
+    const Params base = resolved_evolve(c.base), with = resolved_evolve(c.base + " " + c.flag);
     const std::string name = c.flag.substr(2, c.flag.find(' ') - 2);
     CHECK(idle_names(with).count(name) == 1);
     CHECK(idle_names(base).count(name) == 0);
@@ -166,7 +153,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     // the runs: the same numbers
     CHECK(numbers_of(c.base + " " + c.flag, "idle_a") == numbers_of(c.base, "idle_b"));
     // where it acts: another key, other numbers
-    const Params acting = resolved(c.acting), acting_with = resolved(c.acting + " " + c.flag);
+    const Params acting = resolved_evolve(c.acting),
+                 acting_with = resolved_evolve(c.acting + " " + c.flag);
     CHECK(idle_names(acting_with).count(name) == 0);
     CHECK(run_key(acting_with) != run_key(acting));
     if (c.flag.rfind("--rah-variant midstep", 0) == 0 || c.flag.rfind("--rah-hAH", 0) == 0
@@ -183,10 +171,10 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
 
 TEST_CASE("idle flags: named with their values, grouped by why, in the run's warnings, and a "
           "resolved default is not one") {
-  const Params quiet = resolved(trumpet);
+  const Params quiet = resolved_evolve(trumpet);
   CHECK(idle_flags(quiet).empty());
   CHECK(warnings(quiet).empty()); // box-taper resolved to 0 on a single grid: not given
-  const Params p = resolved(trumpet + " --rah0 0.6 --rah-profile gauss --dr-inner 0.03");
+  const Params p = resolved_evolve(trumpet + " --rah0 0.6 --rah-profile gauss --dr-inner 0.03");
   const auto idle = idle_flags(p);
   REQUIRE(idle.size() == 2);
   CHECK(idle[0].because == "with --grid uniform");
@@ -199,14 +187,14 @@ TEST_CASE("idle flags: named with their values, grouped by why, in the run's war
   CHECK(std::count(w.begin(), w.end(), idle[0].warning()) == 1);
   CHECK(std::count(w.begin(), w.end(), idle[1].warning()) == 1);
   // smooth normal's chi_s with the shift on but another normal
-  const auto chi = idle_flags(resolved(trumpet + " --rahA 0.5 --rah-chi-smooth 0.1"));
+  const auto chi = idle_flags(resolved_evolve(trumpet + " --rahA 0.5 --rah-chi-smooth 0.1"));
   REQUIRE(chi.size() == 1);
   CHECK(chi[0].because == "with --rah-normal conformal");
 }
 
 TEST_CASE("the effective configuration: without --out and --force, idle flags at their "
           "resolved defaults, the rest as given") {
-  Params p = resolved(trumpet + " --rah0 0.6 --ko-sigma 0.2");
+  Params p = resolved_evolve(trumpet + " --rah0 0.6 --ko-sigma 0.2");
   p.out = "somewhere";
   p.force = true;
   const Params e = effective(p);
@@ -226,20 +214,21 @@ TEST_CASE("the horizon searches' flags do nothing without the shift or with an h
                          [&](const std::string& s) { return s.rfind(start, 0) == 0; });
   };
   // the searches with the shift off
-  const auto off = idle_flags(resolved(trumpet + " --ah-every 4 --ah-tmin 1 --ah-tmax 2"));
+  const auto off = idle_flags(resolved_evolve(trumpet + " --ah-every 4 --ah-tmin 1 --ah-tmax 2"));
   REQUIRE(off.size() == 1);
   CHECK(off[0].warning().rfind("--ah-every 4, --ah-tmin 1, --ah-tmax 2 do nothing with --rahA 0", 0)
         == 0);
   // midstep-update changes when h_AH is searched for: nothing is with an h_AH file
   const std::string file = trumpet + " --rahA 0.5 --rah-hAH-file h.dat";
-  const Params midstep = resolved(file + " --ah-every step --rah-variant midstep-update");
+  const Params midstep = resolved_evolve(file + " --ah-every step --rah-variant midstep-update");
   CHECK(warned(midstep, "--rah-variant midstep-update does nothing with --rah-hAH-file") == 1);
   const auto idle = idle_flags(midstep);
   REQUIRE(idle.size() == 1);
   CHECK(idle[0].warning().rfind("--ah-every step does nothing with --rah-hAH-file: ", 0) == 0);
-  CHECK(warned(resolved(file), "--rah-variant") == 0);
-  CHECK(warned(resolved(file + " --ah-tmin 1"), "--ah-tmin 1 does nothing with --rah-hAH-file")
-        == 1);
+  CHECK(warned(resolved_evolve(file), "--rah-variant") == 0);
+  CHECK(
+      warned(resolved_evolve(file + " --ah-tmin 1"), "--ah-tmin 1 does nothing with --rah-hAH-file")
+      == 1);
 }
 
 TEST_CASE("a taper radius is warned about where it tapers nothing: without a taper, or beyond "
@@ -252,17 +241,17 @@ TEST_CASE("a taper radius is warned about where it tapers nothing: without a tap
   };
   const std::string beyond = "--box-taper-from 1000000 (M) lies beyond every fine box (the "
                              "largest ends at r = rmax/2 = 8 M): --box-taper 0.5 tapers no box";
-  CHECK(warned(resolved(boxes + " --box-taper-from 1e6"), beyond) == 1);
-  CHECK(warned(resolved(boxes + " --box-taper-from 8"), "--box-taper-from 8 (M)") == 1);
-  CHECK(warned(resolved(boxes + " --box-taper-from 7.5"), "--box-taper-from") == 0);
-  CHECK(warned(resolved(boxes), "--box-taper-from") == 0); // the default 16 M: by design
+  CHECK(warned(resolved_evolve(boxes + " --box-taper-from 1e6"), beyond) == 1);
+  CHECK(warned(resolved_evolve(boxes + " --box-taper-from 8"), "--box-taper-from 8 (M)") == 1);
+  CHECK(warned(resolved_evolve(boxes + " --box-taper-from 7.5"), "--box-taper-from") == 0);
+  CHECK(warned(resolved_evolve(boxes), "--box-taper-from") == 0); // the default 16 M: by design
   // the taper's radius without a taper: an idle flag (from 4 M the 8 M box would be tapered)
-  const auto untapered = idle_flags(resolved(boxes + " --box-taper 0 --box-taper-from 4"));
+  const auto untapered = idle_flags(resolved_evolve(boxes + " --box-taper 0 --box-taper-from 4"));
   REQUIRE(untapered.size() == 1);
   CHECK(untapered[0].warning().rfind("--box-taper-from 4 does nothing with --box-taper 0: ", 0)
         == 0);
   // and a taper where no fine box reaches beyond its radius: idle too, saying why
-  const auto unreached = idle_flags(resolved(boxes + " --box-taper 0.25"));
+  const auto unreached = idle_flags(resolved_evolve(boxes + " --box-taper 0.25"));
   REQUIRE(unreached.size() == 1);
   CHECK(unreached[0].warning().rfind(
             "--box-taper 0.25 does nothing with no fine box beyond --box-taper-from 16 (the "
@@ -272,14 +261,15 @@ TEST_CASE("a taper radius is warned about where it tapers nothing: without a tap
 }
 
 TEST_CASE("--kappa2 does nothing without damping (it only ever multiplies kappa1): warned about") {
-  const auto z4c =
-      idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0 --kappa2 0.5"));
+  const auto z4c = idle_flags(
+      resolved_evolve(trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0 --kappa2 0.5"));
   REQUIRE(z4c.size() == 1);
   CHECK(z4c[0].warning().rfind("--kappa2 0.5 does nothing with --kappa1 0 --kappa1-hole 0: ", 0)
         == 0);
-  CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa2 0.5")).empty());
+  CHECK(idle_flags(resolved_evolve(trumpet + " --formulation z4c --kappa2 0.5")).empty());
   // the damping near the hole is damping too
-  CHECK(idle_flags(resolved(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5")).empty());
+  CHECK(
+      idle_flags(resolved_evolve(trumpet + " --formulation z4c --kappa1 0 --kappa2 0.5")).empty());
 }
 
 TEST_CASE("rule values are recorded as such in config.toml and read back as unset: a Z4c run's "
@@ -311,9 +301,9 @@ TEST_CASE("rule values are recorded as such in config.toml and read back as unse
   CHECK(slurp(m / "config.toml").find("\nkappa1 = 0.01\n") != std::string::npos);
   CHECK(slurp(m / "config.toml").find("\neta = 1\n") != std::string::npos);
   // given on the command line, a value equal to its rule's is still a rule's value
-  CHECK(rule_valued_keys(resolved(trumpet + " --formulation z4c --kappa1 0.02"))
+  CHECK(rule_valued_keys(resolved_evolve(trumpet + " --formulation z4c --kappa1 0.02"))
         == std::vector<std::string>{"eta", "kappa1", "kappa1-hole", "norm-rmax", "box-taper"});
-  CHECK(rule_valued_keys(resolved(trumpet + " --formulation z4c --kappa1 0.05"))
+  CHECK(rule_valued_keys(resolved_evolve(trumpet + " --formulation z4c --kappa1 0.05"))
         == std::vector<std::string>{"eta", "kappa1-hole", "norm-rmax", "box-taper"});
   // a line naming a key no rule gives is refused (it would leave a given value unset)
   std::ofstream(b / "edited.toml") << "N = 64\n# rule values, not given: N\n";
@@ -334,7 +324,8 @@ TEST_CASE("rule values are recorded as such in config.toml and read back as unse
 TEST_CASE("--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and "
           "numbers, idle in BSSN alone") {
   const std::string undamped = trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0";
-  const Params base = resolved(undamped), with = resolved(undamped + " --z4c-lapse-adm");
+  const Params base = resolved_evolve(undamped),
+               with = resolved_evolve(undamped + " --z4c-lapse-adm");
   CHECK(idle_names(with).count("z4c-lapse-adm") == 0);
   CHECK(idle_names(with) == idle_names(base));
   const auto w = warnings(with);
@@ -346,9 +337,11 @@ TEST_CASE("--z4c-lapse-adm acts in Z4c without damping: its own run key, config 
   CHECK(config_text(effective(base)).find("z4c-lapse-adm = false") != std::string::npos);
   CHECK(numbers_of(undamped + " --z4c-lapse-adm", "adm_a") != numbers_of(undamped, "adm_b"));
   // with damping it acts too, and in BSSN it is idle: there is no Theta
-  CHECK(idle_names(resolved(trumpet + " --formulation z4c --z4c-lapse-adm")).count("z4c-lapse-adm")
+  CHECK(idle_names(resolved_evolve(trumpet + " --formulation z4c --z4c-lapse-adm"))
+            .count("z4c-lapse-adm")
         == 0);
-  const Params bssn = resolved(trumpet), bssn_with = resolved(trumpet + " --z4c-lapse-adm");
+  const Params bssn = resolved_evolve(trumpet),
+               bssn_with = resolved_evolve(trumpet + " --z4c-lapse-adm");
   CHECK(idle_names(bssn_with).count("z4c-lapse-adm") == 1);
   CHECK(run_key(bssn_with) == run_key(bssn));
 }
