@@ -34,6 +34,32 @@ double lagrange(const std::vector<std::array<double, 2>>& points, double t) {
   return sum;
 }
 
+/// The 1+log trumpet on five boxes (rmax 32 M, N = 20) with the horizon shift (A = 0.5, h = 1),
+/// its levels' states and right-hand sides, and a horizon tracker over them (extrapolated h_AH).
+struct BoxesTracker {
+  static Params params() {
+    Params p;
+    p.grid = RadialGrid::boxes;
+    p.levels = 5;
+    p.rmax = 32.0;
+    p.N = 20;
+    p.id = InitialDataKind::onelog_trumpet;
+    p.rahA = 0.5;
+    p.rah0 = 1.0;
+    return p;
+  }
+  static std::vector<GbssnRhs> rhs_of(const Simulation& sim) {
+    std::vector<GbssnRhs> r;
+    for (std::size_t l = 0; l < sim.layout().levels(); ++l)
+      r.emplace_back(sim.layout().grid(l), sim.config().rhs);
+    return r;
+  }
+  const Simulation sim = simulation(params());
+  std::vector<State> levels = sim.level_states();
+  std::vector<GbssnRhs> rhs = rhs_of(sim);
+  HorizonTracker tracker{sim.config(), sim.layout(), levels, rhs};
+};
+
 } // namespace
 
 // Guards the length of the extrapolated mode's history (horizon_tracker.cpp, search_at_step):
@@ -41,20 +67,11 @@ double lagrange(const std::vector<std::array<double, 2>>& points, double t) {
 // 1e-6 without any test failing).
 TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a "
           "horizon moving as a cubic in t") {
-  Params p;
-  p.grid = RadialGrid::boxes;
-  p.levels = 5;
-  p.rmax = 32.0;
-  p.N = 20;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.rahA = 0.5;
-  p.rah0 = 1.0;
-  const Simulation sim = simulation(p);
-  std::vector<State> levels = sim.level_states();
-  std::vector<GbssnRhs> rhs;
-  for (std::size_t l = 0; l < sim.layout().levels(); ++l)
-    rhs.emplace_back(sim.layout().grid(l), sim.config().rhs);
-  HorizonTracker tracker(sim.config(), sim.layout(), levels, rhs);
+  BoxesTracker boxes;
+  const Simulation& sim = boxes.sim;
+  std::vector<State>& levels = boxes.levels;
+  std::vector<GbssnRhs>& rhs = boxes.rhs;
+  HorizonTracker& tracker = boxes.tracker;
   REQUIRE(tracker.mode() == HorizonTracker::Mode::extrapolated);
 
   auto M_of = [](double t) { return 1.0 + 0.02 * t + 0.03 * t * t * t; };
@@ -113,20 +130,8 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
 // 8.2e-6, earlier: 7.6e-6).
 TEST_CASE("the start's pilot: h_AH between the pilot's radii is the cubic through the two radii "
           "before t and the two after") {
-  Params p;
-  p.grid = RadialGrid::boxes;
-  p.levels = 5;
-  p.rmax = 32.0;
-  p.N = 20;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.rahA = 0.5;
-  p.rah0 = 1.0;
-  const Simulation sim = simulation(p);
-  std::vector<State> levels = sim.level_states();
-  std::vector<GbssnRhs> rhs;
-  for (std::size_t l = 0; l < sim.layout().levels(); ++l)
-    rhs.emplace_back(sim.layout().grid(l), sim.config().rhs);
-  HorizonTracker tracker(sim.config(), sim.layout(), levels, rhs);
+  BoxesTracker boxes;
+  HorizonTracker& tracker = boxes.tracker;
   REQUIRE(tracker.mode() == HorizonTracker::Mode::extrapolated);
   REQUIRE(tracker.wants_start_nodes());
   tracker.start(0.0);
