@@ -183,6 +183,13 @@ mistakes=(
   "the horizon's root tolerance divided by dx/dr|src/horizon/apparent_horizon.cpp|params.tolerance * grid.inv_dr_dx()|params.tolerance / grid.inv_dr_dx()|--ah-tol bounds the error of the horizon's radius in r, on the sinh and the uniform grid"
   "the maximal trumpet's puncture series from u = 1e-7|src/initial_data/maximal_trumpet.cpp|  if (ln_u_small < std::log(1e-17))|  if (ln_u_small < std::log(1e-7))|MaximalTrumpet near the puncture: alpha, R and the initial data's fields to round-off across the switch to the puncture limit"
   "the start's pilot interpolating one node off centre|src/evolution/horizon_tracker.cpp|(after - nodes.begin()) - 2, 0, last_start)|(after - nodes.begin()) - 1, 0, last_start)|the start's pilot: h_AH between the pilot's radii is the cubic through the two radii before t and the two after"
+  "the horizon scan stopping where the lower node of a cell is inside r_min|src/horizon/apparent_horizon.cpp|    if (grid.r()[grid.first_interior() + k] < params.r_min)|    if (grid.r()[grid.first_interior() + lo] < params.r_min)|a horizon in the cell that straddles the scan's inner limit is found: the wormhole's throat on the edge of the finest box"
+  "a resumed run forgetting it reported the horizon|src/evolution/simulation_checkpoint.cpp|  reported_ = c.reported;|  reported_ = false;|resume of a completed run to its own tmax does nothing and changes no file, and a resumed run does not report its start's horizon again"
+  "resume of a completed run to its own tmax runs again|src/cli/evolve_resume.cpp|p.tmax <= written.t_last)) {|p.tmax < written.t_last)) {|resume of a completed run to its own tmax does nothing and changes no file, and a resumed run does not report its start's horizon again"
+  "config \\u escapes up to 00FF read|src/config/config_reader.cpp|code > 0x7f)|code > 0xff)|config files read back every string exactly: '#', quotes, backslashes, newlines"
+  "the areal norm's interior cells weighted by their neighbours' whole distance|src/diagnostics/constraints.cpp|    const double dR = std::abs(R_areal[hi] - R_areal[lo]) / static_cast<double>(hi - lo);|    const double dR = std::abs(R_areal[hi] - R_areal[lo]);|the areal norm weights an end cell by its one-sided dR, an interior cell by half its neighbours' distance"
+  "beta_GD's second derivative with the map's term of the wrong sign|src/gbssn/rhs_loop.hpp|                     + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|                     - fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|the horizon shift on with h_AH held at h is the run without it, on the uniform and the sinh grid"
+  "dissipation at sigma/dx, not the cell's sigma/dr|src/gbssn/rhs_loop.hpp|      const double ko = ko_scale * inv_rx[i];|      const double ko = ko_scale;|Kreiss-Oliger dissipation damps the highest grid mode of each field at sigma/dr, that field alone, every order, both formulations, uniform and sinh grids"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
@@ -254,7 +261,9 @@ problem() {
 whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
                "the published driver stencil as the default again"
                "driver-full-shift a no-op" "--force keeps the earlier run's checkpoint"
-               "Z4c's ADM-K lapse driven by K-hat + Theta")
+               "Z4c's ADM-K lapse driven by K-hat + Theta"
+               "beta_GD's second derivative with the map's term of the wrong sign"
+               "dissipation at sigma/dx, not the cell's sigma/dr")
 if [ -n "$only" ]; then
   selected=()
   for m in "${mistakes[@]}"; do

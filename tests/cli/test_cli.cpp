@@ -424,6 +424,8 @@ TEST_CASE("config files read back every string exactly: '#', quotes, backslashes
            {"N = 1\nN = 2\n", "line 2: key 'N' is given again (first on line 1)"},
            {"out = \"abc\n", "line 1: key 'out': its string has no closing"},
            {"out = \"a\\qb\"\n", "unknown escape"},
+           {"out = \"run\\u00E9\"\n", "\\u escapes above 007F are not read"},
+           {"out = \"run\\u0080\"\n", "\\u escapes above 007F are not read"},
            {"N = 1 2\n", "'2' after its value"},
            {"N = [1, 2]\n", "needs exactly one value"}}) {
     INFO(text);
@@ -434,6 +436,10 @@ TEST_CASE("config files read back every string exactly: '#', quotes, backslashes
       CHECK(std::string(e.what()).find(why) != std::string::npos);
     }
   }
+  // the highest escape read: 007F, one byte
+  CHECK(read_config_text("out = \"a\\u007Fb\\u0041\"\n", "f").at(0).second
+        == "a\x7f"
+           "bA");
 }
 
 TEST_CASE("help pages say what a newcomer needs: evolve's few common flags first, each study's "

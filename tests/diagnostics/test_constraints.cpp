@@ -65,6 +65,23 @@ TEST_CASE("the areal and interior norms of an empty window are NaN, not 0") {
   CHECK(std::isnan(l2_norm_interior(f, R, g, 1.0))); // the innermost point already has R > 1
 }
 
+TEST_CASE("the areal norm weights an end cell by its one-sided dR, an interior cell by half "
+          "its neighbours' distance") {
+  // R = 1 ... 5, uniform: every cell's |dR| is 1, the first and last one-sided (R_1 - R_0,
+  // R_4 - R_3), the others centred ((R_{k+1} - R_{k-1}) / 2). By hand: sqrt((9 + 4 * 1) / 5).
+  const std::vector<double> R{1.0, 2.0, 3.0, 4.0, 5.0};
+  const std::vector<double> f{3.0, 1.0, 1.0, 1.0, 1.0};
+  CHECK(l2_norm_areal(f, R, 1.0, 5.0) == doctest::Approx(std::sqrt(13.0 / 5.0)).epsilon(1e-15));
+  // the outer end: sqrt((1 + 1 + 9) / 3) over R = 3, 4, 5
+  const std::vector<double> g{1.0, 1.0, 1.0, 1.0, 3.0};
+  CHECK(l2_norm_areal(g, R, 3.0, 5.0) == doctest::Approx(std::sqrt(11.0 / 3.0)).epsilon(1e-15));
+  // non-uniform: R = 1, 2, 4, 8; weights 1, 1.5, 3, 4; f^2 = 1, 4, 9, 16
+  const std::vector<double> Rn{1.0, 2.0, 4.0, 8.0}, fn{1.0, 2.0, 3.0, 4.0};
+  CHECK(l2_norm_areal(fn, Rn, 0.5, 9.0)
+        == doctest::Approx(std::sqrt((1.0 + 4.0 * 1.5 + 9.0 * 3.0 + 16.0 * 4.0) / 9.5))
+               .epsilon(1e-15));
+}
+
 TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("horizon_dat", true);

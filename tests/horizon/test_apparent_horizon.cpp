@@ -1,6 +1,7 @@
 // The apparent-horizon finder on the three initial data sets: M_AH -> M at 4th order or better,
 // |M_AH - M| < 1e-6 at spacing M/64, and the coordinate radius where the data put it.
 #include "config/params.hpp"
+#include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "horizon/apparent_horizon.hpp"
 
@@ -163,6 +164,38 @@ TEST_CASE("the finder reaches the first cells: the wormhole's throat at N = 96 o
   const auto near = find_horizon_near(coarse.state(), coarse.grid(), {}, 0.5);
   REQUIRE(near.has_value());
   CHECK(near->r == r_coarse);
+}
+
+TEST_CASE("a horizon in the cell that straddles the scan's inner limit is found: the wormhole's "
+          "throat on the edge of the finest box") {
+  // uniform M/6: nodes at r = 0.4167 and 0.5833 around the throat at r = M/2; the scan's inner
+  // limit between the lower node and the throat (where a coarser level's limit, the extent of
+  // the box inside it, can lie) still holds the throat
+  Params p = grid_params("wormhole", 96);
+  p.rmax = 16.0;
+  const Simulation sim = simulation(p);
+  const std::size_t i = sim.grid().first_interior();
+  REQUIRE(sim.grid().r()[i + 2] < 0.45);
+  REQUIRE(sim.grid().r()[i + 3] > 0.55);
+  HorizonFinderParams limited;
+  limited.r_min = 0.45;
+  const auto found = find_horizons(sim.state(), sim.grid(), limited);
+  REQUIRE(found.horizon().has_value());
+  CHECK(std::abs(found.horizon()->r - 0.5) < 0.02);
+  limited.r_min = 0.6; // beyond the cell: no horizon
+  CHECK_FALSE(find_horizons(sim.state(), sim.grid(), limited).horizon().has_value());
+
+  // eight boxes to 64 M at N = 32: the finest covers r <= 0.5, so the throat lies on its edge
+  // and in the first cell of the next level's search
+  Params b = grid_params("wormhole", 32);
+  b.grid = RadialGrid::boxes;
+  b.rmax = 64.0;
+  b.levels = 8;
+  const Simulation boxes = simulation(b);
+  REQUIRE(boxes.layout().extent(boxes.layout().levels() - 1) == doctest::Approx(0.5));
+  const auto on_edge = find_all_horizons(boxes.layout(), boxes.level_states(), {}, 0.0);
+  REQUIRE(on_edge.horizon().has_value());
+  CHECK(std::abs(on_edge.horizon()->r - 0.5) < 0.02);
 }
 
 // The RK substages' search (find_horizon_near without the areal radius) must find the same
