@@ -59,6 +59,8 @@ DECL = [
     re.compile(r'^#[ \t]*define[ \t]+(\w+)', re.M),
     # a function whose return type is on the line before (clang-format's wrap)
     re.compile(r'^([A-Za-z_]\w*)\(', re.M),
+    # a function returning decltype(auto)
+    re.compile(r'^decltype\(auto\)[ \t]+(\w+)\(', re.M),
     # a function or constant at namespace scope: a declaration starting in column 0
     re.compile(r'^(?:template[ \t]*<[^\n]*>\n)?(?:(?:inline|constexpr|static|extern|const)[ \t]+'
                r'|\[\[[^\]]*\]\][ \t]*)*[A-Za-z_][\w:<>,\*& \t]*?[ \t\*&](\w+)[ \t]*(?:\(|=|\{|;)',

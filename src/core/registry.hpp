@@ -56,23 +56,57 @@ constexpr const VarInfo& info(Var v) {
   return registry[index(v)];
 }
 
+/// What a formulation declares, so that the rest of the code asks it instead of branching on
+/// its name: the registry rows it evolves, how the ADM K is read from them, and the series
+/// columns and legend of its own besides every formulation's.
+struct FormulationTraits {
+  Formulation formulation;
+  /// It evolves the registry's first n_fields rows.
+  std::size_t n_fields;
+  /// The ADM K = (K's row) + adm_K_theta Theta: 0 where K's row is the ADM K (BSSN); 2 where
+  /// it is K-hat = K - 2 Theta (Z4c, (Z1)).
+  double adm_K_theta;
+  /// timeseries.dat's columns of its own, after every formulation's (io/output.cpp).
+  std::span<const std::string_view> extra_series;
+  /// Their line of the series legend (empty: none).
+  std::string_view series_legend;
+
+  constexpr std::span<const VarInfo> rows() const { return {registry.data(), n_fields}; }
+  constexpr bool evolves(Var v) const { return index(v) < n_fields; }
+  /// K's row holds the ADM K itself.
+  constexpr bool K_is_adm() const { return adm_K_theta == 0.0; }
+};
+
+inline constexpr std::array<std::string_view, 3> z4c_extra_series{"G_L2_R", "Theta_L2_ext",
+                                                                  "Theta_L2_R"};
+
+/// One row per Formulation, in enum order: BSSN (Sec. 2-3), all rows but Theta; Z4c (Sec. 17),
+/// all ten, with K-hat in K's row.
+inline constexpr std::array<FormulationTraits, 2> formulations{{
+    {Formulation::bssn, n_vars - 1, 0.0, {}, ""},
+    {Formulation::z4c, n_vars, 2.0, z4c_extra_series,
+     "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
+     "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "
+     "coordinate one\n"},
+}};
+
+constexpr const FormulationTraits& traits(Formulation f) {
+  return formulations[static_cast<std::size_t>(f)];
+}
+
 /// How many variables formulation f evolves: the registry's first rows.
 constexpr std::size_t n_evolved(Formulation f) {
-  return f == Formulation::z4c ? n_vars : n_vars - 1;
+  return traits(f).n_fields;
 }
 
 /// The registry rows formulation f evolves, in order.
 constexpr std::span<const VarInfo> evolved(Formulation f) {
-  return {registry.data(), n_evolved(f)};
+  return traits(f).rows();
 }
 
-/// The formulation whose state holds `n_fields` variables (a state's size over the points).
-constexpr std::optional<Formulation> formulation_with(std::size_t n_fields) {
-  if (n_fields == n_evolved(Formulation::bssn))
-    return Formulation::bssn;
-  if (n_fields == n_evolved(Formulation::z4c))
-    return Formulation::z4c;
-  return std::nullopt;
+/// The ADM K from K's row and Theta's (Theta is read only where the formulation needs it).
+constexpr double adm_K(const FormulationTraits& f, double K_row, double Theta) {
+  return f.K_is_adm() ? K_row : K_row + f.adm_K_theta * Theta;
 }
 
 /// One number per evolved variable, indexed by the registry: values[index(v)] is v's.
@@ -89,6 +123,10 @@ constexpr std::optional<Var> var_from_name(std::string_view name) {
       return entry.var;
   return std::nullopt;
 }
+
+// The formulations' table must list them in enum order.
+static_assert(formulations[0].formulation == Formulation::bssn
+              && formulations[1].formulation == Formulation::z4c);
 
 // The registry must list the variables in enum order.
 static_assert([] {

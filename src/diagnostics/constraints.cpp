@@ -17,7 +17,7 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
   out.R_areal.resize(n);
   out.Theta_plus.resize(n);
   out.m_ms.resize(n);
-  if (formulation_of(u, grid) == Formulation::z4c) {
+  if (traits(u.formulation()).evolves(Var::Theta)) {
     const auto theta = field(u, grid, Var::Theta).subspan(grid.first_interior(), n);
     out.Theta.assign(theta.begin(), theta.end());
   }

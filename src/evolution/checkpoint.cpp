@@ -84,7 +84,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
                           c.marks.profiles_header, c.marks.horizons_header, c.marks.series_hash,
                           c.marks.profiles_hash, c.marks.horizons_hash})
     put(v);
-  auto put_state = [&](const State& u) {
+  auto put_state = [&](const StateValues& u) {
     put(std::uint64_t{u.size()});
     put_bytes(u.data(), u.size() * sizeof(double));
   };
@@ -94,7 +94,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   };
   put_state(c.u);
   put(std::uint64_t{c.finer.size()});
-  for (const State& u : c.finer)
+  for (const StateValues& u : c.finer)
     put_state(u);
   put(std::uint64_t{c.level_h_AH.size()});
   for (const auto& h : c.level_h_AH)
@@ -201,7 +201,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   if (c.marks.hashed)
     for (std::uint64_t* v : {&c.marks.series_hash, &c.marks.profiles_hash, &c.marks.horizons_hash})
       *v = r.get<std::uint64_t>();
-  auto get_state = [&](State& u) {
+  auto get_state = [&](StateValues& u) {
     const auto n = r.get<std::uint64_t>();
     if (n > r.left() / sizeof(double))
       throw CheckpointError(fmt::format("{} is corrupt (its value count)", file.string()));
@@ -222,7 +222,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   get_state(c.u);
   if (format >= 3) {
     c.finer.resize(get_count(sizeof(std::uint64_t)));
-    for (State& u : c.finer)
+    for (StateValues& u : c.finer)
       get_state(u);
     c.level_h_AH.resize(get_count(9));
     for (auto& h : c.level_h_AH)
@@ -255,12 +255,12 @@ constexpr std::size_t legacy_ghosts = 3;
 /// size for `grid`: the interior and the old outer ghosts are kept, the origin ghosts refilled
 /// by parity, the new outermost ghosts copied from the last old one. At 4th order nothing reads
 /// them but their own boundary condition, so the run continues as it would have.
-void widen_legacy_ghosts(State& u, const Grid& grid) {
+void widen_legacy_ghosts(StateValues& u, const Grid& grid) {
   const std::size_t n = grid.n_interior(), old_total = n + 2 * legacy_ghosts;
   constexpr std::size_t n_fields = n_evolved(Formulation::bssn); // legacy files are BSSN's
   if (u.size() != n_fields * old_total || grid.n_total() == old_total)
     return;
-  State w(n_fields * grid.n_total(), 0.0);
+  State w(Formulation::bssn, grid.n_total());
   for (std::size_t v = 0; v < n_fields; ++v) {
     const double* from = u.data() + v * old_total;
     double* to = w.data() + v * grid.n_total();
@@ -270,7 +270,7 @@ void widen_legacy_ghosts(State& u, const Grid& grid) {
       to[grid.first_interior() + k] = from[legacy_ghosts + n + legacy_ghosts - 1];
   }
   fill_origin_ghosts(w, grid);
-  u = std::move(w);
+  u = w.values();
 }
 
 } // namespace
@@ -290,7 +290,7 @@ Checkpoint resumable_checkpoint(const Checkpoint& checkpoint, const ResumeTarget
     throw CheckpointError(
         fmt::format("the checkpoint has {} levels, this grid {}", c.finer.size() + 1, n_levels));
   for (std::size_t l = 0; l < n_levels; ++l) {
-    const State& u = l == 0 ? c.u : c.finer[l - 1];
+    const StateValues& u = l == 0 ? c.u : c.finer[l - 1];
     if (u.size() != run.state_sizes[l])
       throw CheckpointError(fmt::format("the checkpoint has {} values{}, this grid {}", u.size(),
                                         n_levels > 1 ? fmt::format(" on level {}", l) : "",

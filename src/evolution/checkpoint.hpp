@@ -4,9 +4,8 @@
 #pragma once
 
 #include "evolution/evolution_config.hpp"
-#include "gbssn/state.hpp"
 #include "io/output.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/layout.hpp"
 
 #include <array>
 #include <cstdint>
@@ -23,7 +22,17 @@ namespace gbssn1d {
 /// converge_samples.bin.
 std::uint64_t fnv1a(std::string_view bytes);
 
+/// A state as a checkpoint file holds it: its values, variable-major as in State. The file
+/// records no formulation: the run that resumes gives them its own (Simulation::restore), after
+/// resumable_checkpoint has checked their count against its states.
+using StateValues = std::vector<double>;
+
 struct Checkpoint {
+  /// A stored coarse time level of the stepper (mesh::MeshStepper::TimeLevel), as values.
+  struct TimeLevel {
+    double t;
+    StateValues u;
+  };
   std::string config;    ///< the run's configuration (config.toml text)
   std::int64_t step = 0; ///< steps taken; t = step dt
   double t = 0.0, dt = 0.0;
@@ -32,15 +41,15 @@ struct Checkpoint {
   bool had_horizon = false, reported = false;
   std::uint64_t evaluations = 0; ///< RHS evaluations so far
   OutputMarks marks;
-  State u; ///< level 0's state (the single grid's)
+  StateValues u; ///< level 0's state (the single grid's)
   // Box-in-box levels (empty for a single grid), format 3:
-  std::vector<State> finer;                      ///< the states of levels 1 ... L-1
+  std::vector<StateValues> finer;                ///< the states of levels 1 ... L-1
   std::vector<std::optional<double>> level_h_AH; ///< h_AH held by each level's RHS, 0 ... L-1
   std::optional<double> shared_h_AH;             ///< the horizon radius all levels share
   /// boxes: the radii found at the last hierarchy steps, (t, h_AH), oldest first
   std::vector<std::array<double, 2>> h_AH_history;
   /// each level's stored time levels (quadratic time interpolation), 0 ... L-1
-  std::vector<std::vector<mesh::MeshStepper::TimeLevel>> history;
+  std::vector<std::vector<TimeLevel>> history;
 };
 
 /// A checkpoint file that cannot be read, or belongs to another run.

@@ -65,9 +65,10 @@ double value_at_radius(const mesh::MeshLayout& layout, const std::vector<State>&
   const std::size_t l = layout.finest_level_covering(r, sample_margin_cells);
   const Grid& g = layout.grid(l);
   const double value = interpolate_at_radius(g, field(levels[l], g, v), r);
-  // K is the ADM K = K-hat + 2 Theta in Z4c (Z1), as in profiles.dat
-  if (v == Var::K && formulation_of(levels[l], g) == Formulation::z4c)
-    return value + 2.0 * interpolate_at_radius(g, field(levels[l], g, Var::Theta), r);
+  // K is the ADM K (Z1), as in profiles.dat
+  const FormulationTraits& f = traits(levels[l].formulation());
+  if (v == Var::K && !f.K_is_adm())
+    return adm_K(f, value, interpolate_at_radius(g, field(levels[l], g, Var::Theta), r));
   return value;
 }
 
@@ -209,7 +210,7 @@ bool in_physical_range(const State& u, const Grid& g, double alpha_min, double a
   // a count of the values outside (an integer sum vectorises; a bool reduction did not)
   std::size_t outside = 0;
   constexpr double largest = std::numeric_limits<double>::max();
-  for (const auto& entry : state_vars(u, g)) {
+  for (const auto& entry : u.vars()) {
     const double* const f = field(u, g, entry.var).data();
     for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
       outside += std::abs(f[i]) <= largest ? 0 : 1; // inf and NaN
@@ -235,7 +236,7 @@ void check_physical_range(const mesh::MeshLayout& layout, const std::vector<Stat
       continue;
     const std::string where = layout.levels() > 1 ? fmt::format(" (box {})", l) : "";
     for (std::size_t i = g.first_interior(); i < g.n_total(); ++i)
-      for (const auto& entry : state_vars(u, g))
+      for (const auto& entry : u.vars())
         if (!std::isfinite(field(u, g, entry.var)[i]))
           throw NonFiniteError(t, g.r()[i], std::string(entry.name) + where);
     const auto chi = field(u, g, Var::chi), alpha = field(u, g, Var::alpha);

@@ -87,7 +87,7 @@ void DenseOutput::fill(std::size_t level, double t0, double dt, const State& u0,
     const double theta = std::min((p.t - t0) / dt, 1.0);
     const mesh::StageWeights w = mesh::dense_output_weights(theta, dt);
     State& out = p.u[level];
-    out.resize(u0.size());
+    out.fit(u0);
     for (std::size_t i = 0; i < u0.size(); ++i)
       out[i] = w[0] * u0[i] + w[1] * (*k[0])[i] + w[2] * (*k[1])[i] + w[3] * (*k[2])[i]
                + w[4] * (*k[3])[i];

@@ -300,7 +300,7 @@ void Simulation::run(Output* out) {
   double next_checkpoint = checkpoint_after(config_.checkpoint_every, t_);
   ProgressLine progress(show_progress && ::isatty(STDERR_FILENO), t_, t_end);
   tracker_.mark_before_rhs();
-  dudt_now_.resize(levels_u_[0].size());
+  dudt_now_.fit(levels_u_[0]);
   set_first_cells();
   rhs_[0](levels_u_[0], dudt_now_, t_); // RK4's first stage of the first step
   for (long n = step_ + 1; n <= s.n_steps; ++n) {

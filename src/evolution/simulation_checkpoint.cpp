@@ -18,9 +18,14 @@ void Simulation::restore(const Checkpoint& checkpoint) {
   const Checkpoint c =
       resumable_checkpoint(checkpoint, {config_, layout_, sizes, schedule_.dt, schedule_.n_steps,
                                         initial_evaluations_[0]});
-  levels_u_[0] = c.u;
+  // the file's values in this run's formulation (their count checked above)
+  const Formulation formulation = config_.rhs.formulation;
+  const auto state = [&](const StateValues& values, std::size_t l) {
+    return State(formulation, values, layout_.grid(l).n_total());
+  };
+  levels_u_[0] = state(c.u, 0);
   for (std::size_t l = 1; l < n_levels; ++l)
-    levels_u_[l] = c.finer[l - 1];
+    levels_u_[l] = state(c.finer[l - 1], l);
   t_ = c.t;
   step_ = c.step;
   clock_.k_series = c.k_series;
@@ -38,8 +43,12 @@ void Simulation::restore(const Checkpoint& checkpoint) {
       rhs_[l].set_evaluations(n);
       stepper_.set_evaluations(l, n);
     }
-    for (std::size_t l = 0; l < n_levels; ++l)
-      stepper_.set_history(l, c.history[l]);
+    for (std::size_t l = 0; l < n_levels; ++l) {
+      std::vector<mesh::MeshStepper::TimeLevel> history;
+      for (const auto& [t, u] : c.history[l])
+        history.push_back({t, state(u, l)});
+      stepper_.set_history(l, std::move(history));
+    }
   } else {
     tracker_.restore(c.h_AH, c.h_AH_history); // a history with --ah-every extrapolated only
   }
@@ -61,14 +70,18 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
   c.reported = reported_;
   c.evaluations = evaluations_before_rhs_;
   c.marks = out.marks();
-  c.u = levels_u_[0];
+  c.u = levels_u_[0].values();
   c.h_AH_history = tracker_.history(); // boxes, and single grids with --ah-every extrapolated
   if (layout_.levels() > 1) {
-    c.finer.assign(levels_u_.begin() + 1, levels_u_.end());
+    for (std::size_t l = 1; l < layout_.levels(); ++l)
+      c.finer.push_back(levels_u_[l].values());
     c.shared_h_AH = tracker_.shared_before_rhs(); // before the next step's first RHS, as h_AH
     for (std::size_t l = 0; l < layout_.levels(); ++l) {
       c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
-      c.history.push_back(stepper_.history(l));
+      std::vector<Checkpoint::TimeLevel> history;
+      for (const auto& [t, u] : stepper_.history(l))
+        history.push_back({t, u.values()});
+      c.history.push_back(std::move(history));
     }
   }
   return c;

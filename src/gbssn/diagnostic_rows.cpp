@@ -4,6 +4,7 @@
 // adm_point_data's, the constraints, areal radius and expansion by the same functions. At
 // every output time of a run these were a call per point (about 12% of a 9-box run with a row
 // of the time series every 1 M, profile).
+#include "gbssn/dispatch.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/rhs.hpp"
 #include "gbssn/rhs_loop.hpp"
@@ -34,12 +35,7 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
     point_loop::Differences ko; // unused here
     PointData pd = point_loop::gather<p, fd::Upwind::lopsided, n_fields>(
         rows, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], ko);
-    if constexpr (formulation == Formulation::z4c) {
-      pd = adm_trace(pd);
-    } else {
-      using enum Var;
-      pd.f[Theta] = pd.d[Theta] = pd.dd[Theta] = pd.adv[Theta] = 0.0;
-    }
+    pd = diagnosed<formulation>(pd);
     if constexpr (with_constraints) {
       const Constraints c = constraints(pd);
       out.H[k] = c.H;
@@ -61,15 +57,6 @@ void diagnostic_rows_as(const State& u, const Grid& grid, const DiagnosticRows& 
     diagnostic_rows_at<p, formulation, false>(u, grid, out, k_begin, k_end);
 }
 
-template <int p>
-void diagnostic_rows_of(const State& u, const Grid& grid, const DiagnosticRows& out,
-                        std::size_t k_begin, std::size_t k_end) {
-  if (formulation_of(u, grid) == Formulation::z4c)
-    diagnostic_rows_as<p, Formulation::z4c>(u, grid, out, k_begin, k_end);
-  else
-    diagnostic_rows_as<p, Formulation::bssn>(u, grid, out, k_begin, k_end);
-}
-
 } // namespace
 
 void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out,
@@ -80,16 +67,11 @@ void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out
       || (out.H || out.M_r || out.G_r || out.m_ms) != (out.H && out.M_r && out.G_r && out.m_ms))
     throw std::invalid_argument("diagnostic_rows: R_areal and Theta_plus, and all three "
                                 "constraints with the Misner-Sharp mass or none of them");
-  switch (grid.fd_order()) {
-  case 2:
-    return diagnostic_rows_of<2>(u, grid, out, k_begin, k_end);
-  case 6:
-    return diagnostic_rows_of<6>(u, grid, out, k_begin, k_end);
-  case 8:
-    return diagnostic_rows_of<8>(u, grid, out, k_begin, k_end);
-  default:
-    return diagnostic_rows_of<4>(u, grid, out, k_begin, k_end);
-  }
+  with_order(grid.fd_order(), [&]<int p>() {
+    with_formulation(u.formulation(), [&]<Formulation f>() {
+      diagnostic_rows_as<p, f>(u, grid, out, k_begin, k_end);
+    });
+  });
 }
 
 void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out) {

@@ -1,5 +1,6 @@
 #include "gbssn/rhs.hpp"
 
+#include "gbssn/dispatch.hpp"
 #include "gbssn/horizon_shift.hpp"
 #include "gbssn/rhs_loop.hpp"
 #include "gbssn/z4c.hpp"
@@ -12,46 +13,40 @@ namespace gbssn1d {
 
 namespace {
 
-template <int p, fd::Upwind upwind>
-PointData point_data_at(const State& u, const Grid& grid, std::size_t i) {
+/// The state's rows gathered at point i (Theta zero where the formulation evolves none), and,
+/// with `adm`, as the diagnostics read them (diagnosed: K the ADM K).
+template <int p, fd::Upwind upwind, Formulation f>
+PointData point_data_as(const State& u, const Grid& grid, std::size_t i, bool adm) {
   point_loop::Differences ko;
   const point_loop::Rows rows(u, grid);
   const double r = grid.r()[i], inv_r = grid.inv_r()[i], inv_dx = 1.0 / grid.dx(),
                inv_rx = grid.inv_dr_dx()[i], d2_fx = grid.d2_fx_coeff()[i];
-  if (formulation_of(u, grid) == Formulation::z4c) {
-    constexpr std::size_t n = n_evolved(Formulation::z4c);
-    return point_loop::gather<p, upwind, n>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
-  }
-  constexpr std::size_t n = n_evolved(Formulation::bssn);
+  constexpr std::size_t n = n_evolved(f);
   PointData pd = point_loop::gather<p, upwind, n>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
-  pd.f[Var::Theta] = pd.d[Var::Theta] = pd.dd[Var::Theta] = pd.adv[Var::Theta] = 0.0;
-  return pd;
+  if constexpr (!traits(f).evolves(Var::Theta))
+    pd.f[Var::Theta] = pd.d[Var::Theta] = pd.dd[Var::Theta] = pd.adv[Var::Theta] = 0.0;
+  return adm ? diagnosed<f>(pd) : pd;
 }
 
-template <fd::Upwind upwind>
-PointData point_data_with(const State& u, const Grid& grid, std::size_t i) {
-  switch (grid.fd_order()) {
-  case 2:
-    return point_data_at<2, upwind>(u, grid, i);
-  case 6:
-    return point_data_at<6, upwind>(u, grid, i);
-  case 8:
-    return point_data_at<8, upwind>(u, grid, i);
-  default:
-    return point_data_at<4, upwind>(u, grid, i);
-  }
+PointData point_data_of(const State& u, const Grid& grid, std::size_t i, fd::Upwind upwind,
+                        bool adm) {
+  return with_upwind(upwind, [&]<fd::Upwind w>() {
+    return with_order(grid.fd_order(), [&]<int p>() {
+      return with_formulation(u.formulation(), [&]<Formulation f>() {
+        return point_data_as<p, w, f>(u, grid, i, adm);
+      });
+    });
+  });
 }
 
 } // namespace
 
 PointData point_data(const State& u, const Grid& grid, std::size_t i, fd::Upwind upwind) {
-  return upwind == fd::Upwind::biased ? point_data_with<fd::Upwind::biased>(u, grid, i)
-                                      : point_data_with<fd::Upwind::lopsided>(u, grid, i);
+  return point_data_of(u, grid, i, upwind, false);
 }
 
 PointData adm_point_data(const State& u, const Grid& grid, std::size_t i) {
-  const PointData p = point_data(u, grid, i);
-  return formulation_of(u, grid) == Formulation::z4c ? adm_trace(p) : p;
+  return point_data_of(u, grid, i, fd::Upwind::lopsided, true);
 }
 
 GbssnRhs::GbssnRhs(const Grid& grid, RhsParams params) : grid_(&grid), params_(params) {
@@ -85,10 +80,7 @@ extern template void GbssnRhs::evaluate_with<fd::Upwind::biased>(const State&, S
 
 void GbssnRhs::operator()(const State& u, State& dudt, double t) {
   // dispatched once per call: each order's and upwind pair's loop is its own instance
-  if (params_.upwind == fd::Upwind::biased)
-    evaluate_with<fd::Upwind::biased>(u, dudt, t);
-  else
-    evaluate_with<fd::Upwind::lopsided>(u, dudt, t);
+  with_upwind(params_.upwind, [&]<fd::Upwind w>() { evaluate_with<w>(u, dudt, t); });
 }
 
 void GbssnRhs::outer_boundary(const State& u, State& dudt) const {
@@ -96,7 +88,7 @@ void GbssnRhs::outer_boundary(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
   const double inv_dx = 1.0 / g.dx();
-  for (const auto& entry : state_vars(u, g)) {
+  for (const auto& entry : u.vars()) {
     const double* f = u.data() + index(entry.var) * nt;
     double* out = dudt.data() + index(entry.var) * nt;
     const double speed = params_.gauge.speed(entry.wave);

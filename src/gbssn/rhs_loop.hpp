@@ -5,6 +5,7 @@
 #pragma once
 
 #include "fd/stencils.hpp"
+#include "gbssn/dispatch.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/full_shift.hpp"
 #include "gbssn/rhs.hpp"
@@ -49,7 +50,7 @@ template <int p, fd::Upwind u>
 struct Rows {
   std::array<const double*, n_vars> row{};
   Rows(const State& u, const Grid& grid) {
-    for (const auto& entry : state_vars(u, grid))
+    for (const auto& entry : u.vars())
       row[index(entry.var)] = field(u, grid, entry.var).data();
   }
   const double*& operator[](Var v) { return row[index(v)]; }
@@ -95,24 +96,12 @@ template <int p, fd::Upwind upwind, std::size_t n_fields>
 
 template <fd::Upwind upwind>
 void GbssnRhs::evaluate_with(const State& u, State& dudt, double t) {
-  switch (grid_->fd_order()) {
-  case 2:
-    evaluate<2, upwind>(u, dudt, t);
-    break;
-  case 6:
-    evaluate<6, upwind>(u, dudt, t);
-    break;
-  case 8:
-    evaluate<8, upwind>(u, dudt, t);
-    break;
-  default:
-    evaluate<4, upwind>(u, dudt, t);
-  }
+  with_order(grid_->fd_order(), [&]<int p>() { evaluate<p, upwind>(u, dudt, t); });
 }
 
 template <int p, fd::Upwind upwind>
 void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
-  dudt.resize(u.size());
+  dudt.fit(u);
   const HorizonShiftParams& hs = params_.horizon_shift;
   if (hs.active()) {
     if (source_)
@@ -120,6 +109,8 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
     shift_amplitude_ = shift_amplitude(t);
   }
   using V = HorizonShiftParams::Variant;
+  if (u.formulation() != params_.formulation)
+    throw std::logic_error("a right-hand side given a state of another formulation");
   if (params_.formulation == Formulation::z4c) {
     // the study variants are BSSN's; validate() rejects them with --formulation z4c
     if (hs.active() && hs.variant != V::consistent)
@@ -154,7 +145,7 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
     throw std::logic_error(
         "--upwind biased or --fd-order 2, 6, 8 with a study --rah-variant (rejected by validate)");
   }
-  const std::size_t n_fields = u.size() / grid_->n_total();
+  const std::size_t n_fields = u.vars().size();
   if (outer_from_parent_) // n_ghost zeros a row, stored in place (a call of memset each cost more)
     for (std::size_t v = 0; v < n_fields; ++v) {
       double* const ghosts = dudt.data() + v * grid_->n_total() + grid_->end_interior();

@@ -20,10 +20,27 @@ namespace gbssn1d {
 /// read as K.
 inline PointData adm_trace(PointData p) {
   using enum Var;
-  p.f[K] += 2.0 * p.f[Theta];
-  p.d[K] += 2.0 * p.d[Theta];
-  p.dd[K] += 2.0 * p.dd[Theta];
-  p.adv[K] += 2.0 * p.adv[Theta];
+  constexpr double w = traits(Formulation::z4c).adm_K_theta;
+  p.f[K] += w * p.f[Theta];
+  p.d[K] += w * p.d[Theta];
+  p.dd[K] += w * p.dd[Theta];
+  p.adv[K] += w * p.adv[Theta];
+  return p;
+}
+
+/// The point data of formulation f as the constraints, the expansion and every diagnostic
+/// read it: K the ADM K (adm_trace where K's row is not), Theta zero where f evolves none.
+template <Formulation f>
+PointData diagnosed(PointData p) {
+  constexpr FormulationTraits t = traits(f);
+  if constexpr (!t.evolves(Var::Theta)) {
+    using enum Var;
+    p.f[Theta] = p.d[Theta] = p.dd[Theta] = p.adv[Theta] = 0.0;
+  }
+  if constexpr (!t.K_is_adm()) {
+    static_assert(t.adm_K_theta == traits(Formulation::z4c).adm_K_theta);
+    p = adm_trace(p);
+  }
   return p;
 }
 

@@ -22,7 +22,7 @@ SliceValues flat() {
 
 void store(State& u, const Grid& grid, std::size_t i, const SliceValues& s, double sign) {
   // sign = -1 for points at r < 0 (origin ghosts): odd variables flip.
-  for (const auto& entry : state_vars(u, grid))
+  for (const auto& entry : u.vars())
     field(u, grid, entry.var)[i] = (entry.parity < 0 ? sign : 1.0) * s[entry.var];
 }
 

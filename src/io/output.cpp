@@ -30,14 +30,22 @@ void append_scientific(fmt::memory_buffer& out, double v) {
   out.append(text, end);
 }
 
+double SeriesRow::extra(std::string_view column) const {
+  for (const auto& [name, value] : {std::pair<std::string_view, double>{"G_L2_R", G_L2_R},
+                                    {"Theta_L2_ext", Theta_L2_ext},
+                                    {"Theta_L2_R", Theta_L2_R}})
+    if (name == column)
+      return value;
+  throw std::invalid_argument("no series column " + std::string(column));
+}
+
 std::vector<std::string> series_columns(Formulation formulation) {
   std::vector<std::string> cols{
       "t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
       "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
       "M_ah",     "H_L2_R",       "M_L2_R",   "H_L2_int",        "M_ah_err"};
-  if (formulation == Formulation::z4c)
-    for (const char* name : {"G_L2_R", "Theta_L2_ext", "Theta_L2_R"})
-      cols.emplace_back(name);
+  for (const std::string_view name : traits(formulation).extra_series)
+    cols.emplace_back(name);
   return cols;
 }
 
@@ -217,13 +225,8 @@ const char* const series_legend =
     "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
     "R = norm-Rint M, weighted by cell width; a norm (and dtalpha_max_ext) is NaN while its "
     "window holds no point; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - M\n";
-const char* const z4c_legend =
-    "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
-    "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "
-    "coordinate one\n";
-
 std::string legend(Formulation formulation) {
-  return std::string(series_legend) + (formulation == Formulation::z4c ? z4c_legend : "");
+  return std::string(series_legend) + std::string(traits(formulation).series_legend);
 }
 const char* const horizon_legend =
     "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
@@ -312,11 +315,10 @@ void Output::write_series(const SeriesRow& row) {
     line.push_back(' ');
     append_scientific(line, v);
   }
-  if (formulation_ == Formulation::z4c)
-    for (double v : {row.G_L2_R, row.Theta_L2_ext, row.Theta_L2_R}) {
-      line.push_back(' ');
-      append_scientific(line, v);
-    }
+  for (const std::string_view column : traits(formulation_).extra_series) {
+    line.push_back(' ');
+    append_scientific(line, row.extra(column));
+  }
   line.push_back('\n');
   series_.write(line.data(), line.size());
   series_.flush();
@@ -354,18 +356,19 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     profiles_.print("\n\n");
   first_block_ = false;
   profiles_.print("# t = {}\n", time_text(t));
+  const FormulationTraits& f = traits(formulation_);
   fmt::memory_buffer line;
   for (std::size_t k = 0; k < grid.n_interior(); ++k) {
     const std::size_t i = grid.first_interior() + k;
     line.clear();
     append_scientific(line, grid.r()[i]);
     const double beta_GD = field(u, grid, Var::beta)[i];
-    for (const auto& entry : evolved(formulation_)) {
+    for (const auto& entry : f.rows()) {
       double v = field(u, grid, entry.var)[i];
       if (entry.var == Var::beta)
         v = beta_GD + beta_H[i];
-      else if (entry.var == Var::K && formulation_ == Formulation::z4c)
-        v += 2.0 * field(u, grid, Var::Theta)[i]; // the ADM K (Z1)
+      else if (entry.var == Var::K && !f.K_is_adm())
+        v = adm_K(f, v, field(u, grid, Var::Theta)[i]); // the ADM K (Z1)
       line.push_back(' ');
       append_scientific(line, v);
     }

@@ -30,8 +30,12 @@ struct SeriesRow {
   double H_L2_R, M_L2_R;  ///< over the areal-radius window [norm-Rmin, norm-Rmax] M
   double H_L2_int;        ///< near the puncture, R <= norm-Rint M
   double M_ah_err;        ///< M_ah - M
-  /// Z4c only (Sec. 17): G^r in the areal window, Theta in the exterior and areal windows
+  /// Z4c's own (Sec. 17): G^r in the areal window, Theta in the exterior and areal windows
   double G_L2_R, Theta_L2_ext, Theta_L2_R;
+
+  /// The value of one of a formulation's own columns (FormulationTraits::extra_series), by
+  /// name; throws std::invalid_argument for a name that is none of them.
+  double extra(std::string_view column) const;
 };
 
 /// Column names, in order: a Z4c run's series has G_L2_R, Theta_L2_ext and Theta_L2_R besides,

@@ -53,33 +53,18 @@ MeshStepper::MeshStepper(const MeshLayout& layout, std::vector<LevelRhs> rhs,
   if (!(options_.dt_max > 0.0))
     throw std::invalid_argument("the mesh stepper's largest step must be positive");
   steps_ = level_steps(layout, options_);
-  // sized for BSSN here, in this order, and resized by fit_scratch for another formulation:
-  // BSSN's results stay bit for bit those of the stepper before Z4c (the stage fills'
-  // rounding follows the arrays' layout)
-  for (std::size_t l = 0; l < layout.levels(); ++l) {
-    Level& L = levels_[l];
-    const Grid& g = layout.grid(l);
-    L.tmp = make_state(g, Formulation::bssn);
-    for (auto& k : L.k)
-      k = make_state(g, Formulation::bssn);
-    if (l + 1 < layout.levels()) {
-      L.u0 = make_state(g, Formulation::bssn);
-      L.scratch = make_state(g, Formulation::bssn);
-    }
-  }
 }
 
 void MeshStepper::fit_scratch(const std::vector<State>& u) {
-  // sized by the states themselves, which hold their formulation's variables (gbssn/state.hpp)
+  // shaped by the states themselves, which carry their formulation (gbssn/state.hpp)
   for (std::size_t l = 0; l < layout_->levels(); ++l) {
     Level& L = levels_[l];
-    const std::size_t n = u[l].size();
-    L.tmp.resize(n);
+    L.tmp.fit(u[l]);
     for (auto& k : L.k)
-      k.resize(n);
+      k.fit(u[l]);
     if (l + 1 < layout_->levels()) {
-      L.u0.resize(n);
-      L.scratch.resize(n);
+      L.u0.fit(u[l]);
+      L.scratch.fit(u[l]);
     }
   }
 }
@@ -138,10 +123,10 @@ void MeshStepper::taper_from_parent(std::vector<State>& u, std::size_t l) {
     return;
   const long j0 = n - k;
   State& parent = levels_[l].tmp; // free between steps
-  parent.resize(u[l].size());
+  parent.fit(u[l]);
   fill_from_parent(l, parent, {&u[l - 1]}, {1.0}, j0);
   const Grid& g = layout_->grid(l);
-  for (const auto& entry : state_vars(u[l], g)) {
+  for (const auto& entry : u[l].vars()) {
     const auto p = field(parent, g, entry.var);
     const auto f = field(u[l], g, entry.var);
     for (long j = j0; j < n; ++j) {
@@ -305,7 +290,7 @@ void prolong_combination(std::span<const State* const> arrays, std::span<const d
   }
   // near the origin: scratch = sum_m w[m] arrays[m] on the cells [lo, hi) of every variable,
   // then prolong_field with the mirror
-  scratch.resize(size);
+  scratch.fit(*arrays.front());
   switch (arrays.size()) {
   case 1:
     combine_rows<1>(a, w, scratch, rows, nt, g, lo, hi);

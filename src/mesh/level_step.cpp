@@ -45,7 +45,7 @@ void MeshStepper::rk4(std::size_t l, State& u, double t, double dt,
     L.k[0] = *given_k1;
   const State& k1 = given_k1 && !copy_k1 ? *given_k1 : L.k[0];
   const std::size_t n = u.size();
-  x.resize(n);
+  x.fit(u);
   const double a21 = 0.5 * dt, a32 = 0.5 * dt, a43 = 1.0 * dt;
   const double b1 = (1.0 / 6.0) * dt, b2 = (1.0 / 3.0) * dt, b3 = (1.0 / 3.0) * dt,
                b4 = (1.0 / 6.0) * dt;

@@ -102,7 +102,7 @@ inline void restrict_field(std::span<const double> fine, std::span<double> coars
 /// prolong_field for every registry variable, each with its parity.
 inline void prolong(const State& coarse, const Grid& coarse_grid, State& fine,
                     const Grid& fine_grid, long j_begin, long j_end) {
-  for (const auto& entry : state_vars(coarse, coarse_grid))
+  for (const auto& entry : coarse.vars())
     prolong_field(field(coarse, coarse_grid, entry.var), field(fine, fine_grid, entry.var),
                   entry.parity, j_begin, j_end);
 }
@@ -110,7 +110,7 @@ inline void prolong(const State& coarse, const Grid& coarse_grid, State& fine,
 /// restrict_field for every registry variable, then the coarse origin ghosts by parity.
 inline void restrict_to(const State& fine, const Grid& fine_grid, State& coarse,
                         const Grid& coarse_grid, long i_begin, long i_end) {
-  for (const auto& entry : state_vars(fine, fine_grid))
+  for (const auto& entry : fine.vars())
     restrict_field(field(fine, fine_grid, entry.var), field(coarse, coarse_grid, entry.var),
                    entry.parity, i_begin, i_end);
   fill_origin_ghosts(coarse, coarse_grid);

@@ -390,7 +390,7 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
     const auto v = var_from_name(name);
     if (!v)
       throw ParamError("--fields", name, "is not an evolved variable");
-    if (base.formulation == Formulation::bssn && index(*v) >= n_evolved(Formulation::bssn))
+    if (!traits(base.formulation.value()).evolves(*v))
       throw ParamError("--fields", name,
                        fmt::format("is not evolved with --formulation {} (z4c evolves it)",
                                    base.formulation.name()));

@@ -46,17 +46,20 @@ const Norm bssn_norms[] = {{"H_L2_ext", "H", &SeriesRow::H_L2_ext, true, -2, &Me
                            {"H_L2_R", "H_R", &SeriesRow::H_L2_R, true, -2, &MemberCells::areal},
                            {"M_L2_R", "M_R", &SeriesRow::M_L2_R, true, -2, &MemberCells::areal},
                            {"H_L2_int", "H_int", &SeriesRow::H_L2_int, false, -2, nullptr}};
-/// Z4c's own (Sec. 17), judged like the rest: G^r and Theta (a curvature, 1/M^2) in the areal
-/// window.
-const Norm z4c_norms[] = {
+/// A formulation's own series columns that a study judges like the rest (Z4c's, Sec. 17: G^r
+/// and Theta, a curvature, 1/M^2, in the areal window); each is judged where the formulation
+/// writes it (FormulationTraits::extra_series).
+const Norm own_norms[] = {
     {"G_L2_R", "G_R", &SeriesRow::G_L2_R, true, -1, &MemberCells::areal},
     {"Theta_L2_R", "Theta_R", &SeriesRow::Theta_L2_R, true, -2, &MemberCells::areal}};
 
 /// The norms of a study of `formulation`.
 std::vector<Norm> study_norms(Formulation formulation) {
   std::vector<Norm> n(std::begin(bssn_norms), std::end(bssn_norms));
-  if (formulation == Formulation::z4c)
-    n.insert(n.end(), std::begin(z4c_norms), std::end(z4c_norms));
+  const auto& own = traits(formulation).extra_series;
+  for (const Norm& c : own_norms)
+    if (std::find(own.begin(), own.end(), c.column) != own.end())
+      n.push_back(c);
   return n;
 }
 

@@ -186,9 +186,9 @@ TEST_CASE("a box run resumed from a checkpoint is bit-identical on every level")
 namespace {
 
 /// `u` laid out with the 3 ghosts per side of the versions before --fd-order (5 now).
-State with_legacy_ghosts(const State& u, const Grid& g) {
+StateValues with_legacy_ghosts(const StateValues& u, const Grid& g) {
   const std::size_t n = g.n_interior(), old_total = n + 6, n_fields = n_evolved(Formulation::bssn);
-  State old(n_fields * old_total);
+  StateValues old(n_fields * old_total);
   for (std::size_t v = 0; v < n_fields; ++v)
     for (std::size_t k = 0; k < old_total; ++k)
       old[v * old_total + k] = u[v * g.n_total() + g.first_interior() - 3 + k];

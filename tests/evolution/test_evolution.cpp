@@ -464,7 +464,7 @@ TEST_CASE("a checkpoint whose states are empty goes through the file format unch
   c.step = 3;
   c.finer.resize(2); // two levels without values
   c.history.resize(2);
-  c.history[1].push_back({0.5, State{}});
+  c.history[1].push_back({0.5, StateValues{}});
   const std::filesystem::path file = gbssn1d::testing::scratch("empty_states_checkpoint.bin");
   write_checkpoint(file, c);
   const Checkpoint read = read_checkpoint(file);
@@ -494,7 +494,7 @@ TEST_CASE("a checkpoint's flag bytes: 0 and 1 read back, any other value is refu
   clear.config = "N = 100\n";
   clear.step = 3;
   clear.u.assign(12, 0.25);
-  clear.finer.assign(2, State(12, 0.5));
+  clear.finer.assign(2, StateValues(12, 0.5));
   clear.level_h_AH.assign(3, std::nullopt);
   const std::filesystem::path file = gbssn1d::testing::scratch("flag_bytes_checkpoint.bin");
   auto bytes_of = [&](const Checkpoint& c) {

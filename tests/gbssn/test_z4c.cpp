@@ -50,7 +50,7 @@ void evolve(GbssnRhs& rhs, State& u, double t_end, double cfl,
             const std::function<void(double, const State&)>& each = {}) {
   const double dt = cfl * rhs.grid().min_spacing();
   const long steps = std::lround(t_end / dt);
-  State k1, k2, k3, k4, x(u.size());
+  State k1, k2, k3, k4, x = u;
   for (long k = 0; k < steps; ++k) {
     const double t = static_cast<double>(k) * dt;
     rhs(u, k1, t);
@@ -300,7 +300,7 @@ TEST_CASE("diagnostic rows agree with the constraints and expansion computed poi
       InitialDataParams id;
       id.kind = InitialDataKind::onelog_trumpet;
       State u = initial_data(g, id, f);
-      for (const auto& entry : state_vars(u, g)) {
+      for (const auto& entry : u.vars()) {
         auto v = field(u, g, entry.var);
         for (std::size_t i = 0; i < g.n_total(); ++i) {
           const double r = g.r()[i];

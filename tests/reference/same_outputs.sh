@@ -16,7 +16,9 @@
 #   horizon shift, the box-substage variant, no subcycling; a run stopped at t = 3 with a checkpoint at 2 and
 #   resumed to a later tmax; a converge study and a sweep (wall times excepted); a checkpoint of
 #   the legacy layout (3 ghosts a side, as written
-#   before the finite-difference order became a choice) resumed; each --fd-order.
+#   before the finite-difference order became a choice) resumed; each --fd-order; Z4c on the
+#   sinh grid (with the horizon shift and the ADM-K lapse), uniform at 6th order with the
+#   biased pair, and on boxes.
 set -euo pipefail
 new_keys=""
 new_args=()
@@ -52,6 +54,10 @@ declare -A cases=(
   [boxes-box-substage]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --rah-variant box-substage --cfl 0.25"
   [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step --cfl 0.25"
   [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet --cfl 0.25"
+  [z4c-sinh]="--N 120 --formulation z4c --id 1log-trumpet"
+  [z4c-sinh-shift]="--N 120 --formulation z4c --rahA 0.5 --z4c-lapse-adm"
+  [z4c-uniform-fd6-biased]="--grid uniform --rmax 40 --N 400 --fd-order 6 --formulation z4c --upwind biased --kappa2 0.5"
+  [z4c-boxes]="--grid boxes --rmax 64 --N 48 --formulation z4c --rahA 0.5 --time-interp quadratic --cfl 0.25"
 )
 # A file as compared: config.toml without its first line (the version); a sweep's summary.dat
 # without its wall_s column and its status files without their wall time, and no member's
@@ -152,12 +158,14 @@ done
 for side in old new; do
   exe=$old
   [ $side = new ] && exe=$new
-  rm -rf "${work:?}/$side/converge" "${work:?}/$side/sweep"
+  rm -rf "${work:?}/$side/converge" "${work:?}/$side/converge-z4c" "${work:?}/$side/sweep"
   (cd "$work/$side" && "$exe" converge --N 40,60,80 --tmax 4 --dt-series 0.5 --rahA 0.5 \
      --rah0 1.0 --out converge >converge.log 2>&1) || true
+  (cd "$work/$side" && "$exe" converge --formulation z4c --N 40,60,80 --tmax 4 --dt-series 0.25 \
+     --fields K,Theta --out converge-z4c >converge-z4c.log 2>&1) || true
   (cd "$work/$side" && "$exe" sweep --sweep rahA=0,0.5 --sweep rah0=0.8,1.0 --N 40 --tmax 2 \
      --dt-series 0.5 -j 2 --out sweep >sweep.log 2>&1) || true
-  for study in converge sweep; do
+  for study in converge converge-z4c sweep; do
     [ -d "$work/$side/$study" ] || { echo "DID NOT RUN: $study ($side)"; failed=1; }
   done
 done
