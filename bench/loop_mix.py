@@ -4,7 +4,7 @@
     python3 bench/loop_mix.py [OBJECT] [--symbol REGEX] [--mca [--mcpu CPU]]
     python3 bench/loop_mix.py --check-vectorised OBJECT...
 
-Disassembles OBJECT (default: build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs.cpp.o) with
+Disassembles OBJECT (default: build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs_bssn.cpp.o) with
 objdump, takes the function whose mangled name matches REGEX (default: the 4th-order, lopsided,
 plain BSSN instance of GbssnRhs::interior), finds its main vectorised loop (the innermost
 backward jump whose body is mostly full-width vector instructions) and prints, per iteration and
@@ -39,7 +39,7 @@ import re
 import subprocess
 import sys
 
-DEFAULT_OBJECT = "build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs.cpp.o"
+DEFAULT_OBJECT = "build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs_bssn.cpp.o"
 DEFAULT_SYMBOL = r"interiorINS_4BssnELi4ELNS_2fd6UpwindE0ELb0E"
 
 INSTRUCTION = re.compile(r"\s*([0-9a-f]+):\s+(\S+)\s*(.*)")

@@ -75,9 +75,6 @@ double GbssnRhs::shift_amplitude(double t) const {
   return h_AH_ ? hs.strength(t) * (*h_AH_ - hs.h) : 0.0;
 }
 
-// compiled in rhs_biased.cpp
-extern template void GbssnRhs::evaluate_with<fd::Upwind::biased>(const State&, State&, double);
-
 void GbssnRhs::operator()(const State& u, State& dudt, double t) {
   // dispatched once per call: each order's and upwind pair's loop is its own instance
   with_upwind(params_.upwind, [&]<fd::Upwind w>() { evaluate_with<w>(u, dudt, t); });

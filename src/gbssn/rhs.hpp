@@ -24,8 +24,11 @@
 
 namespace gbssn1d {
 
-struct Bssn; // the formulations of the point loop (gbssn/equations.hpp, gbssn/z4c.hpp)
-struct Z4c;
+/// The point-wise equations of formulation f as the point loop takes them (a policy type such as
+/// Bssn, gbssn/equations.hpp, or Z4c, gbssn/z4c.hpp): specialised beside each, with `type`,
+/// `make(const RhsParams&)` and whether the horizon shift's study variants exist for it.
+template <Formulation f>
+struct PointEquations;
 
 /// Fields, derivatives and advection terms at grid point i, at the grid's finite-difference
 /// order p (needs i - p/2 - 1 ... i + p/2 + 1), advection with the upwind pair `upwind`.
@@ -102,10 +105,12 @@ private:
   template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
             HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
   void interior(const Equations& equations, const State& u, State& dudt) const;
-  /// The Z4c point loop at order p with the upwind pair `upwind`, with or without the horizon
-  /// shift (its consistent form): its instances are compiled in rhs_z4c.cpp, beside BSSN's.
-  template <int p, fd::Upwind upwind>
-  void interior_z4c(const State& u, State& dudt) const;
+  /// The point loop of formulation f at order p with the upwind pair `upwind`, with or without
+  /// the horizon shift (and its study variants where f has them). Defined in
+  /// gbssn/rhs_interior.hpp and compiled in each formulation's own source file (rhs_bssn.cpp
+  /// and rhs_biased.cpp, rhs_z4c.cpp), which build in parallel; evaluate() only declares it.
+  template <Formulation f, int p, fd::Upwind upwind>
+  void interior_of(const State& u, State& dudt) const;
   /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.
   template <fd::Upwind upwind>
   void evaluate_with(const State& u, State& dudt, double t);

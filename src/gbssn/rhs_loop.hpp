@@ -108,43 +108,11 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     shift_amplitude_ = shift_amplitude(t);
   }
-  using V = HorizonShiftParams::Variant;
   if (u.formulation() != params_.formulation)
     throw std::logic_error("a right-hand side given a state of another formulation");
-  if (params_.formulation == Formulation::z4c) {
-    // the study variants are BSSN's; validate() rejects them with --formulation z4c
-    if (hs.active() && hs.variant != V::consistent)
-      throw std::logic_error("--formulation z4c with a study --rah-variant (rejected by validate)");
-    interior_z4c<p, upwind>(u, dudt); // compiled in rhs_z4c.cpp
-  } else if (!hs.active()) {
-    interior<Bssn, p, upwind, false>(Bssn{}, u, dudt);
-  } else if (hs.variant == V::consistent) {
-    interior<Bssn, p, upwind, true, V::consistent>(Bssn{}, u, dudt);
-  } else if constexpr (upwind == fd::Upwind::lopsided && p == 4) {
-    // the study variants: the published study's order and stencil only (fewer instances to
-    // compile; validate() rejects the rest)
-    switch (hs.variant) { // dispatched once per call, not per point
-    case V::no_shift_derivatives:
-      interior<Bssn, p, upwind, true, V::no_shift_derivatives>(Bssn{}, u, dudt);
-      break;
-    case V::no_shift_second_derivatives:
-      interior<Bssn, p, upwind, true, V::no_shift_second_derivatives>(Bssn{}, u, dudt);
-      break;
-    case V::delta_rhs_from_gd:
-      interior<Bssn, p, upwind, true, V::delta_rhs_from_gd>(Bssn{}, u, dudt);
-      break;
-    case V::driver_full_shift:
-      interior<Bssn, p, upwind, true, V::driver_full_shift>(Bssn{}, u, dudt);
-      break;
-    default:
-      break;
-    }
-  } else {
-    // the study variants exist with the lopsided pair at 4th order only; validate() rejects
-    // the rest
-    throw std::logic_error(
-        "--upwind biased or --fd-order 2, 6, 8 with a study --rah-variant (rejected by validate)");
-  }
+  // compiled in the formulation's own source file (gbssn/rhs_interior.hpp)
+  with_formulation(params_.formulation,
+                   [&]<Formulation f>() { interior_of<f, p, upwind>(u, dudt); });
   const std::size_t n_fields = u.vars().size();
   if (outer_from_parent_) // n_ghost zeros a row, stored in place (a call of memset each cost more)
     for (std::size_t v = 0; v < n_fields; ++v) {

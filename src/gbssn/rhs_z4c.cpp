@@ -1,27 +1,19 @@
-// The point loop's Z4c instances (gbssn/z4c.hpp), compiled apart from BSSN's (rhs.cpp,
-// rhs_biased.cpp) so that the three build in parallel and a change to BSSN's loop alone does
-// not rebuild them: every order, both upwind pairs, with and without the horizon shift.
-#include "gbssn/rhs_loop.hpp" // IWYU pragma: keep (Z4c's instances of its templates)
+// The point loop's Z4c instances (gbssn/z4c.hpp), compiled apart from BSSN's (rhs_bssn.cpp,
+// rhs_biased.cpp) so that they build in parallel and a change to BSSN's loop alone does not
+// rebuild them: every order, both upwind pairs, with and without the horizon shift.
+#include "gbssn/rhs_interior.hpp"
 #include "gbssn/z4c.hpp"
 
 namespace gbssn1d {
 
-template <int p, fd::Upwind upwind>
-void GbssnRhs::interior_z4c(const State& u, State& dudt) const {
-  const Z4c z4c(params_.z4c);
-  if (!params_.horizon_shift.active())
-    interior<Z4c, p, upwind, false>(z4c, u, dudt);
-  else
-    interior<Z4c, p, upwind, true, HorizonShiftParams::Variant::consistent>(z4c, u, dudt);
-}
+template <>
+struct PointEquations<Formulation::z4c> {
+  using type = Z4c;
+  static Z4c make(const RhsParams& params) { return Z4c(params.z4c); }
+  static constexpr bool study_variants = false; ///< the study's variants are BSSN's
+};
 
-template void GbssnRhs::interior_z4c<2, fd::Upwind::lopsided>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<4, fd::Upwind::lopsided>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<6, fd::Upwind::lopsided>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<8, fd::Upwind::lopsided>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<2, fd::Upwind::biased>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<4, fd::Upwind::biased>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<6, fd::Upwind::biased>(const State&, State&) const;
-template void GbssnRhs::interior_z4c<8, fd::Upwind::biased>(const State&, State&) const;
+GBSSN1D_INTERIOR_INSTANCES(Formulation::z4c, fd::Upwind::lopsided);
+GBSSN1D_INTERIOR_INSTANCES(Formulation::z4c, fd::Upwind::biased);
 
 } // namespace gbssn1d

@@ -1,0 +1,57 @@
+// GbssnRhs::interior_of: the point loop of one formulation, order and upwind pair, with the
+// horizon shift's forms. Included only by the files that compile a formulation's instances
+// (rhs_bssn.cpp, rhs_biased.cpp, rhs_z4c.cpp), each with its formulation's PointEquations;
+// everything else sees the declaration in gbssn/rhs.hpp.
+#pragma once
+
+#include "gbssn/rhs_loop.hpp" // IWYU pragma: keep (GbssnRhs::interior, the point loop)
+
+#include <stdexcept>
+
+namespace gbssn1d {
+
+template <Formulation f, int p, fd::Upwind upwind>
+void GbssnRhs::interior_of(const State& u, State& dudt) const {
+  using Equations = typename PointEquations<f>::type;
+  const Equations equations = PointEquations<f>::make(params_);
+  const HorizonShiftParams& hs = params_.horizon_shift;
+  using V = HorizonShiftParams::Variant;
+  if (!hs.active()) {
+    interior<Equations, p, upwind, false>(equations, u, dudt);
+  } else if (hs.variant == V::consistent) {
+    interior<Equations, p, upwind, true, V::consistent>(equations, u, dudt);
+  } else if constexpr (PointEquations<f>::study_variants && upwind == fd::Upwind::lopsided
+                       && p == 4) {
+    // the study variants: the published study's formulation, order and stencil only (fewer
+    // instances to compile; validate() rejects the rest)
+    switch (hs.variant) { // dispatched once per call, not per point
+    case V::no_shift_derivatives:
+      interior<Equations, p, upwind, true, V::no_shift_derivatives>(equations, u, dudt);
+      break;
+    case V::no_shift_second_derivatives:
+      interior<Equations, p, upwind, true, V::no_shift_second_derivatives>(equations, u, dudt);
+      break;
+    case V::delta_rhs_from_gd:
+      interior<Equations, p, upwind, true, V::delta_rhs_from_gd>(equations, u, dudt);
+      break;
+    case V::driver_full_shift:
+      interior<Equations, p, upwind, true, V::driver_full_shift>(equations, u, dudt);
+      break;
+    default:
+      break;
+    }
+  } else {
+    throw std::logic_error("a study --rah-variant with another formulation, --upwind or "
+                           "--fd-order than BSSN's lopsided 4th order (rejected by validate)");
+  }
+}
+
+/// The explicit instances of formulation F with the upwind pair U at every order, for a
+/// formulation's source file.
+#define GBSSN1D_INTERIOR_INSTANCES(F, U)                                                           \
+  template void GbssnRhs::interior_of<F, 2, U>(const State&, State&) const;                        \
+  template void GbssnRhs::interior_of<F, 4, U>(const State&, State&) const;                        \
+  template void GbssnRhs::interior_of<F, 6, U>(const State&, State&) const;                        \
+  template void GbssnRhs::interior_of<F, 8, U>(const State&, State&) const
+
+} // namespace gbssn1d
