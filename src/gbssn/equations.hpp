@@ -15,6 +15,13 @@
 
 namespace gbssn1d {
 
+/// Brown's volume choice (Brown 2009), sigma in d_t gbar_ij = L_beta gbar_ij - (2/3) sigma
+/// gbar_ij Dbar_k beta^k - 2 alpha Abar_ij: Lagrangian (sigma = 1, d_t det(gbar) = 0 along the
+/// normal and the shift; Sec. 2.2) or Eulerian (sigma = 0, d_t gbar_ij without the volume term).
+/// The terms sigma weights are (C1)'s and (E2)-(E3)'s -(2/3) Dbar.beta parts and (E6)'s
+/// (2/3) Delta_gamma^r Dbar.beta + (1/(3a)) (Dbar.beta)'; the Eulerian choice leaves them out.
+enum class Volume { eulerian, lagrangian };
+
 /// Logarithmic derivatives and inverses used throughout.
 struct MetricPieces {
   double inv_a, inv_b, inv_chi;
@@ -105,37 +112,53 @@ inline double ricci_scalar_metric(const PointData& p, const MetricPieces& m) {
 }
 
 /// (E6) with (C4) and A_b = -A_a/2: d_t Delta^r for the shift `s`; alpha, K, A_a terms as is.
+/// The Eulerian volume choice leaves out the Lagrangian terms (Volume).
+template <Volume volume = Volume::lagrangian>
 inline double rhs_Delta_r(const PointData& p, const MetricPieces& m, const Shift& s) {
   using enum Var;
-  const double div_beta = divbeta(p, m, s);
   const double lie_derivative = s.adv_Delta_r - p.f[Delta_r] * s.d_beta;
   const double flat_laplacian_of_shift =
       s.dd_beta * m.inv_a + 2.0 * m.inv_b * (s.d_beta * p.inv_r - s.beta * p.inv_r * p.inv_r);
-  const double lagrangian_terms =
-      (2.0 / 3.0) * delta_gamma(p, m) * div_beta + (1.0 / 3.0) * m.inv_a * divbeta_prime(p, m, s);
   const double lapse_and_curvature =
       -2.0 * p.f[A_a] * m.inv_a * (p.d[alpha] + 1.5 * p.f[alpha] * m.dchi_chi)
       + p.f[alpha] * p.f[A_a] * m.inv_a * (m.da_a + m.db_b + 2.0 * p.inv_r * (1.0 - m.a_b))
       - (4.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[K];
-  return lie_derivative + flat_laplacian_of_shift + lagrangian_terms + lapse_and_curvature;
+  if constexpr (volume == Volume::lagrangian) {
+    const double div_beta = divbeta(p, m, s);
+    const double lagrangian_terms =
+        (2.0 / 3.0) * delta_gamma(p, m) * div_beta + (1.0 / 3.0) * m.inv_a * divbeta_prime(p, m, s);
+    return lie_derivative + flat_laplacian_of_shift + lagrangian_terms + lapse_and_curvature;
+  } else {
+    return lie_derivative + flat_laplacian_of_shift + lapse_and_curvature;
+  }
 }
 
 /// (C1), (E2)-(E5): the right-hand sides of chi, a, b, K and A_a with the full shift, whose
 /// divergence is `div_beta`, into `rhs`; `trace_K` is the K of the undifferentiated terms:
-/// p.f[K] for BSSN, K-hat + 2 Theta for Z4c (Z1).
+/// p.f[K] for BSSN, K-hat + 2 Theta for Z4c (Z1). The Eulerian volume choice leaves out the
+/// div_beta terms (Volume).
+template <Volume volume = Volume::lagrangian>
 [[gnu::always_inline]] inline void metric_and_curvature_rhs(const PointData& p,
                                                             const MetricPieces& m, double div_beta,
                                                             double trace_K, Rhs& rhs) {
   using enum Var;
   const double AA = 1.5 * p.f[A_a] * p.f[A_a]; // A_a^2 + 2 A_b^2
-  // (C1)
-  rhs[chi] = p.adv[chi] + (2.0 / 3.0) * p.f[chi] * (p.f[alpha] * trace_K - div_beta);
-  // (E2)
-  rhs[a] = p.adv[a] + 2.0 * p.f[a] * p.d[beta] - (2.0 / 3.0) * p.f[a] * div_beta
-           - 2.0 * p.f[alpha] * p.f[a] * p.f[A_a];
-  // (E3), with -2 alpha b A_b = + alpha b A_a
-  rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - (2.0 / 3.0) * p.f[b] * div_beta
-           + p.f[alpha] * p.f[b] * p.f[A_a];
+  if constexpr (volume == Volume::lagrangian) {
+    // (C1)
+    rhs[chi] = p.adv[chi] + (2.0 / 3.0) * p.f[chi] * (p.f[alpha] * trace_K - div_beta);
+    // (E2)
+    rhs[a] = p.adv[a] + 2.0 * p.f[a] * p.d[beta] - (2.0 / 3.0) * p.f[a] * div_beta
+             - 2.0 * p.f[alpha] * p.f[a] * p.f[A_a];
+    // (E3), with -2 alpha b A_b = + alpha b A_a
+    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - (2.0 / 3.0) * p.f[b] * div_beta
+             + p.f[alpha] * p.f[b] * p.f[A_a];
+  } else {
+    static_cast<void>(div_beta);
+    // (C1e), (E2e), (E3e)
+    rhs[chi] = p.adv[chi] + (2.0 / 3.0) * p.f[chi] * (p.f[alpha] * trace_K);
+    rhs[a] = p.adv[a] + 2.0 * p.f[a] * p.d[beta] - 2.0 * p.f[alpha] * p.f[a] * p.f[A_a];
+    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r + p.f[alpha] * p.f[b] * p.f[A_a];
+  }
   // (E4)
   rhs[K] = p.adv[K] - lap_alpha(p, m) + p.f[alpha] * (AA + trace_K * trace_K / 3.0);
   // (E5), trace-free form
@@ -149,25 +172,27 @@ inline double rhs_Delta_r(const PointData& p, const MetricPieces& m, const Shift
 /// (H2)); pass full_shift(p) for the plain Gamma-driver. Always inlined: a call in the point
 /// loop stops its vectorisation (GCC left it out of line in the biased pair's instances, which
 /// then ran 8 times slower).
+template <Volume volume = Volume::lagrangian>
 [[gnu::always_inline]] inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge,
                                             const Shift& gauge_shift) {
   using enum Var;
   const MetricPieces m = metric_pieces(p);
   const Shift shift = full_shift(p);
   Rhs rhs;
-  metric_and_curvature_rhs(p, m, divbeta(p, m, shift), p.f[K], rhs);
+  metric_and_curvature_rhs<volume>(p, m, divbeta(p, m, shift), p.f[K], rhs);
   // (E6)
-  rhs[Delta_r] = rhs_Delta_r(p, m, shift);
+  rhs[Delta_r] = rhs_Delta_r<volume>(p, m, shift);
 
   // (G1)-(G3), gbssn/gauge.hpp; B is driven by d_t Delta^r of the gauge part of the shift.
   rhs[alpha] = rhs_alpha(gauge.slicing, p);
   rhs[beta] = rhs_beta(gauge.shift, p);
-  rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r(p, m, gauge_shift), gauge_shift);
+  rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift);
   return rhs;
 }
 
+template <Volume volume = Volume::lagrangian>
 inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge) {
-  return gbssn_rhs(p, gauge, full_shift(p));
+  return gbssn_rhs<volume>(p, gauge, full_shift(p));
 }
 
 /// Constraints and geometric diagnostics at one point (Sec. 5, Sec. 6).
