@@ -190,6 +190,9 @@ mistakes=(
   "the areal norm's interior cells weighted by their neighbours' whole distance|src/diagnostics/constraints.cpp|    const double dR = std::abs(R_areal[hi] - R_areal[lo]) / static_cast<double>(hi - lo);|    const double dR = std::abs(R_areal[hi] - R_areal[lo]);|the areal norm weights an end cell by its one-sided dR, an interior cell by half its neighbours' distance"
   "beta_GD's second derivative with the map's term of the wrong sign|src/gbssn/rhs_loop.hpp|                     + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|                     - fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|the horizon shift on with h_AH held at h is the run without it, on the uniform and the sinh grid"
   "dissipation at sigma/dx, not the cell's sigma/dr|src/gbssn/rhs_loop.hpp|      const double ko = ko_scale * inv_rx[i];|      const double ko = ko_scale;|Kreiss-Oliger dissipation damps the highest grid mode of each field at sigma/dr, that field alone, every order, both formulations, uniform and sinh grids"
+  "--gbssn-volume eulerian evolving the Lagrangian equations|src/gbssn/bssn_eulerian.hpp|    return gbssn_rhs<Volume::eulerian>(p, gauge, gauge_shift);|    return gbssn_rhs<Volume::lagrangian>(p, gauge, gauge_shift);|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
+  "the Eulerian (E3e) with the sign of alpha b A_a flipped|src/gbssn/equations.hpp|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r + p.f[alpha] * p.f[b] * p.f[A_a];|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - p.f[alpha] * p.f[b] * p.f[A_a];|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
+  "--gbssn-volume eulerian not passed on to the right-hand side|src/config/param_convert.cpp|? Formulation::bssn_eulerian|? Formulation::bssn|every flag acts where its table row says it acts: a number the run writes and the run key change with it, and the flags that change no number by design do what they do"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
@@ -263,7 +266,9 @@ whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
                "driver-full-shift a no-op" "--force keeps the earlier run's checkpoint"
                "Z4c's ADM-K lapse driven by K-hat + Theta"
                "beta_GD's second derivative with the map's term of the wrong sign"
-               "dissipation at sigma/dx, not the cell's sigma/dr")
+               "dissipation at sigma/dx, not the cell's sigma/dr"
+               "--gbssn-volume eulerian evolving the Lagrangian equations"
+               "the Eulerian (E3e) with the sign of alpha b A_a flipped")
 if [ -n "$only" ]; then
   selected=()
   for m in "${mistakes[@]}"; do

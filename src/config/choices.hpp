@@ -62,6 +62,8 @@ inline const Choices<mesh::TimeInterpolation> time_interp_choices{
     {"quadratic", mesh::TimeInterpolation::quadratic}};
 inline const Choices<Formulation> formulation_choices{{"bssn", Formulation::bssn},
                                                       {"z4c", Formulation::z4c}};
+inline const Choices<Volume> volume_choices{{"lagrangian", Volume::lagrangian},
+                                            {"eulerian", Volume::eulerian}};
 inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
                                                 {"biased", fd::Upwind::biased}};
 inline const Choices<AdvectionStencil> stencil_choices{
@@ -142,6 +144,7 @@ using NormalChoice = Choice<ShiftNormal, normal_choices>;
 using TimeInterpChoice = Choice<mesh::TimeInterpolation, time_interp_choices>;
 using UpwindChoice = Choice<fd::Upwind, upwind_choices>;
 using FormulationChoice = Choice<Formulation, formulation_choices>;
+using VolumeChoice = Choice<Volume, volume_choices>;
 using StencilChoice = Choice<AdvectionStencil, stencil_choices>;
 using DriverStencilChoice = Choice<AdvectionStencil, driver_stencil_choices>;
 using VariantChoice = Choice<ShiftVariant, variant_choices>;

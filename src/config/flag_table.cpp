@@ -154,6 +154,9 @@ std::vector<ParamSpec> evolution_specs() {
       {"formulation", &Params::formulation, "Formulation",
        "bssn | z4c (Z4c: K-hat = K - 2 Theta and Theta evolved, constraint damping kappa1, "
        "kappa2; docs/gbssn1d-equations.md Sec. 17)"},
+      {"gbssn-volume", &Params::gbssn_volume, "Formulation",
+       "BSSN's volume choice (Brown 2009): lagrangian, d_t det(gbar) = 0 | eulerian, det(gbar) "
+       "carried by the shift (docs/gbssn1d-equations.md Sec. 18); Z4c takes lagrangian"},
       {"kappa1", &Params::kappa1, "Formulation",
        "Z4c: constraint damping kappa1 (1/length, as --eta), >= 0: Theta and G^r decay at "
        "~ alpha kappa1; grid-scale noise grows where kappa1 x cell width > 0.3 "

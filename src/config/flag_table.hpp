@@ -72,7 +72,7 @@ struct ParamSpec {
                LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
                ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
                StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*,
-               FormulationChoice Params::*>
+               FormulationChoice Params::*, VolumeChoice Params::*>
       member;
   const char* group;
   const char* help;

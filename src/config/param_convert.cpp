@@ -107,7 +107,10 @@ InitialDataParams initial_data_params(const Params& p) {
 
 RhsParams rhs_params(const Params& p) {
   RhsParams r;
-  r.formulation = p.formulation.value();
+  // the Eulerian volume choice is a formulation of its own (gbssn/bssn_eulerian.hpp)
+  r.formulation = p.formulation == Formulation::bssn && p.gbssn_volume == Volume::eulerian
+                      ? Formulation::bssn_eulerian
+                      : p.formulation.value();
   r.z4c.kappa1 = p.kappa1.value_or(kappa1_rule(p));
   r.z4c.kappa2 = p.kappa2;
   r.z4c.kappa1_hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));

@@ -50,6 +50,7 @@ struct Params {
   LapseChoice lapse0 = InitialLapse::precollapsed; ///< one | precollapsed (wormhole)
   // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/length) and kappa2
   FormulationChoice formulation = Formulation::bssn; ///< bssn | z4c
+  VolumeChoice gbssn_volume = Volume::lagrangian;    ///< BSSN's: lagrangian | eulerian
   /// unset: 0.02/M with Z4c (resolve_defaults, kappa1_rule); left unset with BSSN
   std::optional<double> kappa1;
   double kappa2 = evolution_defaults().rhs.z4c.kappa2;

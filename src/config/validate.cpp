@@ -214,6 +214,10 @@ void validate_horizon_shift(const Params& p) {
   require_choice("--delta-advection", p.delta_advection);
   require_choice("--upwind", p.upwind);
   require_choice("--formulation", p.formulation);
+  require_choice("--gbssn-volume", p.gbssn_volume);
+  if (z4c_on(p) && p.gbssn_volume == Volume::eulerian)
+    throw ParamError("--gbssn-volume", p.gbssn_volume.name(),
+                     "is offered with --formulation bssn: Z4c here takes the Lagrangian choice");
   const double kappa1 = p.kappa1.value_or(kappa1_rule(p));
   require_finite("--kappa1", kappa1);
   if (kappa1 < 0.0)

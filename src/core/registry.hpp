@@ -81,13 +81,14 @@ inline constexpr std::array<std::string_view, 3> z4c_extra_series{"G_L2_R", "The
                                                                   "Theta_L2_R"};
 
 /// One row per Formulation, in enum order: BSSN (Sec. 2-3), all rows but Theta; Z4c (Sec. 17),
-/// all ten, with K-hat in K's row.
-inline constexpr std::array<FormulationTraits, 2> formulations{{
+/// all ten, with K-hat in K's row; BSSN with the Eulerian volume choice (Sec. 18), BSSN's rows.
+inline constexpr std::array<FormulationTraits, 3> formulations{{
     {Formulation::bssn, n_vars - 1, 0.0, {}, ""},
     {Formulation::z4c, n_vars, 2.0, z4c_extra_series,
      "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
      "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "
      "coordinate one\n"},
+    {Formulation::bssn_eulerian, n_vars - 1, 0.0, {}, ""},
 }};
 
 constexpr const FormulationTraits& traits(Formulation f) {
@@ -126,7 +127,8 @@ constexpr std::optional<Var> var_from_name(std::string_view name) {
 
 // The formulations' table must list them in enum order.
 static_assert(formulations[0].formulation == Formulation::bssn
-              && formulations[1].formulation == Formulation::z4c);
+              && formulations[1].formulation == Formulation::z4c
+              && formulations[2].formulation == Formulation::bssn_eulerian);
 
 // The registry must list the variables in enum order.
 static_assert([] {

@@ -38,6 +38,8 @@ decltype(auto) with_formulation(Formulation formulation, Fn&& fn) {
   switch (formulation) {
   case Formulation::z4c:
     return fn.template operator()<Formulation::z4c>();
+  case Formulation::bssn_eulerian:
+    return fn.template operator()<Formulation::bssn_eulerian>();
   case Formulation::bssn:
     break;
   }

@@ -15,13 +15,6 @@
 
 namespace gbssn1d {
 
-/// Brown's volume choice (Brown 2009), sigma in d_t gbar_ij = L_beta gbar_ij - (2/3) sigma
-/// gbar_ij Dbar_k beta^k - 2 alpha Abar_ij: Lagrangian (sigma = 1, d_t det(gbar) = 0 along the
-/// normal and the shift; Sec. 2.2) or Eulerian (sigma = 0, d_t gbar_ij without the volume term).
-/// The terms sigma weights are (C1)'s and (E2)-(E3)'s -(2/3) Dbar.beta parts and (E6)'s
-/// (2/3) Delta_gamma^r Dbar.beta + (1/(3a)) (Dbar.beta)'; the Eulerian choice leaves them out.
-enum class Volume { eulerian, lagrangian };
-
 /// Logarithmic derivatives and inverses used throughout.
 struct MetricPieces {
   double inv_a, inv_b, inv_chi;

@@ -165,6 +165,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
       {"M", trumpet, "1.1"},
       {"lapse0", "--grid uniform --N 32 --rmax 16" + rows, "one"},
       {"formulation", trumpet, "z4c"},
+      {"gbssn-volume", trumpet, "eulerian"},
       {"kappa1", z4c, "0.3"},
       {"kappa1-hole", z4c, "0"},
       {"kappa2", z4c, "0.5"},
@@ -405,6 +406,7 @@ const std::map<std::string, std::string>& no_numeric_limit() {
       {"--delta-advection", "a choice of names"},
       {"--upwind", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--formulation", "a choice, refused with a study variant of --rah-variant: no number"},
+      {"--gbssn-volume", "a choice, refused as eulerian with --formulation z4c: no number"},
       {"--rah-variant", "a choice and its combinations (boxes, --ah-every): no number"},
   };
   return flags;

@@ -1,5 +1,6 @@
 // The point-wise right-hand side against values computed independently from the verified
 // symbolic equations (tests/reference/make_pointwise_reference.py), and flat space.
+#include "gbssn/bssn_eulerian.hpp"
 #include "gbssn/equations.hpp"
 #include "gbssn/z4c.hpp"
 
@@ -45,13 +46,16 @@ void check(double computed, double reference, const std::string& what, double r)
   CHECK(std::abs(computed - reference) <= 1e-12 * (1.0 + std::abs(reference)));
 }
 
-} // namespace
-
-TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equations.py)") {
-  const auto t = read_table(std::string(GBSSN1D_TEST_DATA_DIR) + "/pointwise_reference.dat");
+/// A BSSN volume choice's point-wise equations (Bssn or BssnEulerian) against the reference
+/// file's rows: every right-hand side with and without the advective shift, the non-advective
+/// lapse, the constraints and the diagnostics.
+template <class Equations>
+void check_bssn_reference(const std::string& file) {
+  const auto t = read_table(std::string(GBSSN1D_TEST_DATA_DIR) + "/" + file);
   REQUIRE(t.rows.size() >= 8);
+  const Equations equations{};
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
-    const PointData p = point_from_row(t, row, Formulation::bssn);
+    const PointData p = point_from_row(t, row, Equations::formulation);
     const double r = p.r;
     auto ref = [&](const std::string& c) { return t.at(row, c); };
 
@@ -60,9 +64,9 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
       gauge.shift.eta = ref("eta");
       gauge.slicing.advective = true;
       gauge.shift.advective = advective_shift;
-      const Rhs rhs = gbssn_rhs(p, gauge);
+      const Rhs rhs = equations.rhs(p, gauge, full_shift(p));
       const std::string sfx = advective_shift ? "_advective" : "";
-      for (const auto& e : evolved(Formulation::bssn)) {
+      for (const auto& e : evolved(Equations::formulation)) {
         const std::string name(e.name);
         const bool gauge_var = e.var == Var::beta || e.var == Var::B;
         const std::string column = e.var == Var::alpha ? "rhs_alpha_advective"
@@ -74,7 +78,7 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
     Gauge non_advective;
     non_advective.shift.eta = ref("eta");
     non_advective.slicing.advective = false;
-    check(gbssn_rhs(p, non_advective)[Var::alpha], ref("rhs_alpha_nonadvective"),
+    check(equations.rhs(p, non_advective, full_shift(p))[Var::alpha], ref("rhs_alpha_nonadvective"),
           "alpha (non-adv.)", r);
 
     const Constraints c = constraints(p);
@@ -85,6 +89,18 @@ TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equ
     check(areal_radius(p), ref("R_areal"), "R_areal", r);
     check(misner_sharp_mass(p), ref("m_ms"), "m_ms", r);
   }
+}
+
+} // namespace
+
+TEST_CASE("point-wise RHS agrees with the symbolic reference (verify_gbssn1d_equations.py)") {
+  check_bssn_reference<Bssn>("pointwise_reference.dat");
+}
+
+// Sec. 18: the Eulerian volume choice, against the script's Eulerian formulas (checked there
+// against the 3D covariant equations with sigma = 0)
+TEST_CASE("the Eulerian volume choice: point-wise RHS agrees with the symbolic reference") {
+  check_bssn_reference<BssnEulerian>("pointwise_reference_eulerian.dat");
 }
 
 // Sec. 17: Z4c's right-hand sides (Z1)-(Z4) with generic kappa1, kappa2, Theta != 0 and
