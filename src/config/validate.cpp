@@ -218,6 +218,11 @@ void validate_horizon_shift(const Params& p) {
   if (z4c_on(p) && p.gbssn_volume == Volume::eulerian)
     throw ParamError("--gbssn-volume", p.gbssn_volume.name(),
                      "is offered with --formulation bssn: Z4c here takes the Lagrangian choice");
+  if (p.gbssn_volume == Volume::eulerian && (p.fd_order != 4 || p.upwind != fd::Upwind::lopsided))
+    throw ParamError("--gbssn-volume", p.gbssn_volume.name(),
+                     fmt::format("is offered with --fd-order 4 and --upwind lopsided only (given "
+                                 "{} and {})",
+                                 p.fd_order, p.upwind.name()));
   const double kappa1 = p.kappa1.value_or(kappa1_rule(p));
   require_finite("--kappa1", kappa1);
   if (kappa1 < 0.0)

@@ -26,6 +26,11 @@ struct PointEquations<Formulation::bssn_eulerian> {
   using type = BssnEulerian;
   static BssnEulerian make(const RhsParams&) { return {}; }
   static constexpr bool study_variants = false; ///< the study's variants are the Lagrangian's
+  /// the default stencil only (a finding more than a tool: runs/gbssn-volume.sh), which keeps
+  /// its compile time to one order's loops
+  static constexpr bool offers(int p, fd::Upwind upwind) {
+    return p == 4 && upwind == fd::Upwind::lopsided;
+  }
 };
 
 } // namespace gbssn1d

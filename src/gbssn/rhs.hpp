@@ -26,7 +26,8 @@ namespace gbssn1d {
 
 /// The point-wise equations of formulation f as the point loop takes them (a policy type such as
 /// Bssn, gbssn/equations.hpp, or Z4c, gbssn/z4c.hpp): specialised beside each, with `type`,
-/// `make(const RhsParams&)` and whether the horizon shift's study variants exist for it.
+/// `make(const RhsParams&)`, whether the horizon shift's study variants exist for it, and the
+/// orders and upwind pairs whose point loops are compiled for it (`offers(p, upwind)`).
 template <Formulation f>
 struct PointEquations;
 
@@ -111,6 +112,9 @@ private:
   /// and rhs_biased.cpp, rhs_z4c.cpp), which build in parallel; evaluate() only declares it.
   template <Formulation f, int p, fd::Upwind upwind>
   void interior_of(const State& u, State& dudt) const;
+  /// interior_of where f is offered at order p with the pair `upwind` (PointEquations::offers).
+  template <Formulation f, int p, fd::Upwind upwind>
+  void interior_offered(const State& u, State& dudt) const;
   /// operator() with the upwind pair `upwind`, at the grid's finite-difference order.
   template <fd::Upwind upwind>
   void evaluate_with(const State& u, State& dudt, double t);

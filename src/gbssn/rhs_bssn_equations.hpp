@@ -12,6 +12,7 @@ struct PointEquations<Formulation::bssn> {
   using type = Bssn;
   static Bssn make(const RhsParams&) { return {}; }
   static constexpr bool study_variants = true; ///< the published study's formulation
+  static constexpr bool offers(int, fd::Upwind) { return true; }
 };
 
 } // namespace gbssn1d

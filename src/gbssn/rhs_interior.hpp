@@ -12,6 +12,19 @@ namespace gbssn1d {
 
 template <Formulation f, int p, fd::Upwind upwind>
 void GbssnRhs::interior_of(const State& u, State& dudt) const {
+  if constexpr (!PointEquations<f>::offers(p, upwind)) {
+    // no point loop compiled: validate() refuses the combination
+    static_cast<void>(u);
+    static_cast<void>(dudt);
+    throw std::logic_error("a formulation at an --fd-order or --upwind it is not offered with "
+                           "(rejected by validate)");
+  } else {
+    interior_offered<f, p, upwind>(u, dudt);
+  }
+}
+
+template <Formulation f, int p, fd::Upwind upwind>
+void GbssnRhs::interior_offered(const State& u, State& dudt) const {
   using Equations = typename PointEquations<f>::type;
   const Equations equations = PointEquations<f>::make(params_);
   const HorizonShiftParams& hs = params_.horizon_shift;

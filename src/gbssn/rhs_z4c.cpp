@@ -11,6 +11,7 @@ struct PointEquations<Formulation::z4c> {
   using type = Z4c;
   static Z4c make(const RhsParams& params) { return Z4c(params.z4c); }
   static constexpr bool study_variants = false; ///< the study's variants are BSSN's
+  static constexpr bool offers(int, fd::Upwind) { return true; }
 };
 
 GBSSN1D_INTERIOR_INSTANCES(Formulation::z4c, fd::Upwind::lopsided);
