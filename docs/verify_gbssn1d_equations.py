@@ -336,8 +336,26 @@ def lie_cov2(T, beta_u):
                                             + T[i, k]*pd(beta_u[k], j) for k in range(3)))
 
 
-def brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u):
-    """Covariant BSSN (Brown 2009), Lagrangian choice, vacuum, full 3D index sums."""
+def brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u, sigma=1):
+    """Covariant BSSN (Brown 2009), vacuum, full 3D index sums.  sigma = 1 is the Lagrangian
+    choice (d_t det gbar = 0), sigma = 0 the Eulerian one (d_t ln det gbar = 2 Dbar_k beta^k).
+
+    Where sigma enters (derived here from the definitions, not copied): the generalized
+        d_t gbar_ij = L_beta gbar_ij - (2/3) sigma gbar_ij Dbar_k beta^k - 2 alpha Abar_ij
+    has the trace  d_t ln det gbar = gbar^ij d_t gbar_ij = 2 (1 - sigma) Dbar_k beta^k
+    (gbar^ij L_beta gbar_ij = 2 Dbar_k beta^k, Abar trace-free).  Its sigma term is a
+    conformal rescaling d_t gbar_ij = 2 w gbar_ij with w = -(sigma/3) Dbar_k beta^k, and
+      * phi = (1/12) ln(gamma/gbar):  d_t ln gamma = 2 D_k beta^k - 2 alpha K and
+        D_k beta^k - Dbar_k beta^k = 6 beta^k d_k phi give
+        d_t phi = beta^k d_k phi + (sigma/6) Dbar_k beta^k - alpha K/6;
+      * Abar_ij = e^{-4 phi} (K_ij - gamma_ij K/3): the physical part does not see sigma, so
+        its only sigma term is -4 (d_t phi) Abar_ij's  -(2/3) sigma Abar_ij Dbar_k beta^k;
+      * Lambda^i = Delta^i = gbar^jk (Gbar^i_jk - Ghat^i_jk): under the rescaling
+        d_t gbar^jk = -2 w gbar^jk and gbar^jk d_t Gbar^i_jk = -gbar^ij d_j w, so the sigma
+        terms are  (2/3) sigma Delta^i Dbar_k beta^k + (1/3) sigma gbar^ij d_j(Dbar_k beta^k)
+        (Delta^i computed from the metric, as in the Lagrangian equation).
+    Everything else (K, the physical Ricci tensor, D_i D_j alpha, the Abar and alpha terms of
+    Lambda's equation) does not depend on sigma."""
     gbi = gb.inv()
     Gb = christoffel(gb)
     Gh = christoffel(gh)
@@ -379,13 +397,13 @@ def brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u):
     Auu = gbi*Abar*gbi
     AA = sum(Abar[i, j]*Auu[i, j] for i in range(3) for j in range(3))
     out = {}
-    out['gb'] = lie_cov2(gb, beta_u) - sp.Rational(2, 3)*gb*divb - 2*alpha*Abar
-    out['phi'] = sum(beta_u[k]*pd(phi, k) for k in range(3)) + (divb - alpha*K)/6
+    out['gb'] = lie_cov2(gb, beta_u) - sp.Rational(2, 3)*sigma*gb*divb - 2*alpha*Abar
+    out['phi'] = sum(beta_u[k]*pd(phi, k) for k in range(3)) + (sigma*divb - alpha*K)/6
     out['K'] = sum(beta_u[k]*pd(K, k) for k in range(3)) - lap + alpha*(AA + K**2/3)
     S = -DDalpha + alpha*Rij
     trS = sum(gi[i, j]*S[i, j] for i in range(3) for j in range(3))
     STF = S - g*trS/3
-    out['Abar'] = (lie_cov2(Abar, beta_u) - sp.Rational(2, 3)*Abar*divb - 2*alpha*Abar*Aud
+    out['Abar'] = (lie_cov2(Abar, beta_u) - sp.Rational(2, 3)*sigma*Abar*divb - 2*alpha*Abar*Aud
                    + alpha*K*Abar + STF/e4p)
     # Lambda equation
     V = [[pd(beta_u[i], k) + sum(Gh[i][k][m]*beta_u[m] for m in range(3)) for k in range(3)] for i in range(3)]
@@ -394,7 +412,7 @@ def brown_bssn_rhs_3d(gb, gh, Abar, phi, K, Lam, alpha, beta_u):
     Lrhs = []
     for i in range(3):
         e = sum(beta_u[j]*pd(Lam[i], j) - Lam[j]*pd(beta_u[i], j) for j in range(3))
-        e += DDb[i] + sp.Rational(2, 3)*Du[i]*divb + sp.Rational(1, 3)*sum(gbi[i, j]*pd(divb, j) for j in range(3))
+        e += DDb[i] + sigma*(sp.Rational(2, 3)*Du[i]*divb + sp.Rational(1, 3)*sum(gbi[i, j]*pd(divb, j) for j in range(3)))
         e += -2*sum(Auu[i, j]*(pd(alpha, j) - 6*alpha*pd(phi, j)) for j in range(3))
         e += 2*alpha*sum(Auu[j, k]*Dl[i][j][k] for j in range(3) for k in range(3))
         e += -sp.Rational(4, 3)*alpha*sum(gbi[i, j]*pd(K, j) for j in range(3))
