@@ -4,8 +4,9 @@
 Evaluates the functions of docs/verify_gbssn1d_equations.py (phi form, A_b = -A_a/2,
 phi = -ln(chi)/4) on smooth, generic test profiles at sample radii, and writes the fields,
 their first and second radial derivatives and every right-hand side / constraint to
-tests/data/pointwise_reference.dat (BSSN) and tests/data/pointwise_reference_z4c.dat (Z4c,
-Sec. 17) (30 significant digits). The C++ test feeds the same fields
+tests/data/pointwise_reference.dat (BSSN), tests/data/pointwise_reference_z4c.dat (Z4c,
+Sec. 17) and tests/data/pointwise_reference_eulerian.dat (BSSN with Brown's Eulerian volume
+choice, sigma = 0, Sec. 18) (30 significant digits). The C++ test feeds the same fields
 and derivatives to the point-wise RHS and compares. Nothing here uses the C++ code.
 
 Run:  python3 tests/reference/make_pointwise_reference.py [path/to/verify_gbssn1d_equations.py]
@@ -134,3 +135,28 @@ z4c_outputs = {
 }
 write_table('pointwise_reference_z4c.dat', 'Z4c', z4c_fields,
             {'eta': eta, 'kappa1': kappa1, 'kappa2': kappa2}, z4c_outputs)
+
+# BSSN, Eulerian volume choice (sigma = 0, Sec. 18): the same profiles, radii and columns as
+# pointwise_reference.dat, with the right-hand sides of (E1e)-(E6e). The gauge equations are the
+# same; B's driver takes the Eulerian d_t Delta^r, as the BSSN file's takes the Lagrangian one.
+# The constraints, the expansion, R_areal and m_ms do not depend on the choice.
+rhs_e = ns['rhs_1d_eulerian'](a, b, phi, K, Aa, Ab, L, alpha, beta)
+ge_adv = ns['gauge_rhs'](K, alpha, beta, Bv, L, rhs_e['L'], eta, advect=True)
+ge_non = ns['gauge_rhs'](K, alpha, beta, Bv, L, rhs_e['L'], eta, advect=False)
+eulerian_outputs = dict(outputs)
+eulerian_outputs.update({
+    'rhs_alpha_advective': ge_adv['alpha'],
+    'rhs_beta': ge_non['beta'],
+    'rhs_beta_advective': ge_adv['beta'],
+    'rhs_B': ge_non['B'],
+    'rhs_B_advective': ge_adv['B'],
+    'rhs_chi': -4 * chi * rhs_e['phi'],
+    'rhs_a': rhs_e['a'],
+    'rhs_b': rhs_e['b'],
+    'rhs_K': rhs_e['K'],
+    'rhs_A_a': rhs_e['Aa'],
+    'rhs_Delta_r': rhs_e['L'],
+})
+assert list(eulerian_outputs) == list(outputs)
+write_table('pointwise_reference_eulerian.dat', 'BSSN, Eulerian choice sigma = 0', fields, {'eta': eta},
+            eulerian_outputs)
