@@ -136,6 +136,7 @@ EVOLVE = {
     "--M": Flag(FLOAT, ("1", "0.5", "2"), ("1e-3", "1e3", "1e-4", "1e308")),
     "--lapse0": Flag(TEXT, choices=("one", "precollapsed")),
     "--formulation": Flag(TEXT, choices=("bssn", "z4c")),
+    "--gbssn-volume": Flag(TEXT, choices=("lagrangian", "eulerian")),
     "--kappa1": Flag(FLOAT, ("0", "0.02", "0.1"), ("-1e-300", "1e308")),
     "--kappa1-hole": Flag(FLOAT, ("0", "1", "2"), ("-1", "nan", "1e308")),
     "--kappa2": Flag(FLOAT, ("0", "0.5"), ("-1", "-0.9999999", "1e308")),

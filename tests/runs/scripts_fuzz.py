@@ -183,6 +183,27 @@ def results(out):
 
 
 def complete(d):
+    """Whether d holds a completed run, as runs/lib.sh's lib_complete decides it."""
+    if os.path.isfile(os.path.join(d, ".lib-complete")):
+        return True
+    summary = os.path.join(d, "summary.dat")
+    if os.path.isfile(summary) and os.path.isdir(os.path.join(d, "logs")):
+        # a sweep: every member finished as a result
+        col, rows = None, 0
+        with open(summary) as f:
+            for line in f:
+                words = line.split()
+                if line.startswith("#"):
+                    if col is None and "status" in words[1:]:
+                        col = words[1:].index("status")
+                    continue
+                if not words:
+                    continue
+                if col is None or col >= len(words) or \
+                        words[col] not in ("ok", "invalid", "blew-up"):
+                    return False
+                rows += 1
+        return rows > 0
     conv = os.path.join(d, "convergence.dat")
     if os.path.isfile(conv):
         with open(conv) as f:
