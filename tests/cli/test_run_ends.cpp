@@ -56,12 +56,13 @@ TEST_CASE("timeseries.dat ends with how the run ended: completed or stopped") {
 
 TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, exits 143") {
   const fs::path out = scratch("sigterm");
-  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-                          + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
-                            " --tmax 2000 --dt-profiles 1 --out "
-                          + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
-                          + "/horizon.dat ]; do sleep 0.1; done; sleep 0.5; kill -TERM $p; "
-                            "wait $p; exit $?'";
+  const std::string cmd =
+      "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+      + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+        " --tmax 2000 --dt-profiles 1 --out "
+      + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
+      + "/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.1; done; sleep 0.5; kill -TERM $p; "
+        "wait $p; exit $?'";
   const int raw = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(raw));
   CHECK(WEXITSTATUS(raw) == 143);
@@ -153,12 +154,13 @@ TEST_CASE("SIGHUP, SIGUSR1 and SIGUSR2 stop a run resumably, as SIGTERM does") {
   for (const auto& [name, status] :
        {std::pair{"HUP", 129}, std::pair{"USR1", 138}, std::pair{"USR2", 140}}) {
     const fs::path out = scratch(std::string("signal_") + name);
-    const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-                            + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
-                              " --tmax 2000 --out "
-                            + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
-                            + "/horizon.dat ]; do sleep 0.05; done; sleep 0.2; kill -" + name
-                            + " $p; wait $p; exit $?'";
+    const std::string cmd =
+        "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
+        + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+          " --tmax 2000 --out "
+        + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
+        + "/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.05; done; sleep 0.2; kill -" + name
+        + " $p; wait $p; exit $?'";
     const int raw = std::system(cmd.c_str());
     INFO(name);
     REQUIRE(WIFEXITED(raw));

@@ -131,7 +131,8 @@ TEST_CASE("converge interrupted: exit 130, and its files and message say they ar
                             " --id 1log-trumpet --tmax 200 --out "
                           + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
                           + out.string()
-                          + "/N1200/horizon.dat ]; do sleep 0.05; done; sleep 0.3; kill -INT $p;"
+                          + "/N1200/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.05; done; "
+                            "sleep 0.3; kill -INT $p;"
                             " wait $p; exit $?'";
   const int raw = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(raw));
@@ -346,11 +347,11 @@ TEST_CASE("converge killed (SIGKILL, no chance to write) continues when the same
   // before the members start). Each member's file is waited for: the members run in parallel,
   // and on a busy machine (CI, 2 cores, the tests run 3 at a time) N400 had none yet when
   // N600 had one.
-  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
-                          + " 2>/dev/null & p=$!; for m in N400 N500 N600; do while [ ! -s "
-                          + out.string()
-                          + "/$m/checkpoint.bin ]; do sleep 0.02; done; done; kill -KILL $p;"
-                            " wait $p; exit $?'";
+  const std::string cmd =
+      "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
+      + " 2>/dev/null & p=$!; for m in N400 N500 N600; do while [ ! -s " + out.string()
+      + "/$m/checkpoint.bin ] && kill -0 $p 2>/dev/null; do sleep 0.02; done; done; kill -KILL $p;"
+        " wait $p; exit $?'";
   const int raw = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(raw));
   REQUIRE(WEXITSTATUS(raw) == 128 + 9);
@@ -394,7 +395,8 @@ TEST_CASE("converge interrupted with members still to run: no new member starts,
                             "--out "
                           + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
                           + out.string()
-                          + "/N400/horizon.dat ]; do sleep 0.01; done; kill -INT $p; wait $p; "
+                          + "/N400/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.01; done; "
+                            "kill -INT $p; wait $p; "
                             "exit $?'";
   const int raw = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(raw));

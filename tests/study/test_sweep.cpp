@@ -309,14 +309,14 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
 
 TEST_CASE("sweep: SIGTERM reaches the running members, which stop with a checkpoint") {
   const fs::path out = scratch("sweep_sigterm");
-  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + " sweep -j 2 --out "
-                          + out.string()
-                          + " --sweep N=3200,3300,3400 --id 1log-trumpet --grid uniform"
-                            " --rmax 200 --tmax 2000 --dt-profiles 100 2>/dev/null & p=$!;"
-                            " while [ ! -s "
-                          + out.string()
-                          + "/N=3300/horizon.dat ]; do sleep 0.1; done; sleep 0.5;"
-                            " kill -TERM $p; wait $p; exit $?'";
+  const std::string cmd =
+      "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + " sweep -j 2 --out " + out.string()
+      + " --sweep N=3200,3300,3400 --id 1log-trumpet --grid uniform"
+        " --rmax 200 --tmax 2000 --dt-profiles 100 2>/dev/null & p=$!;"
+        " while [ ! -s "
+      + out.string()
+      + "/N=3300/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.1; done; sleep 0.5;"
+        " kill -TERM $p; wait $p; exit $?'";
   const int raw = std::system(cmd.c_str());
   REQUIRE(WIFEXITED(raw));
   CHECK(WEXITSTATUS(raw) == 143);
