@@ -207,9 +207,9 @@ inline Constraints constraints(const PointData& p) {
 
 /// The BSSN formulation as a policy of the point loop (gbssn/rhs_loop.hpp: GbssnRhs::interior,
 /// a template parameter like the differencing order and the upwind pair): the variables it
-/// evolves, its right-hand sides at one point with the part of the shift that drives B, d_t
-/// Delta^r for a given shift (the delta-rhs-from-gd study variant), and its constraints.
-/// Another formulation is another type with these members (gbssn/z4c.hpp; docs/design.md,
+/// evolves and its right-hand sides at one point with the part of the shift that drives B.
+/// Another formulation is another type with these members (gbssn/z4c.hpp,
+/// gbssn/bssn_eulerian.hpp, and the study's variants in gbssn/rhs_study.cpp; docs/design.md,
 /// "A formulation").
 struct Bssn {
   static constexpr Formulation formulation = Formulation::bssn;
@@ -217,9 +217,6 @@ struct Bssn {
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
                                  const Shift& gauge_shift) const {
     return gbssn_rhs(p, gauge, gauge_shift);
-  }
-  double rhs_Delta_r(const PointData& p, const Shift& s) const {
-    return gbssn1d::rhs_Delta_r(p, metric_pieces(p), s);
   }
 };
 

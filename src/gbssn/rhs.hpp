@@ -101,11 +101,14 @@ public:
 
 private:
   /// The point loop; the formulation (a policy type such as Bssn), the differencing order, the
-  /// upwind pair, the horizon shift and its variant are template parameters, so that each
-  /// instance is branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
-            HorizonShiftParams::Variant variant = HorizonShiftParams::Variant::consistent>
+  /// upwind pair and the horizon shift are template parameters, so that each instance is
+  /// branch-free and vectorises (a run-time switch inside the loop stops it).
+  template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift>
   void interior(const Equations& equations, const State& u, State& dudt) const;
+  /// The horizon shift's study variants (--rah-variant no-shift-derivatives, ...): BSSN's loop
+  /// at 4th order with the lopsided pair, its equations wrapped (gbssn/rhs_study.cpp, the only
+  /// file that compiles them).
+  void interior_study_variant(const State& u, State& dudt) const;
   /// The point loop of formulation f at order p with the upwind pair `upwind`, with or without
   /// the horizon shift (and its study variants where f has them). Defined in
   /// gbssn/rhs_interior.hpp and compiled in each formulation's own source file (rhs_bssn.cpp

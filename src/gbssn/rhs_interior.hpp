@@ -32,27 +32,11 @@ void GbssnRhs::interior_offered(const State& u, State& dudt) const {
   if (!hs.active()) {
     interior<Equations, p, upwind, false>(equations, u, dudt);
   } else if (hs.variant == V::consistent) {
-    interior<Equations, p, upwind, true, V::consistent>(equations, u, dudt);
+    interior<Equations, p, upwind, true>(equations, u, dudt);
   } else if constexpr (PointEquations<f>::study_variants && upwind == fd::Upwind::lopsided
                        && p == 4) {
-    // the study variants: the published study's formulation, order and stencil only (fewer
-    // instances to compile; validate() rejects the rest)
-    switch (hs.variant) { // dispatched once per call, not per point
-    case V::no_shift_derivatives:
-      interior<Equations, p, upwind, true, V::no_shift_derivatives>(equations, u, dudt);
-      break;
-    case V::no_shift_second_derivatives:
-      interior<Equations, p, upwind, true, V::no_shift_second_derivatives>(equations, u, dudt);
-      break;
-    case V::delta_rhs_from_gd:
-      interior<Equations, p, upwind, true, V::delta_rhs_from_gd>(equations, u, dudt);
-      break;
-    case V::driver_full_shift:
-      interior<Equations, p, upwind, true, V::driver_full_shift>(equations, u, dudt);
-      break;
-    default:
-      break;
-    }
+    // the published study's formulation, order and stencil only (validate() rejects the rest)
+    interior_study_variant(u, dudt);
   } else {
     throw std::logic_error("a study --rah-variant with another formulation, --upwind or "
                            "--fd-order than BSSN's lopsided 4th order (rejected by validate)");

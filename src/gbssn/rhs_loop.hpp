@@ -1,12 +1,13 @@
 // The point loop of GbssnRhs (gbssn/rhs.hpp): gathering a point's data, the blocks of the loop
-// and its instances, one per finite-difference order, upwind pair and horizon-shift variant.
+// and its instances, one per formulation, finite-difference order and upwind pair, with and
+// without the horizon shift (the study's variants are formulations of their own:
+// gbssn/rhs_study.cpp).
 // Internal to src/gbssn: included by rhs.cpp (the lopsided pair) and rhs_biased.cpp (the biased
 // pair's instances, compiled on their own so that the two build in parallel).
 #pragma once
 
 #include "fd/stencils.hpp"
 #include "gbssn/dispatch.hpp"
-#include "gbssn/equations.hpp"
 #include "gbssn/full_shift.hpp"
 #include "gbssn/rhs.hpp"
 
@@ -188,8 +189,7 @@ advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, doub
 
 } // namespace point_loop
 
-template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift,
-          HorizonShiftParams::Variant variant>
+template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift>
 void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt) const {
   using namespace point_loop;
   const Grid& g = *grid_;
@@ -255,27 +255,13 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
       }
       advect_Delta<order, upwind>(p, gd, in[Var::Delta_r] + i, k6[Var::Delta_r], d1_scale, delta_w,
                                   driver_w);
-      Rhs rhs;
       if constexpr (with_horizon_shift) {
-        using Variant = HorizonShiftParams::Variant;
-        if constexpr (variant == Variant::no_shift_derivatives) {
-          p.d[Var::beta] = gd.d_beta; // the full shift's value, but beta_GD's derivatives
-          p.dd[Var::beta] = gd.dd_beta;
-        } else if constexpr (variant == Variant::no_shift_second_derivatives) {
-          p.dd[Var::beta] = gd.dd_beta;
-        } else if constexpr (variant == Variant::driver_full_shift) {
-          gd = full_shift(p);
-        }
         // beta_GD is the evolved field: (G2) advects it, and it is what dissipation damps
         k6[Var::beta] = fd::difference<order>(f);
         p.adv[Var::beta] = fd::advect_from<order, upwind>(
             p.f[Var::beta] * d1_scale, fd::upwind_sum<order, upwind>(f), k6[Var::beta]);
-        rhs = equations.rhs(p, gauge, gd);
-        if constexpr (variant == Variant::delta_rhs_from_gd)
-          rhs[Var::Delta_r] = equations.rhs_Delta_r(p, gd);
-      } else {
-        rhs = equations.rhs(p, gauge, gd);
       }
+      const Rhs rhs = equations.rhs(p, gauge, gd);
       const double ko = ko_scale * inv_rx[i];
 #pragma GCC unroll 16
       for (std::size_t v = 0; v < n_fields; ++v)

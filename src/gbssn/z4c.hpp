@@ -75,10 +75,6 @@ struct Z4c {
     return gbssn1d::rhs_Delta_r(p, m, s) - (2.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[Theta]
            - 2.0 * p.f[alpha] * kappa1 * G_r;
   }
-  [[gnu::always_inline]] double rhs_Delta_r(const PointData& p, const Shift& s) const {
-    return rhs_Delta_r(p, metric_pieces(p), s, kappa1_at(p));
-  }
-
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
                                  const Shift& gauge_shift) const {
     using enum Var;

@@ -18,7 +18,7 @@
 #   the legacy layout (3 ghosts a side, as written
 #   before the finite-difference order became a choice) resumed; each --fd-order; Z4c on the
 #   sinh grid (with the horizon shift and the ADM-K lapse), uniform at 6th order with the
-#   biased pair, and on boxes.
+#   biased pair, and on boxes; each of the horizon shift's study variants (--rah-variant).
 set -euo pipefail
 new_keys=""
 new_args=()
@@ -54,6 +54,10 @@ declare -A cases=(
   [boxes-box-substage]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --rah-variant box-substage --cfl 0.25"
   [boxes-no-subcycling]="--grid boxes --rmax 64 --N 48 --rahA 0.5 --no-subcycling --ah-every step --cfl 0.25"
   [boxes-maximal]="--grid boxes --rmax 32 --N 32 --id maximal-trumpet --cfl 0.25"
+  [study-no-shift-derivatives]="--N 120 --rahA 0.5 --rah-variant no-shift-derivatives"
+  [study-no-shift-second-derivatives]="--N 120 --rahA 0.5 --rah-variant no-shift-second-derivatives"
+  [study-delta-rhs-from-gd]="--N 120 --rahA 0.5 --rah-variant delta-rhs-from-gd"
+  [study-driver-full-shift]="--N 120 --rahA 0.5 --rah-variant driver-full-shift"
   [z4c-sinh]="--N 120 --formulation z4c --id 1log-trumpet"
   [z4c-sinh-shift]="--N 120 --formulation z4c --rahA 0.5 --z4c-lapse-adm"
   [z4c-uniform-fd6-biased]="--grid uniform --rmax 40 --N 400 --fd-order 6 --formulation z4c --upwind biased --kappa2 0.5"
