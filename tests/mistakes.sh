@@ -192,6 +192,7 @@ mistakes=(
   "dissipation at sigma/dx, not the cell's sigma/dr|src/gbssn/rhs_loop.hpp|      const double ko = ko_scale * inv_rx[i];|      const double ko = ko_scale;|Kreiss-Oliger dissipation damps the highest grid mode of each field at sigma/dr, that field alone, every order, both formulations, uniform and sinh grids"
   "--gbssn-volume eulerian evolving the Lagrangian equations|src/gbssn/bssn_eulerian.hpp|    return gbssn_rhs<Volume::eulerian>(p, gauge, gauge_shift);|    return gbssn_rhs<Volume::lagrangian>(p, gauge, gauge_shift);|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
   "the Eulerian (E3e) with the sign of alpha b A_a flipped|src/gbssn/equations.hpp|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r + p.f[alpha] * p.f[b] * p.f[A_a];|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - p.f[alpha] * p.f[b] * p.f[A_a];|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
+  "midstep-update searching on the 3rd RK substage|src/evolution/horizon_tracker.cpp|% static_cast<std::uint64_t>(4 * s.every_steps) == 1|% static_cast<std::uint64_t>(4 * s.every_steps) == 2|--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only"
   "--gbssn-volume eulerian not passed on to the right-hand side|src/config/param_convert.cpp|? Formulation::bssn_eulerian|? Formulation::bssn|every flag acts where its table row says it acts: a number the run writes and the run key change with it, and the flags that change no number by design do what they do"
 )
 

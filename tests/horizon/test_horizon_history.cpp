@@ -215,3 +215,35 @@ TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past e
     CHECK(searched == c.searched);
   }
 }
+
+// Guards the midstep-update schedule (horizon_tracker.cpp, Mode::held): its search is on the
+// 2nd RK substage (evaluation 4k + 1) of every n-th step, and no other evaluation searches
+// (with 4k + 2, the 3rd substage, no test failed in an independent mutation round).
+TEST_CASE("--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only") {
+  for (const int every : {1, 2}) {
+    CAPTURE(every);
+    Params p;
+    p.id = InitialDataKind::onelog_trumpet;
+    p.grid = RadialGrid::uniform;
+    p.N = 64;
+    p.rmax = 16.0;
+    p.rahA = 0.5;
+    p.rah0 = 1.0;
+    p.ah_every = AhEvery::parse(std::to_string(every));
+    p.rah_variant = ShiftVariant::midstep_update;
+    const Simulation sim = simulation(p);
+    std::vector<State> levels = sim.level_states();
+    std::vector<GbssnRhs> rhs{GbssnRhs(sim.grid(), sim.config().rhs)};
+    HorizonTracker tracker{sim.config(), sim.layout(), levels, rhs};
+    REQUIRE(tracker.mode() == HorizonTracker::Mode::held);
+    const double held = 0.123; // no horizon lies there: a search finds the data's, r = 0.83
+    const double r_AH = sim.horizons().horizon()->r;
+    for (std::uint64_t evaluation = 0; evaluation < 20; ++evaluation) {
+      CAPTURE(evaluation);
+      const auto h = tracker.at_evaluation(0, levels[0], sim.grid(), 0.0, evaluation, held);
+      REQUIRE(h.has_value());
+      const bool searches = evaluation % static_cast<std::uint64_t>(4 * every) == 1;
+      CHECK(*h == (searches ? doctest::Approx(r_AH).epsilon(1e-6) : doctest::Approx(held)));
+    }
+  }
+}
