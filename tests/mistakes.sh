@@ -193,6 +193,9 @@ mistakes=(
   "--gbssn-volume eulerian evolving the Lagrangian equations|src/gbssn/bssn_eulerian.hpp|    return gbssn_rhs<Volume::eulerian>(p, gauge, gauge_shift);|    return gbssn_rhs<Volume::lagrangian>(p, gauge, gauge_shift);|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
   "the Eulerian (E3e) with the sign of alpha b A_a flipped|src/gbssn/equations.hpp|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r + p.f[alpha] * p.f[b] * p.f[A_a];|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - p.f[alpha] * p.f[b] * p.f[A_a];|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
   "midstep-update searching on the 3rd RK substage|src/evolution/horizon_tracker.cpp|% static_cast<std::uint64_t>(4 * s.every_steps) == 1|% static_cast<std::uint64_t>(4 * s.every_steps) == 2|--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only"
+  "resume refusing --tmax equal to its checkpoint's time|src/cli/evolve_resume.cpp|  if (p.tmax < c.t)|  if (p.tmax <= c.t)|resume --tmax equal to the checkpoint's time is not before it"
+  "flag suggestions within one edit, not two|src/cli/cli.cpp|d = edit_distance(name.substr(2), known); d <= 2)|d = edit_distance(name.substr(2), known); d <= 1)|unknown flags are named as typed, with the nearest flags, and flags before the subcommand are told to follow it"
+  "converge accepting a resolution given twice|src/study/converge.cpp|if (!(options.N[k] > options.N[k - 1]))|if (!(options.N[k] >= options.N[k - 1]))|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
   "--gbssn-volume eulerian not passed on to the right-hand side|src/config/param_convert.cpp|? Formulation::bssn_eulerian|? Formulation::bssn|every flag acts where its table row says it acts: a number the run writes and the run key change with it, and the flags that change no number by design do what they do"
 )
 

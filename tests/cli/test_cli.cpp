@@ -553,6 +553,13 @@ TEST_CASE(
   CHECK(typo.err.find("--rah is not a flag of gbssn1d evolve; did you mean --rahA or --rah0")
         != std::string::npos);
   CHECK(typo.err.find("0.5 --rah") == std::string::npos);
+  // two edits away (kapa: a p and a digit short) is still near; a name far from every flag is not
+  const Result two = run("evolve --tmax 0 --kapa 0.1 --out " + out.string());
+  CHECK(two.status == 2);
+  CHECK(two.err.find("did you mean --kappa1 or --kappa2?") != std::string::npos);
+  const Result three = run("evolve --tmax 0 --zzzzzz 0.1 --out " + out.string());
+  CHECK(three.status == 2);
+  CHECK(three.err.find("did you mean") == std::string::npos);
   const Result before = run("--out " + out.string() + " evolve --tmax 0");
   CHECK(before.status == 2);
   CHECK(before.err.find("--out before the subcommand: flags follow it") != std::string::npos);

@@ -373,3 +373,22 @@ TEST_CASE("resume of a completed run to its own tmax does nothing and changes no
   CHECK(later.err.find("apparent horizon at t =") == std::string::npos);
   fs::remove_all(out);
 }
+
+TEST_CASE("resume --tmax equal to the checkpoint's time is not before it") {
+  // uniform 16 M at N = 64: dt = 1/8 exactly, so the checkpoint lies at t = 0.5 itself
+  const fs::path out = scratch("resume_tmax_at_checkpoint");
+  REQUIRE(run("evolve --id 1log-trumpet --grid uniform --rmax 16 --N 64 --tmax 1 "
+              "--checkpoint-every 0.5 --out "
+              + out.string())
+              .status
+          == 0);
+  const auto at = run("resume " + out.string() + " --tmax 0.5");
+  INFO(at.err);
+  CHECK(at.status == 0);
+  CHECK(at.err.find("is before the checkpoint") == std::string::npos);
+  const auto before = run("resume " + out.string() + " --tmax 0.49");
+  CHECK(before.status == 2);
+  CHECK(before.err.find("--tmax = 0.49 is invalid: is before the checkpoint at t = 0.5")
+        != std::string::npos);
+  fs::remove_all(out);
+}
