@@ -1,7 +1,8 @@
 // The apparent horizon's coordinate radius h_AH that the horizon-adjusting shift beta_H uses
-// (docs/gbssn1d-equations.md, the horizon-adjusting shift): measured on the state, held or
-// extrapolated between measurements, and handed to every level's right-hand side. The mode is
-// decided once from the configuration, as SpECTRE's control systems separate measurement from
+// (docs/gbssn1d-equations.md, the horizon-adjusting shift). What is measured (HorizonProbe: the
+// finder on a level's or an RK stage's state) is kept apart from what is controlled: the h_AH
+// each level's right-hand side is handed, decided by one strategy per mode, made once from the
+// configuration by make_horizon_tracker, as SpECTRE's control systems separate measurement from
 // the control they feed:
 //   off           no horizon shift (rahA = 0): h_AH is never needed;
 //   prescribed    open loop, h_AH(t) from a file, no searches;
@@ -14,30 +15,24 @@
 //   extrapolated  boxes, searches every substage (the default), or any grid with
 //                 --ah-every extrapolated: a search (on the box holding the horizon) after each
 //                 step of the hierarchy, and h_AH at any stage's time from the Lagrange
-//                 polynomial through the last (up to) four radii (error O(dt^4)).
+//                 polynomial through the last (up to) four radii (error O(dt^4));
+//                 evolution/horizon_extrapolated.hpp, with the start's pilot for subcycled boxes.
 // Until a first horizon is found beta_H = 0; a horizon found and then lost by a search stops the
 // run (HorizonLostError), rather than letting beta_H switch off unsaid.
 #pragma once
 
 #include "evolution/evolution_config.hpp"
+#include "evolution/horizon_probe.hpp"
 #include "gbssn/rhs.hpp"
-#include "horizon/apparent_horizon.hpp"
 #include "mesh/layout.hpp"
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace gbssn1d {
-
-/// The apparent horizon the horizon shift was following is no longer found: beta_H would switch
-/// off and the run go on in another gauge without a word, so the run stops instead, as on a
-/// finder failure (a HorizonFinderError: exit status 3, the output up to then kept). The message
-/// names the time and the last radius.
-class HorizonLostError : public HorizonFinderError {
-public:
-  using HorizonFinderError::HorizonFinderError;
-};
 
 class HorizonTracker {
 public:
@@ -45,83 +40,69 @@ public:
 
   /// Reads `levels` and sets the h_AH of `rhs` (one per level); both outlive the tracker.
   HorizonTracker(const EvolutionConfig& config, const mesh::MeshLayout& layout,
-                 const std::vector<State>& levels, std::vector<GbssnRhs>& rhs);
+                 const std::vector<State>& levels, std::vector<GbssnRhs>& rhs)
+      : config_(config), probe_(config, layout, levels), rhs_(rhs) {}
+  virtual ~HorizonTracker() = default;
+  HorizonTracker(const HorizonTracker&) = delete;
+  HorizonTracker& operator=(const HorizonTracker&) = delete;
 
-  Mode mode() const { return mode_; }
+  virtual Mode mode() const = 0;
 
   /// h_AH for an evaluation of level `level`'s RHS on the stage state u at time t, the
-  /// evaluation'th of that RHS, which holds `held` so far (GbssnRhs::HorizonSource): the
-  /// prescribed value, a search or extrapolation in the search window (modes substage and
-  /// extrapolated, and the midstep-update variant's stage), else `held`.
-  std::optional<double> at_evaluation(std::size_t level, const State& u, const Grid& grid, double t,
-                                      std::uint64_t evaluation, std::optional<double> held);
-  /// Before the first step at time t: the first searches of the held and extrapolated modes,
-  /// and with box-substage every box's starting radius.
+  /// evaluation'th of that RHS, which holds `held` so far (GbssnRhs::HorizonSource).
+  virtual std::optional<double> at_evaluation(std::size_t level, const State& u, const Grid& grid,
+                                              double t, std::uint64_t evaluation,
+                                              std::optional<double> held) = 0;
+  /// Before the first step of a run (not a resumed one): a pilot run, where the mode needs one
+  /// (horizon_extrapolated.hpp). dt is the hierarchy's step, finest_steps the finest level's
+  /// steps in it.
+  virtual void before_run(double /*t*/, double /*dt*/, long /*finest_steps*/) {}
+  /// Before the first step at time t: the mode's first search, and with box-substage every
+  /// box's starting radius.
   void start(double t);
-  /// After step n of the hierarchy, from t_before to t: the searches due (held every n steps
-  /// or every interval T; the extrapolated mode's search).
-  void after_step(long n, double t_before, double t);
+  /// After step n of the hierarchy, from t_before to t: the searches due.
+  virtual void after_step(long /*n*/, double /*t_before*/, double /*t*/) {}
 
-  /// h_AH for the state at time t, as the evolution's RHS would use it now (a search for the
-  /// substage mode); nullopt: no horizon, beta_H = 0.
-  std::optional<double> radius(double t);
+  /// h_AH for the state at time t, as the evolution's RHS would use it now; nullopt: no
+  /// horizon, beta_H = 0.
+  virtual std::optional<double> radius(double t) = 0;
   /// The level searched: the finest on which the horizon (or, before one is found, the
   /// standard radius 0.8304 M) lies well inside; 0 for a single grid.
-  std::size_t level() const;
+  std::size_t level() const { return probe_.level(shared_); }
 
-  /// What a checkpoint keeps (boxes): the shared radius before the coming RHS, and the history.
+  /// What a checkpoint keeps: the shared radius before the coming RHS, and the extrapolated
+  /// mode's history (empty in the others).
   std::optional<double> shared_before_rhs() const { return shared_before_rhs_; }
-  const std::vector<std::array<double, 2>>& history() const { return history_; }
+  virtual const std::vector<std::array<double, 2>>& history() const;
   /// Records the shared radius as it is before the next RHS evaluation (for checkpoints).
   void mark_before_rhs() { shared_before_rhs_ = shared_; }
   /// Continues from a checkpoint's radius and history.
-  void restore(const std::optional<double>& shared,
-               const std::vector<std::array<double, 2>>& history);
+  virtual void restore(const std::optional<double>& shared,
+                       const std::vector<std::array<double, 2>>& history);
 
-  /// Subcycled boxes in the extrapolated mode: over the first steps of the hierarchy its history
-  /// holds fewer than four radii, and the coarse boxes step first, up to a step of the hierarchy
-  /// ahead of the last search. That step is capped by the coarse boxes' damping limit and is
-  /// the same at every N (0.5 M at eta = 2/M), so the constant, linear and quadratic
-  /// extrapolations of those steps put an offset into the gauge that N does not reduce (1.3e-4
-  /// in r_AH: docs/horizon-shift-study.md, Sec. 6.7). Whether the run starts from a pilot.
-  bool wants_start_nodes() const;
-  /// The pilot's radii (t, h_AH) at every step of the finest box from t = 0 (time-ordered):
-  /// while t <= their last time, h_AH(t) is the cubic through the four nodes around t.
-  void seed_start(std::vector<std::array<double, 2>> nodes);
-
-private:
-  /// A search at an RK substage of `level` near `seed` (modes substage and extrapolated).
+protected:
+  /// The mode's part of start().
+  virtual void on_start(double /*t*/) {}
+  /// A search on level `level`'s RK stage state near `seed`: on a single grid, or on the box
+  /// holding the horizon, whose radius every other box reads. A horizon lost stops the run.
   std::optional<double> locate(std::size_t level, const State& u, const Grid& grid, double seed,
                                double t);
-  /// Whether an RK stage's h_AH is searched for on the stage state: the substage mode, and a
-  /// single grid's extrapolated mode until its history holds four radii.
-  bool searches_stages() const;
-  /// h_AH at time t from the history (extrapolated mode).
-  std::optional<double> extrapolated_at(double t) const;
-  /// A search near `seed` on level l's state; a HorizonFinderError gets the time added.
-  std::optional<MarginalSurface> search(std::size_t l, double seed, double t) const;
-  /// Whether the held mode searches after step n (from t_before to t): every n-th step, or the
-  /// first step at or past a multiple of the interval. From the times alone, so that a resumed
-  /// run searches where an uninterrupted one does.
-  bool held_search_due(long n, double t_before, double t) const;
-  void update_held(double t);
-  void search_at_step(double t);
-  /// Throws HorizonLostError: at time t no horizon was found on level l, last at radius `last`.
-  [[noreturn]] void lost(std::size_t l, double t, double last) const;
+  /// A search on the level holding the horizon near the radius its RHS holds: h_AH now.
+  std::optional<double> search_now(double t) const;
 
   const EvolutionConfig& config_;
-  const mesh::MeshLayout& layout_;
-  const std::vector<State>& levels_;
+  HorizonProbe probe_;
   std::vector<GbssnRhs>& rhs_;
-  Mode mode_;
   /// The radius every level's horizon shift uses, found on level()'s state; the others read it.
   std::optional<double> shared_;
   std::optional<double> shared_before_rhs_;
-  std::vector<std::array<double, 2>> history_;     ///< extrapolated: (t, h_AH) of the last searches
-  std::vector<std::array<double, 2>> start_nodes_; ///< seed_start's nodes, empty without a pilot
-  /// extrapolated_at's polynomial in Newton's form, and the history it was formed from
-  mutable std::vector<std::array<double, 2>> newton_nodes_;
-  mutable std::vector<double> newton_coefficients_;
 };
+
+/// The strategy of the configuration's mode. Reads `levels` and sets the h_AH of `rhs` (one per
+/// level); config, layout, levels and rhs outlive it.
+std::unique_ptr<HorizonTracker> make_horizon_tracker(const EvolutionConfig& config,
+                                                     const mesh::MeshLayout& layout,
+                                                     const std::vector<State>& levels,
+                                                     std::vector<GbssnRhs>& rhs);
 
 } // namespace gbssn1d

@@ -26,11 +26,11 @@ Simulation::Simulation(const EvolutionConfig& config)
       rhs_(make_level_rhs(config_, layout_,
                           [this](std::size_t l, const State& u, const Grid& g, double t,
                                  std::uint64_t evaluation, std::optional<double> held) {
-                            return tracker_.at_evaluation(l, u, g, t, evaluation, held);
+                            return tracker_->at_evaluation(l, u, g, t, evaluation, held);
                           })),
       diagnostics_(config_, layout_),
       levels_u_(initial_levels(layout_, config.initial_data, config.rhs.formulation)),
-      tracker_(config_, layout_, levels_u_, rhs_),
+      tracker_(make_horizon_tracker(config_, layout_, levels_u_, rhs_)),
       schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, config.stepping))),
       stepper_(layout_, level_functors(rhs_), config.stepping), clock_(config_, schedule_.dt),
       dense_(layout_, config_.chi_floor, schedule_.dt) {
@@ -71,7 +71,7 @@ std::uint64_t Simulation::point_evaluations() const {
 }
 
 std::size_t Simulation::horizon_level() const {
-  return tracker_.level();
+  return tracker_->level();
 }
 
 HorizonSearch Simulation::horizons() const {
@@ -79,7 +79,7 @@ HorizonSearch Simulation::horizons() const {
 }
 
 std::optional<double> Simulation::horizon_radius() {
-  return tracker_.radius(t_);
+  return tracker_->radius(t_);
 }
 
 std::vector<double> Simulation::horizon_shift() {
@@ -177,7 +177,7 @@ void Simulation::set_first_cells() {
   const bool shift = config_.rhs.horizon_shift.active();
   for (std::size_t l = 0; l < layout_.levels(); ++l) {
     rhs_[l].set_first_cell(
-        skip_covered_ && !(shift && l == tracker_.level()) ? stepper_.first_needed_cell(l) : 0);
+        skip_covered_ && !(shift && l == tracker_->level()) ? stepper_.first_needed_cell(l) : 0);
     stepper_.set_first_cell(l, rhs_[l].first_cell()); // the stage sums skip the same cells
   }
 }
@@ -249,42 +249,13 @@ void Simulation::save_checkpoint(Output* out, const std::optional<double>& h_AH_
     on_checkpoint(c);
 }
 
-void Simulation::seed_horizon_start() {
-  const double t_pilot = std::min(config_.tmax, 3.0 * schedule_.dt);
-  if (!tracker_.wants_start_nodes() || !(t_ < t_pilot) || stepper_.steps(layout_.levels() - 1) == 1)
-    return;
-  EvolutionConfig c = config_;
-  c.stepping.subcycling = false;
-  c.tmax = t_pilot;
-  std::vector<std::array<double, 2>> nodes;
-  try {
-    Simulation pilot(c);
-    pilot.on_step = [&nodes](const HorizonTracker& tracker) {
-      for (const auto& node : tracker.history()) // the radii not yet taken, t = 0 first
-        if (nodes.empty() || node[0] > nodes.back()[0])
-          nodes.push_back(node);
-    };
-    pilot.run(nullptr);
-  } catch (const Interrupted&) {
-    throw;
-  } catch (const std::exception&) { // the run itself meets whatever stopped the pilot
-    return;
-  }
-  // every step of the finest box, from t = 0 on
-  const double dt_fine = schedule_.dt / static_cast<double>(stepper_.steps(layout_.levels() - 1));
-  if (nodes.empty() || nodes.front()[0] != 0.0 || nodes.back()[0] < t_pilot * (1.0 - 1e-12)
-      || static_cast<double>(nodes.size()) < t_pilot / dt_fine)
-    return;
-  tracker_.seed_start(std::move(nodes));
-}
-
 void Simulation::run(Output* out) {
   const Schedule& s = schedule_;
   const double t_end = config_.tmax;
-  seed_horizon_start();
+  tracker_->before_run(t_, schedule_.dt, stepper_.steps(layout_.levels() - 1));
   if (!resumed_) {
     check_finite();
-    tracker_.start(t_);
+    tracker_->start(t_);
     // The stepper was initialised before the horizon was found: quadratic time interpolation's
     // earlier time levels (one RK4 step backwards) are made again with the horizon shift that
     // the evolution will use (without it they lack beta_H, an O(dt) inconsistency at every fine
@@ -299,7 +270,7 @@ void Simulation::run(Output* out) {
   // a later tmax steps exactly as an uninterrupted one).
   double next_checkpoint = checkpoint_after(config_.checkpoint_every, t_);
   ProgressLine progress(show_progress && ::isatty(STDERR_FILENO), t_, t_end);
-  tracker_.mark_before_rhs();
+  tracker_->mark_before_rhs();
   dudt_now_.fit(levels_u_[0]);
   set_first_cells();
   rhs_[0](levels_u_[0], dudt_now_, t_); // RK4's first stage of the first step
@@ -315,12 +286,12 @@ void Simulation::run(Output* out) {
     t_ = t_next; // no accumulated round-off in t
     step_ = n;
     check_finite();
-    tracker_.after_step(n, t_before, t_);
+    tracker_->after_step(n, t_before, t_);
     if (on_step)
-      on_step(tracker_);
+      on_step(*tracker_);
     // what a checkpoint records of the RHS before this evaluation (resume repeats it)
     const std::optional<double> h_AH_before_rhs = rhs_[0].horizon_radius();
-    tracker_.mark_before_rhs();
+    tracker_->mark_before_rhs();
     evaluations_before_rhs_ = rhs_[0].evaluations();
     if (!last) {
       set_first_cells();

@@ -87,7 +87,7 @@ public:
   /// convergence study.
   std::function<void(Simulation&)> on_series;
 
-  /// Called after every step, with the horizon's tracker (seed_horizon_start's pilot).
+  /// Called after every step, with the horizon's tracker (the extrapolated mode's pilot).
   std::function<void(const HorizonTracker&)> on_step;
 
   /// Progress on stderr (simulated time, speed, time left), when stderr is a terminal.
@@ -165,12 +165,6 @@ private:
   void save_checkpoint(Output* out, const std::optional<double>& h_AH_before_rhs);
   /// Say on stderr when the horizon appears or disappears.
   void report_horizon(const std::optional<MarginalSurface>& h);
-  /// Subcycled boxes with the horizon shift, before the first steps (HorizonTracker::
-  /// wants_start_nodes): the same configuration without subcycling, from t = 0 over the first
-  /// three steps of the hierarchy, searching after each step of the finest box; its radii go to
-  /// the tracker (seed_start). Deterministic, so a resumed run makes the same. Without a horizon
-  /// at each of those steps, or if the pilot fails, nothing is seeded.
-  void seed_horizon_start();
 
   EvolutionConfig config_;
   mesh::MeshLayout layout_;       ///< the levels (one: the single grid)
@@ -178,7 +172,8 @@ private:
   std::vector<GbssnRhs> rhs_;     ///< one per level
   SeriesDiagnostics diagnostics_; ///< the series row's own RHS per level
   std::vector<State> levels_u_;   ///< the state of each level
-  HorizonTracker tracker_;        ///< h_AH for beta_H: searches, held and extrapolated values
+  /// h_AH for beta_H: the mode's strategy (searches, held and extrapolated values)
+  std::unique_ptr<HorizonTracker> tracker_;
   State dudt_now_;    ///< level 0's d_t u at the current state: the next step's first RK4 stage
   State u_composite_; ///< the composite state, for profiles
   std::vector<std::size_t> composite_levels_; ///< the level of each composite cell

@@ -33,7 +33,7 @@ void Simulation::restore(const Checkpoint& checkpoint) {
   rhs_[0].set_horizon_radius(c.h_AH);
   rhs_[0].set_evaluations(c.evaluations);
   if (n_levels > 1) {
-    tracker_.restore(c.shared_h_AH, c.h_AH_history);
+    tracker_->restore(c.shared_h_AH, c.h_AH_history);
     for (std::size_t l = 1; l < n_levels; ++l) {
       rhs_[l].set_horizon_radius(c.level_h_AH[l]);
       // level l takes steps(l) steps of 4 evaluations per step of the hierarchy
@@ -50,7 +50,7 @@ void Simulation::restore(const Checkpoint& checkpoint) {
       stepper_.set_history(l, std::move(history));
     }
   } else {
-    tracker_.restore(c.h_AH, c.h_AH_history); // a history with --ah-every extrapolated only
+    tracker_->restore(c.h_AH, c.h_AH_history); // a history with --ah-every extrapolated only
   }
   had_horizon_ = c.had_horizon;
   reported_ = c.reported;
@@ -71,11 +71,11 @@ Checkpoint Simulation::checkpoint(Output& out, const std::optional<double>& h_AH
   c.evaluations = evaluations_before_rhs_;
   c.marks = out.marks();
   c.u = levels_u_[0].values();
-  c.h_AH_history = tracker_.history(); // boxes, and single grids with --ah-every extrapolated
+  c.h_AH_history = tracker_->history(); // boxes, and single grids with --ah-every extrapolated
   if (layout_.levels() > 1) {
     for (std::size_t l = 1; l < layout_.levels(); ++l)
       c.finer.push_back(levels_u_[l].values());
-    c.shared_h_AH = tracker_.shared_before_rhs(); // before the next step's first RHS, as h_AH
+    c.shared_h_AH = tracker_->shared_before_rhs(); // before the next step's first RHS, as h_AH
     for (std::size_t l = 0; l < layout_.levels(); ++l) {
       c.level_h_AH.push_back(l == 0 ? h_AH_before_rhs : rhs_[l].horizon_radius());
       std::vector<Checkpoint::TimeLevel> history;

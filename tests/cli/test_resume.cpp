@@ -130,7 +130,7 @@ TEST_CASE("resume: a run continued from its checkpoint is bit-identical to an un
 }
 
 // Subcycled boxes with the horizon shift take h_AH over their first three steps of the
-// hierarchy from a pilot run without subcycling (Simulation::seed_horizon_start); a run resumed
+// hierarchy from a pilot run without subcycling (ExtrapolatedRadius::before_run); a run resumed
 // inside that span makes the same pilot again and continues bit for bit.
 TEST_CASE("resume: subcycled boxes stopped inside the start's pilot span continue bit for bit") {
   const fs::path whole = scratch("pilot_whole"), parts = scratch("pilot_parts");

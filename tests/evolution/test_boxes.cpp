@@ -346,7 +346,7 @@ TEST_CASE("a horizon stretched to 2 M on six boxes: RK4 stage values converge at
           "cfl 0.25 and 0.5 alike, quadratic time interpolation at cfl 0.25 too, and at cfl 0.5 "
           "it loses its order") {
   // finest box r <= 4 M with spacing M/12, M/16, M/24; RMS over t in [10, 40] M of H_L2_R.
-  // Measured (2026-11-28, with the start's pilot, Simulation::seed_horizon_start): stage values
+  // Measured (2026-11-28, with the start's pilot, ExtrapolatedRadius::before_run): stage values
   // 3.64, 3.62 at cfl 0.25 and 0.5; quadratic 4.37, 3.92 at cfl 0.25 and 3.49, 1.76 at cfl 0.5
   // (its error at M/24 7 times the stage values'); quadratic without subcycling 4.39, 4.17.
   // Before the pilot the quadratic's were 2.82, 1.62 and 0.12, 1.03: the first steps'

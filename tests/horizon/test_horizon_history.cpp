@@ -1,8 +1,9 @@
-// The extrapolated h_AH of boxes (evolution/horizon_tracker.hpp, mode extrapolated): the radii
+// The extrapolated h_AH of boxes (evolution/horizon_extrapolated.hpp): the radii
 // found after the last hierarchy steps are kept, four of them, and h_AH at a stage's time is the
 // cubic through them, so that a horizon moving as a cubic in t is followed without error of its
 // own. The tracker here searches states made for it: 1+log trumpets whose mass M(t) is a cubic
 // in t, whose horizon radius is proportional to M.
+#include "evolution/horizon_extrapolated.hpp"
 #include "evolution/horizon_tracker.hpp"
 #include "initial_data/initial_data.hpp"
 
@@ -14,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 using namespace gbssn1d;
@@ -57,12 +59,14 @@ struct BoxesTracker {
   const Simulation sim = simulation(params());
   std::vector<State> levels = sim.level_states();
   std::vector<GbssnRhs> rhs = rhs_of(sim);
-  HorizonTracker tracker{sim.config(), sim.layout(), levels, rhs};
+  std::unique_ptr<HorizonTracker> made =
+      make_horizon_tracker(sim.config(), sim.layout(), levels, rhs);
+  HorizonTracker& tracker = *made;
 };
 
 } // namespace
 
-// Guards the length of the extrapolated mode's history (horizon_tracker.cpp, search_at_step):
+// Guards the length of the extrapolated mode's history (horizon_extrapolated.cpp, search_at_step):
 // four radii, not three (with three the extrapolation is quadratic, and r_AH on boxes moved at
 // 1e-6 without any test failing).
 TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a "
@@ -107,17 +111,17 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
     // smoothly with M), ten times closer than the quadratic through the last three radii (which
     // misses it by 2e-4 to 2e-3 here)
     set_mass(t);
-    HorizonTracker fresh(sim.config(), sim.layout(), levels, rhs);
-    fresh.start(t);
-    REQUIRE(fresh.history().size() == 1);
-    const double found = fresh.history().back()[1];
+    const auto fresh = make_horizon_tracker(sim.config(), sim.layout(), levels, rhs);
+    fresh->start(t);
+    REQUIRE(fresh->history().size() == 1);
+    const double found = fresh->history().back()[1];
     const double quadratic = lagrange({history.begin() + 1, history.end()}, t);
     CHECK(std::abs(*h - found) < 1e-4);
     CHECK(std::abs(*h - found) < 0.1 * std::abs(quadratic - found));
   }
 }
 
-// Guards the start's pilot (horizon_tracker.cpp, local_cubic): subcycled boxes take h_AH over
+// Guards the start's pilot (horizon_extrapolated.cpp, local_cubic): subcycled boxes take h_AH over
 // their first steps from a pilot run without subcycling, whose radii at every step of the finest
 // box are the nodes; between them h_AH(t) is the cubic through the four nodes around t, two at
 // or before t and two after (the first or last four at the ends). With the nodes one place off
@@ -131,8 +135,8 @@ TEST_CASE("boxes' extrapolated h_AH: the cubic through the last four radii found
 TEST_CASE("the start's pilot: h_AH between the pilot's radii is the cubic through the two radii "
           "before t and the two after") {
   BoxesTracker boxes;
-  HorizonTracker& tracker = boxes.tracker;
-  REQUIRE(tracker.mode() == HorizonTracker::Mode::extrapolated);
+  REQUIRE(boxes.tracker.mode() == HorizonTracker::Mode::extrapolated);
+  auto& tracker = dynamic_cast<ExtrapolatedRadius&>(boxes.tracker);
   REQUIRE(tracker.wants_start_nodes());
   tracker.start(0.0);
   REQUIRE(tracker.history().size() == 1);
@@ -167,10 +171,10 @@ TEST_CASE("the start's pilot: h_AH between the pilot's radii is the cubic throug
   CHECK(worst_h <= 1.25 * 4.6e-6);
 }
 
-// --ah-interval T (horizon_tracker.cpp, held_search_due): a search after the first step at or
-// past each multiple of T, whatever the step, so that every member of a study holds h_AH for
-// the same time. Guards the multiple's round-off (3 x (1/3) must reach 1) and that the hold is
-// counted in time, not in steps.
+// --ah-interval T (horizon_tracker.cpp, HeldRadius::search_due): a search after the first step at
+// or past each multiple of T, whatever the step, so that every member of a study holds h_AH for the
+// same time. Guards the multiple's round-off (3 x (1/3) must reach 1) and that the hold is counted
+// in time, not in steps.
 TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past each multiple "
           "of T and held in between, for any step") {
   Params p;
@@ -198,7 +202,8 @@ TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past e
   for (const Case& c : {Case{1.0 / 3.0, {3, 6, 9}}, Case{0.3, {4, 7, 10}}, Case{0.25, {4, 8, 12}},
                         Case{1.5, {1, 2, 3, 4}}}) {
     INFO("dt = " << c.dt);
-    HorizonTracker tracker(sim.config(), sim.layout(), levels, rhs);
+    const auto made = make_horizon_tracker(sim.config(), sim.layout(), levels, rhs);
+    HorizonTracker& tracker = *made;
     REQUIRE(tracker.mode() == HorizonTracker::Mode::held);
     set_mass(0.0);
     tracker.start(0.0);
@@ -216,7 +221,7 @@ TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past e
   }
 }
 
-// Guards the midstep-update schedule (horizon_tracker.cpp, Mode::held): its search is on the
+// Guards the midstep-update schedule (horizon_tracker.cpp, HeldRadius): its search is on the
 // 2nd RK substage (evaluation 4k + 1) of every n-th step, and no other evaluation searches
 // (with 4k + 2, the 3rd substage, no test failed in an independent mutation round).
 TEST_CASE("--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only") {
@@ -234,7 +239,8 @@ TEST_CASE("--rah-variant midstep-update searches on the 2nd RK substage of every
     const Simulation sim = simulation(p);
     std::vector<State> levels = sim.level_states();
     std::vector<GbssnRhs> rhs{GbssnRhs(sim.grid(), sim.config().rhs)};
-    HorizonTracker tracker{sim.config(), sim.layout(), levels, rhs};
+    const auto made = make_horizon_tracker(sim.config(), sim.layout(), levels, rhs);
+    HorizonTracker& tracker = *made;
     REQUIRE(tracker.mode() == HorizonTracker::Mode::held);
     const double held = 0.123; // no horizon lies there: a search finds the data's, r = 0.83
     const double r_AH = sim.horizons().horizon()->r;

@@ -223,7 +223,7 @@ TEST_CASE("converge: the box-substage shift on seven boxes does not converge (ex
 TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) converges (exit 0) though the "
           "members' hierarchies step by 1/3, 1/2, 1/3 M, which a warning names, and the standard "
           "gauge converges (exit 0)") {
-  // Until the start's pilot (Simulation::seed_horizon_start) the stretch was pre-asymptotic
+  // Until the start's pilot (ExtrapolatedRadius::before_run) the stretch was pre-asymptotic
   // here (alpha's order of its RMS over time 1.71): h_AH's constant, linear and quadratic
   // extrapolation over the first 1/3 or 1/2 M steps was a different gauge in each member
   // (docs/horizon-shift-study.md, Sec. 6.7).
