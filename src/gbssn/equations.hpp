@@ -177,9 +177,7 @@ template <Volume volume = Volume::lagrangian>
   rhs[Delta_r] = rhs_Delta_r<volume>(p, m, shift);
 
   // (G1)-(G3), gbssn/gauge.hpp; B is driven by d_t Delta^r of the gauge part of the shift.
-  rhs[alpha] = rhs_alpha(gauge.slicing, p);
-  rhs[beta] = rhs_beta(gauge.shift, p);
-  rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift);
+  MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift, rhs);
   return rhs;
 }
 

@@ -96,12 +96,10 @@ struct Z4c {
         - p.f[alpha] * kappa1 * (2.0 + params.kappa2) * theta;
     // (Z4)
     rhs[Delta_r] = rhs_Delta_r(p, m, shift, kappa1);
-    // (G1)-(G3): the lapse is driven by K-hat (p.f[K]), or by the ADM K (a 0/1 weight, so that
+    // (G1)-(G3): the lapse is driven by K-hat (p.f[K]), or by the ADM K (a 0 or 2 weight, so that
     // the loop stays branch-free); B by Z4c's d_t Delta^r of the gauge shift
-    rhs[alpha] =
-        rhs_alpha(gauge.slicing, p) - gauge.slicing.mu_L * p.f[alpha] * lapse_theta * theta;
-    rhs[beta] = rhs_beta(gauge.shift, p);
-    rhs[B] = rhs_B(gauge.shift, p, rhs_Delta_r(p, m, gauge_shift, kappa1), gauge_shift);
+    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1), gauge_shift,
+                             lapse_theta * theta, rhs);
     return rhs;
   }
 };
