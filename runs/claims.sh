@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# The headline numbers of README.md, docs/horizon-shift-study.md and docs/z4c-study.md, rerun
+# The headline numbers of docs/findings.md, docs/horizon-shift-study.md and docs/z4c-study.md, rerun
 # (about 4 minutes on 2 cores): each claim's number is read from its document by a pattern, measured afresh with
 # build/gbssn1d, and compared; the script fails, naming the claim, the document's number and
 # the measured one, where they disagree. Run it after changing a default, and list the claims
 # rerun in the note.
 #
-# Usage: bash runs/claims.sh [--doc FILE] [--readme FILE] [--z4c FILE] [--self-test]
+# Usage: bash runs/claims.sh [--doc FILE] [--findings FILE] [--z4c FILE] [--self-test]
 #   --doc FILE     check FILE instead of docs/horizon-shift-study.md (e.g. an edited copy)
-#   --readme FILE  check FILE instead of README.md
+#   --findings FILE  check FILE instead of docs/findings.md (--readme FILE: the same, its
+#                    name from when these findings stood in README.md)
 #   --z4c FILE     check FILE instead of docs/z4c-study.md
 #   --self-test  also plant a stale number into a copy of the doc and require that the check
 #                of that copy fails (the checker can fail)
@@ -18,17 +19,17 @@ set -euo pipefail
 caller=$PWD
 cd "$(dirname "$0")/.."
 doc=docs/horizon-shift-study.md
-readme=README.md
+readme=docs/findings.md
 z4cdoc=docs/z4c-study.md
 self_test=false
 while [ $# -gt 0 ]; do
   case "$1" in
     --doc) doc=${2:?--doc needs a file}; [[ $doc = /* ]] || doc=$caller/$doc; shift ;;
-    --readme) readme=${2:?--readme needs a file}; [[ $readme = /* ]] || readme=$caller/$readme; shift ;;
+    --findings|--readme) readme=${2:?$1 needs a file}; [[ $readme = /* ]] || readme=$caller/$readme; shift ;;
     --z4c) z4cdoc=${2:?--z4c needs a file}; [[ $z4cdoc = /* ]] || z4cdoc=$caller/$z4cdoc; shift ;;
     --self-test) self_test=true ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "usage: $0 [--doc FILE] [--self-test]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--doc FILE] [--findings FILE] [--z4c FILE] [--self-test]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -38,7 +39,7 @@ lib_jobs runs/claims.sh # a bad GBSSN1D_JOBS is refused before anything is made
 export GBSSN1D_JOBS=$jobs
 [ -x build/gbssn1d ] || { echo "claims: build/gbssn1d is missing (bash .ci/build)" >&2; exit 2; }
 [ -f "$doc" ] && [ -r "$doc" ] || { echo "claims: --doc $doc: no such readable file" >&2; exit 2; }
-[ -f "$readme" ] && [ -r "$readme" ] || { echo "claims: --readme $readme: no such readable file" >&2; exit 2; }
+[ -f "$readme" ] && [ -r "$readme" ] || { echo "claims: --findings $readme: no such readable file" >&2; exit 2; }
 [ -f "$z4cdoc" ] && [ -r "$z4cdoc" ] || { echo "claims: --z4c $z4cdoc: no such readable file" >&2; exit 2; }
 py=python3
 [ -x /usr/bin/python3 ] && py=/usr/bin/python3
@@ -62,7 +63,7 @@ cost_ratio=$(sed -n 's/^standard boxes, 5 alternating pairs .*: \([0-9.]*\) x si
 lib_run uniform-m16 $g evolve --grid uniform --N 1280 --rmax 80 --tmax 100 --dt-series 0.5 \
   --dt-profiles 100 --out @OUT
 
-# The thesis's mechanism (README's answer, study Sec. 13 and 13.1): the hold-scaling table,
+# The thesis's mechanism (docs/findings.md's answer, study Sec. 13 and 13.1): the hold-scaling table,
 # the published configuration's triples at M/16, M/24, M/32 with h_AH held over each step
 # (quadratic, RK4 stage values, no subcycling), the shrink's and the standard gauge's smooth
 # runs there, and converge's verdicts with a 1 M hold and with h_AH(t) from a file.
@@ -86,7 +87,7 @@ lib_run verdict-held $g converge --N 48,64,96 "${published[@]}" --time-interp qu
   --rahA 0.5 --rah0 0.89 --ah-interval 1 --out @OUT
 lib_run verdict-ref192 $g evolve "${published[@]}" --time-interp quadratic --tmax 100 --rahA 0.5 \
   --rah0 0.89 --N 192 --out @OUT
-# Z4c (README's Z4c paragraph, docs/z4c-study.md Sec. 5, 7, 9): the four long-run set-ups with
+# Z4c (docs/findings.md's Z4c paragraph, docs/z4c-study.md Sec. 5, 7, 9): the four long-run set-ups with
 # BSSN, Z4c's default and kappa1 = 0.02 everywhere; the sinh grid at N = 240, 320; the published
 # stretch on uniform grids M/8-M/16 in both formulations
 long=(--tmax 1000 --dt-series 1 --dt-profiles 10000)
@@ -225,7 +226,7 @@ for line in open(sys.argv[5]):
         v[k] = float(x)
     except ValueError:
         v[k] = x
-S, R, Z = 'study', 'README', 'z4c'
+S, R, Z = 'study', 'findings', 'z4c'
 def several(where, names, pattern, *measured):
     """One claim per group of `pattern` (a sentence that states several numbers): the k-th
     measured value against group k, named by the k-th of the ';'-separated `names` after its
@@ -280,7 +281,7 @@ claims = [
     *several(S, "Sec. 13: the shrink's smooth error over the standard gauge's, at M/16; at M/24; at M/32",
           r"smooth h_AH: ([0-9.]+), ([0-9.]+) and ([0-9.]+) times the standard gauge's at M/16",
           v['shrink_ratio_32'], v['shrink_ratio_48'], v['shrink_ratio_64']),
-    # Z4c: the README's paragraph
+    # Z4c: docs/findings.md's paragraph
     *several(R, "Z4c's default on trumpet data, H below BSSN's (sinh); (boxes)",
           r"Z4c's H over 100-1000 M is ([0-9]+)-([0-9]+) times below BSSN's",
           v['z4c_st_default_H_inv'], v['z4c_bt_default_H_inv']),
