@@ -110,10 +110,12 @@ std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std
   return extras;
 }
 
-int converge(const ConvergeOptions& options_in, const std::string& N_list,
-             const std::string& factors, const std::string& fields, const std::string& times,
-             const std::vector<std::string>& evolve_args) {
-  ConvergeOptions options = options_in;
+namespace {
+
+/// --N, --factors, --fields and --scaled-times read into `options` (the times checked against
+/// the run's tmax later, parse_converge_times).
+void parse_converge_lists(ConvergeOptions& options, const std::string& N_list,
+                          const std::string& factors, const std::string& fields) {
   options.N.clear();
   for (const auto& n : split_list("--N", N_list))
     options.N.push_back(list_number<int>("--N", N_list, n));
@@ -141,6 +143,66 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
       if (options.fields[j] == options.fields[k])
         throw ParamError("--fields", printable(fields),
                          fmt::format("lists {} twice", printable(options.fields[k])));
+}
+
+/// --scaled-times: each in [0, tmax], each once (a block per time).
+void check_scaled_times(const ConvergeOptions& options, const std::string& times, double tmax) {
+  for (const double t : options.scaled_times)
+    if (t < 0.0 || t > tmax)
+      throw ParamError("--scaled-times", printable(times),
+                       fmt::format("{} is outside the run's [0, tmax = {}]", t, tmax));
+  // each time once: a block per time, and two equal times would write the same block twice
+  for (std::size_t k = 0; k < options.scaled_times.size(); ++k)
+    for (std::size_t j = 0; j < k; ++j)
+      if (options.scaled_times[j] == options.scaled_times[k])
+        throw ParamError("--scaled-times", printable(times),
+                         fmt::format("lists {} twice", options.scaled_times[k]));
+}
+
+/// With --force into a folder of another command's output: what the study will not write,
+/// said and left as it is.
+void warn_of_foreign_files(const ConvergeOptions& options) {
+  std::set<std::string> own = {"config.toml", "convergence.dat", "scaled_H.dat", folder_lock_name};
+  for (int n : options.N)
+    own.insert(fmt::format("N{}", n));
+  std::vector<std::string> left;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(options.out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!own.count(name) && !name.ends_with(".tmp"))
+      left.push_back(printable(name) + (entry.is_directory(ec) ? "/" : ""));
+  }
+  std::sort(left.begin(), left.end());
+  if (!left.empty())
+    say("gbssn1d converge: warning: --force: {} also holds {}, which this study does not "
+        "write: left as they are, beside its own files\n",
+        printable(options.out), fmt::join(left, ", "));
+}
+
+/// The members' warnings (as evolve's), each once, naming the members it concerns when not all.
+void say_member_warnings(const std::vector<Params>& members) {
+  std::vector<std::pair<std::string, std::vector<int>>> said;
+  for (const Params& m : members)
+    for (const auto& w : warnings(m)) {
+      auto it = std::find_if(said.begin(), said.end(), [&](const auto& x) { return x.first == w; });
+      if (it == said.end())
+        said.push_back({w, {m.N}});
+      else
+        it->second.push_back(m.N);
+    }
+  for (const auto& [w, Ns] : said)
+    say("gbssn1d converge: warning{}: {}\n",
+        Ns.size() == members.size() ? std::string() : fmt::format(" (N = {})", fmt::join(Ns, ", ")),
+        w);
+}
+
+} // namespace
+
+int converge(const ConvergeOptions& options_in, const std::string& N_list,
+             const std::string& factors, const std::string& fields, const std::string& times,
+             const std::vector<std::string>& evolve_args) {
+  ConvergeOptions options = options_in;
+  parse_converge_lists(options, N_list, factors, fields);
   options.scaled_times.clear();
   if (!times.empty())
     for (const auto& t : split_list("--scaled-times", times))
@@ -153,16 +215,7 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
   base.N = options.N.front(); // the first member; each member sets its own
   base.out = options.out;
   resolve_defaults(base);
-  for (const double t : options.scaled_times)
-    if (t < 0.0 || t > base.tmax)
-      throw ParamError("--scaled-times", printable(times),
-                       fmt::format("{} is outside the run's [0, tmax = {}]", t, base.tmax));
-  // each time once: a block per time, and two equal times would write the same block twice
-  for (std::size_t k = 0; k < options.scaled_times.size(); ++k)
-    for (std::size_t j = 0; j < k; ++j)
-      if (options.scaled_times[j] == options.scaled_times[k])
-        throw ParamError("--scaled-times", printable(times),
-                         fmt::format("lists {} twice", options.scaled_times[k]));
+  check_scaled_times(options, times, base.tmax);
   check_path("--out", options.out);
   bool continuing = false;
   // A folder of another command's run, or a converge study of other inputs: refused, saying
@@ -188,40 +241,11 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     o.force = options.force || continuing;
     return o;
   }());
-  if (options.force && !continuing) { // what --force leaves of another command's output
-    std::set<std::string> own = {"config.toml", "convergence.dat", "scaled_H.dat",
-                                 folder_lock_name};
-    for (int n : options.N)
-      own.insert(fmt::format("N{}", n));
-    std::vector<std::string> left;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(options.out, ec)) {
-      const std::string name = entry.path().filename().string();
-      if (!own.count(name) && !name.ends_with(".tmp"))
-        left.push_back(printable(name) + (entry.is_directory(ec) ? "/" : ""));
-    }
-    std::sort(left.begin(), left.end());
-    if (!left.empty())
-      say("gbssn1d converge: warning: --force: {} also holds {}, which this study does not "
-          "write: left as they are, beside its own files\n",
-          printable(options.out), fmt::join(left, ", "));
-  }
-  // validates every member before anything is written; their warnings (as evolve's), each
-  // once, naming the members it concerns when not all
+  if (options.force && !continuing) // what --force leaves of another command's output
+    warn_of_foreign_files(options);
+  // validates every member before anything is written
   const std::vector<Params> members = converge_members(base, options);
-  std::vector<std::pair<std::string, std::vector<int>>> said;
-  for (const Params& m : members)
-    for (const auto& w : warnings(m)) {
-      auto it = std::find_if(said.begin(), said.end(), [&](const auto& x) { return x.first == w; });
-      if (it == said.end())
-        said.push_back({w, {m.N}});
-      else
-        it->second.push_back(m.N);
-    }
-  for (const auto& [w, Ns] : said)
-    say("gbssn1d converge: warning{}: {}\n",
-        Ns.size() == members.size() ? std::string() : fmt::format(" (N = {})", fmt::join(Ns, ", ")),
-        w);
+  say_member_warnings(members);
   return run_converge(base, options, config_text(base));
 }
 

@@ -108,6 +108,73 @@ std::string config_text(const Params& p) {
   return text;
 }
 
+namespace {
+
+/// The keys a config file's rule-values line names (same_run.hpp: rule_values_line): the keys
+/// the run did not give, but their rules, left to their rules again as the run left them.
+std::set<std::string> ruled_keys(const std::string& text, const std::string& path) {
+  std::set<std::string> ruled;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with(rule_values_mark))
+      continue;
+    std::istringstream keys(line.substr(rule_values_mark.size()));
+    for (std::string key; std::getline(keys, key, ',');) {
+      key.erase(0, key.find_first_not_of(' '));
+      key.erase(key.find_last_not_of(" \r") + 1);
+      const auto& known = rule_keys();
+      if (std::find(known.begin(), known.end(), key) == known.end())
+        throw ParamError("--config", path,
+                         fmt::format("its line '{}' names '{}', which no rule gives",
+                                     printable(std::string(rule_values_mark.substr(2))),
+                                     printable(key)));
+      ruled.insert(key);
+    }
+  }
+  return ruled;
+}
+
+/// The config file at `path` read as `--key=value` arguments into `from_file`, each flag's file
+/// recorded in `file_of`.
+void read_config_args(const std::string& path, std::vector<std::string>& from_file,
+                      std::map<std::string, std::string>& file_of) {
+  check_input_file("--config", path);
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (!file && !file.eof())
+    throw ParamError("--config", path, "cannot be read");
+  const std::set<std::string> ruled = ruled_keys(text.str(), path);
+  for (const auto& [key, value] : read_config_text(text.str(), path)) {
+    if (ruled.count(key) != 0)
+      continue;
+    const auto spec = std::find_if(param_specs().begin(), param_specs().end(),
+                                   [&](const ParamSpec& s) { return key == s.name; });
+    if (spec == param_specs().end())
+      throw ParamError("--config", path, fmt::format("unknown key '{}'", printable(key)));
+    if (std::holds_alternative<bool Params::*>(spec->member) && value != "true" && value != "false")
+      throw ParamError(
+          "--config", path,
+          fmt::format("key '{}' must be true or false, not '{}'", key, printable(value)));
+    // Writing into an existing folder is asked for on the command line only: a recorded
+    // `force = true` (a config.toml of a run made with --force) must not let a rerun with
+    // that file overwrite a finished run.
+    if (key == "force")
+      continue;
+    // "--key=" with an empty value would take the next argument as its value: pass the
+    // empty value as a separate argument
+    file_of["--" + key] = path;
+    if (value.empty()) {
+      from_file.push_back("--" + key);
+      from_file.push_back("");
+    } else {
+      from_file.push_back(fmt::format("--{}={}", key, value));
+    }
+  }
+}
+
+} // namespace
+
 /// Arguments after expanding `--config FILE` (or --config=FILE) of the evolve subcommand into
 /// `--key=value` arguments placed before the command line's own, so that flags override the
 /// file. CLI11 2.1 does not read config files given to a subcommand, hence this step; the file
@@ -129,61 +196,7 @@ std::vector<std::string> expand_config(const std::vector<std::string>& args,
       rest.push_back(args[k]);
       continue;
     }
-    check_input_file("--config", path);
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (!file && !file.eof())
-      throw ParamError("--config", path, "cannot be read");
-    // the keys the run did not give, but their rules (same_run.hpp: rule_values_line): left to
-    // their rules again, as the run left them
-    std::set<std::string> ruled;
-    {
-      std::istringstream lines(text.str());
-      for (std::string line; std::getline(lines, line);) {
-        if (!line.starts_with(rule_values_mark))
-          continue;
-        std::istringstream keys(line.substr(rule_values_mark.size()));
-        for (std::string key; std::getline(keys, key, ',');) {
-          key.erase(0, key.find_first_not_of(' '));
-          key.erase(key.find_last_not_of(" \r") + 1);
-          const auto& known = rule_keys();
-          if (std::find(known.begin(), known.end(), key) == known.end())
-            throw ParamError("--config", path,
-                             fmt::format("its line '{}' names '{}', which no rule gives",
-                                         printable(std::string(rule_values_mark.substr(2))),
-                                         printable(key)));
-          ruled.insert(key);
-        }
-      }
-    }
-    for (const auto& [key, value] : read_config_text(text.str(), path)) {
-      if (ruled.count(key) != 0)
-        continue;
-      const auto spec = std::find_if(param_specs().begin(), param_specs().end(),
-                                     [&](const ParamSpec& s) { return key == s.name; });
-      if (spec == param_specs().end())
-        throw ParamError("--config", path, fmt::format("unknown key '{}'", printable(key)));
-      if (std::holds_alternative<bool Params::*>(spec->member) && value != "true"
-          && value != "false")
-        throw ParamError(
-            "--config", path,
-            fmt::format("key '{}' must be true or false, not '{}'", key, printable(value)));
-      // Writing into an existing folder is asked for on the command line only: a recorded
-      // `force = true` (a config.toml of a run made with --force) must not let a rerun with
-      // that file overwrite a finished run.
-      if (key == "force")
-        continue;
-      // "--key=" with an empty value would take the next argument as its value: pass the
-      // empty value as a separate argument
-      file_of["--" + key] = path;
-      if (value.empty()) {
-        from_file.push_back("--" + key);
-        from_file.push_back("");
-      } else {
-        from_file.push_back(fmt::format("--{}={}", key, value));
-      }
-    }
+    read_config_args(path, from_file, file_of);
   }
   if (origins) {
     // a flag on the command line overrides the file's value: its errors are the command line's

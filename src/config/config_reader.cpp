@@ -44,6 +44,47 @@ std::string toml_string(const std::string& s) {
   return out + "\"";
 }
 
+namespace {
+
+/// A basic string (TOML's, with escapes) whose opening '"' is at line[k], for `key`: its value,
+/// with k past the closing '"'. `fail(why)` throws.
+template <class Fail>
+std::string basic_string(const std::string& line, std::size_t& k, const std::string& key,
+                         const Fail& fail) {
+  std::string value;
+  bool closed = false;
+  for (++k; k < line.size() && !closed; ++k) {
+    const char c = line[k];
+    if (c == '"') {
+      closed = true;
+    } else if (c != '\\') {
+      value += c;
+    } else if (++k >= line.size()) {
+      break;
+    } else if (const char e = line[k]; e == 'u' && k + 4 < line.size()) {
+      unsigned code = 0;
+      const auto [ptr, ec] = std::from_chars(line.data() + k + 1, line.data() + k + 5, code, 16);
+      if (ec != std::errc() || ptr != line.data() + k + 5 || code > 0x7f)
+        fail(fmt::format("key '{}': \\u escapes above 007F are not read", key));
+      value += static_cast<char>(code);
+      k += 4;
+    } else {
+      const std::map<char, char> escapes{
+          {'"', '"'}, {'\\', '\\'}, {'n', '\n'}, {'t', '\t'}, {'r', '\r'}};
+      const auto it = escapes.find(e);
+      if (it == escapes.end())
+        fail(fmt::format("key '{}': unknown escape '\\{}' in its string", key,
+                         printable(std::string(1, e))));
+      value += it->second;
+    }
+  }
+  if (!closed)
+    fail(fmt::format("key '{}': its string has no closing '\"'", key));
+  return value;
+}
+
+} // namespace
+
 std::vector<std::pair<std::string, std::string>> read_config_text(const std::string& text,
                                                                   const std::string& path) {
   std::vector<std::pair<std::string, std::string>> items;
@@ -72,35 +113,7 @@ std::vector<std::pair<std::string, std::string>> read_config_text(const std::str
       fail(fmt::format("key '{}' has no value", key));
     std::string value;
     if (line[k] == '"') { // a basic string, with escapes
-      bool closed = false;
-      for (++k; k < line.size() && !closed; ++k) {
-        const char c = line[k];
-        if (c == '"') {
-          closed = true;
-        } else if (c != '\\') {
-          value += c;
-        } else if (++k >= line.size()) {
-          break;
-        } else if (const char e = line[k]; e == 'u' && k + 4 < line.size()) {
-          unsigned code = 0;
-          const auto [ptr, ec] =
-              std::from_chars(line.data() + k + 1, line.data() + k + 5, code, 16);
-          if (ec != std::errc() || ptr != line.data() + k + 5 || code > 0x7f)
-            fail(fmt::format("key '{}': \\u escapes above 007F are not read", key));
-          value += static_cast<char>(code);
-          k += 4;
-        } else {
-          const std::map<char, char> escapes{
-              {'"', '"'}, {'\\', '\\'}, {'n', '\n'}, {'t', '\t'}, {'r', '\r'}};
-          const auto it = escapes.find(e);
-          if (it == escapes.end())
-            fail(fmt::format("key '{}': unknown escape '\\{}' in its string", key,
-                             printable(std::string(1, e))));
-          value += it->second;
-        }
-      }
-      if (!closed)
-        fail(fmt::format("key '{}': its string has no closing '\"'", key));
+      value = basic_string(line, k, key, fail);
     } else if (line[k] == '\'') { // a literal string: no escapes
       const std::size_t end = line.find('\'', k + 1);
       if (end == std::string::npos)

@@ -114,8 +114,8 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
 
 namespace {
 
-/// The grid, initial data, gauge, numerics, times and output cadences.
-std::vector<ParamSpec> evolution_specs() {
+/// The grid and the initial data.
+std::vector<ParamSpec> grid_and_data_specs() {
   return {
       {"N", &Params::N, "Grid", "number of cells"},
       {"rmax", &Params::rmax, "Grid", "outer radius"},
@@ -151,6 +151,12 @@ std::vector<ParamSpec> evolution_specs() {
       {"M", &Params::M, "Initial data", "black-hole mass"},
       {"lapse0", &Params::lapse0, "Initial data",
        "initial lapse of the wormhole: one | precollapsed", Acts::with_wormhole},
+  };
+}
+
+/// The formulation, gauge, numerics, times and output cadences.
+std::vector<ParamSpec> evolution_specs() {
+  return {
       {"formulation", &Params::formulation, "Formulation",
        "bssn | z4c (Z4c: K-hat = K - 2 Theta and Theta evolved, constraint damping kappa1, "
        "kappa2; docs/gbssn1d-equations.md Sec. 17)"},
@@ -294,9 +300,11 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
 /// Every evolve parameter, in the order of --help and config.toml.
 const std::vector<ParamSpec>& param_specs() {
   static const std::vector<ParamSpec> specs = [] {
-    std::vector<ParamSpec> all = evolution_specs();
-    const std::vector<ParamSpec> more = diagnostics_and_shift_specs();
-    all.insert(all.end(), more.begin(), more.end());
+    std::vector<ParamSpec> all;
+    for (auto group : {grid_and_data_specs, evolution_specs, diagnostics_and_shift_specs}) {
+      const std::vector<ParamSpec> specs = group();
+      all.insert(all.end(), specs.begin(), specs.end());
+    }
     return all;
   }();
   return specs;

@@ -212,6 +212,10 @@ void validate_horizon_shift(const Params& p) {
     throw ParamError("--rah-ramp", num(p.rah_ramp), "must be >= 0 (0: no ramp)");
   require_choice("--driver-advection", p.driver_advection);
   require_choice("--delta-advection", p.delta_advection);
+}
+
+/// The formulation and its differencing: the volume choice where it is offered, Z4c's damping.
+void validate_formulation(const Params& p) {
   require_choice("--upwind", p.upwind);
   require_choice("--formulation", p.formulation);
   require_choice("--gbssn-volume", p.gbssn_volume);
@@ -240,6 +244,11 @@ void validate_horizon_shift(const Params& p) {
   if (!(p.kappa2 > -1.0))
     throw ParamError("--kappa2", num(p.kappa2),
                      "must be > -1 (the damping of Theta in Z4c's constraint subsystem needs it)");
+}
+
+/// The horizon shift's study variants where they are built (BSSN, the lopsided pair, 4th
+/// order), and the finder's tolerance.
+void validate_study_variants(const Params& p) {
   if (z4c_on(p) && shift_on(p) && p.rah_variant != ShiftVariant::consistent
       && p.rah_variant != ShiftVariant::midstep_update
       && p.rah_variant != ShiftVariant::box_substage)
@@ -306,11 +315,8 @@ void validate_search_schedule(const Params& p) {
                      "needs searches every n steps (--ah-every step or a number)");
 }
 
-/// The grid itself and the steps it takes: cells finite, increasing and resolvable, the horizon
-/// finder's tolerance, the step's limits (checkpoints, step and row counts, the Gamma-driver
-/// damping).
-void validate_grid_and_steps(const Params& p) {
-  const double eta = p.eta.value();
+/// The grid itself: its layout, with cells finite, increasing and resolvable.
+mesh::MeshLayout checked_layout(const Params& p) {
   // The grid itself: a map whose cells are not finite, increasing and resolvable in double
   // precision is refused here, before anything is written, naming the flag that shapes it (the
   // sinh grid's innermost width, the uniform grid's N).
@@ -346,6 +352,50 @@ void validate_grid_and_steps(const Params& p) {
                      fmt::format("gives a smallest cell of {:.3g}, below {:.0e} x rmax, which "
                                  "double precision cannot difference",
                                  grid.min_spacing(), min_spacing_over_rmax));
+  return layout;
+}
+
+/// Z4c's constraint damping against the finest step dt_finest: alpha kappa1 (2 + kappa2) at
+/// most (alpha <= 1), and the damping near the hole.
+void validate_damping_step(const Params& p, double dt_finest) {
+  const double eta = p.eta.value();
+  // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise; the flag
+  // named is the one that makes it too fast (kappa2 where kappa1 alone, at 2 kappa1, would not)
+  const double kappa1_value = p.kappa1.value_or(kappa1_rule(p));
+  const bool kappa2_decides = p.kappa2 > 0.0 && 2.0 * kappa1_value * dt_finest <= eta_dt_max;
+  if (const double rate = damping_rate(p); rate > eta && rate * dt_finest > eta_dt_max)
+    throw ParamError(kappa2_decides ? "--kappa2" : "--kappa1",
+                     kappa2_decides ? num(p.kappa2) : num(kappa1_value),
+                     fmt::format("unstable with --cfl = {}: the damping rate kappa1 max(2, 2 + "
+                                 "kappa2) = {} times dt = {} exceeds {} (RK4 limit of the "
+                                 "constraint damping)",
+                                 num(p.cfl), rate, dt_finest, eta_dt_max));
+  // the damping near the hole: at most min(kappa1-hole, 0.2/dr) at a cell of width dr, whose
+  // step is at most cfl dr (a single grid: the finest step everywhere), so that its rate times a
+  // step stays below max(2, 2 + kappa2) min(kappa1-hole dt, 0.2 cfl) (boxes: 0.2 cfl)
+  if (z4c_on(p)) {
+    const double hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+    const double resolved = Z4cParams::kappa1_dr_max * p.cfl;
+    const double per_step =
+        std::max(2.0, 2.0 + p.kappa2)
+        * (p.grid == RadialGrid::boxes ? resolved : std::min(resolved, hole * dt_finest));
+    if (hole > kappa1_value && per_step > eta_dt_max)
+      throw ParamError(p.kappa2 > 0.0 ? "--kappa2" : "--kappa1-hole",
+                       p.kappa2 > 0.0 ? num(p.kappa2) : num(hole),
+                       fmt::format("unstable with --cfl = {}: the damping near the hole, at most "
+                                   "min(kappa1-hole, 0.2/dr) max(2, 2 + kappa2), times a step can "
+                                   "reach {} (above {}, RK4's limit); give --kappa1-hole 0 or a "
+                                   "smaller --kappa2",
+                                   num(p.cfl), per_step, eta_dt_max));
+  }
+}
+
+/// The grid and the steps it takes: the grid (checked_layout), the horizon finder's tolerance,
+/// the step's limits (checkpoints, step and row counts, the Gamma-driver damping, Z4c's).
+void validate_grid_and_steps(const Params& p) {
+  const double eta = p.eta.value();
+  const mesh::MeshLayout layout = checked_layout(p);
+  const Grid& grid = layout.grid(layout.levels() - 1); // the finest
   if (p.ah_tol > ah_tol_over_spacing_max * grid.min_spacing())
     throw ParamError("--ah-tol", num(p.ah_tol),
                      fmt::format("must be at most {} x the smallest cell width ({:.3g}), so that "
@@ -388,35 +438,7 @@ void validate_grid_and_steps(const Params& p) {
                      fmt::format("unstable with --eta = {}: eta dt = {} exceeds {} (RK4 limit of "
                                  "the Gamma-driver damping)",
                                  eta, eta * dt_finest, eta_dt_max));
-  // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise; the flag
-  // named is the one that makes it too fast (kappa2 where kappa1 alone, at 2 kappa1, would not)
-  const double kappa1_value = p.kappa1.value_or(kappa1_rule(p));
-  const bool kappa2_decides = p.kappa2 > 0.0 && 2.0 * kappa1_value * dt_finest <= eta_dt_max;
-  if (const double rate = damping_rate(p); rate > eta && rate * dt_finest > eta_dt_max)
-    throw ParamError(kappa2_decides ? "--kappa2" : "--kappa1",
-                     kappa2_decides ? num(p.kappa2) : num(kappa1_value),
-                     fmt::format("unstable with --cfl = {}: the damping rate kappa1 max(2, 2 + "
-                                 "kappa2) = {} times dt = {} exceeds {} (RK4 limit of the "
-                                 "constraint damping)",
-                                 num(p.cfl), rate, dt_finest, eta_dt_max));
-  // the damping near the hole: at most min(kappa1-hole, 0.2/dr) at a cell of width dr, whose
-  // step is at most cfl dr (a single grid: the finest step everywhere), so that its rate times a
-  // step stays below max(2, 2 + kappa2) min(kappa1-hole dt, 0.2 cfl) (boxes: 0.2 cfl)
-  if (z4c_on(p)) {
-    const double hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
-    const double resolved = Z4cParams::kappa1_dr_max * p.cfl;
-    const double per_step =
-        std::max(2.0, 2.0 + p.kappa2)
-        * (p.grid == RadialGrid::boxes ? resolved : std::min(resolved, hole * dt_finest));
-    if (hole > kappa1_value && per_step > eta_dt_max)
-      throw ParamError(p.kappa2 > 0.0 ? "--kappa2" : "--kappa1-hole",
-                       p.kappa2 > 0.0 ? num(p.kappa2) : num(hole),
-                       fmt::format("unstable with --cfl = {}: the damping near the hole, at most "
-                                   "min(kappa1-hole, 0.2/dr) max(2, 2 + kappa2), times a step can "
-                                   "reach {} (above {}, RK4's limit); give --kappa1-hole 0 or a "
-                                   "smaller --kappa2",
-                                   num(p.cfl), per_step, eta_dt_max));
-  }
+  validate_damping_step(p, dt_finest);
   if (p.grid == RadialGrid::boxes && p.rah_variant == ShiftVariant::midstep_update)
     throw ParamError("--rah-variant", p.rah_variant.name(),
                      "is a single-grid study variant (its searches count one grid's RHS calls)");
@@ -428,6 +450,8 @@ void validate(const Params& p) {
   validate_grid_flags(p);
   validate_evolution_numbers(p);
   validate_horizon_shift(p);
+  validate_formulation(p);
+  validate_study_variants(p);
   validate_search_schedule(p);
   validate_grid_and_steps(p);
 }

@@ -1,6 +1,6 @@
 // The verdict of a converge study and its sentences (converge_report.hpp: judge_study): the
 // rule's finding (study/verdict.hpp) written out for convergence.dat and stderr.
-#include "io/output.hpp"
+#include "io/data_file.hpp"
 #include "study/converge_report.hpp"
 #include "study/verdict.hpp"
 

@@ -3,7 +3,7 @@
 #include "study/sweep_store.hpp"
 
 #include "core/stop_signal.hpp"
-#include "io/output.hpp"
+#include "io/data_file.hpp"
 
 #include <fmt/format.h>
 

@@ -6,7 +6,7 @@
 #include "config/paths.hpp"
 #include "core/decimal.hpp"
 #include "core/text.hpp"
-#include "io/output.hpp"
+#include "io/data_file.hpp"
 
 #include <fmt/format.h>
 

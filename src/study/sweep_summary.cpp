@@ -4,7 +4,7 @@
 
 #include "config/numbers.hpp"
 #include "core/console.hpp"
-#include "io/output.hpp"
+#include "io/data_file.hpp"
 #include "io/table.hpp"
 #include "study/orders.hpp"
 
@@ -225,6 +225,54 @@ std::vector<double> final_H_orders(const std::vector<SweepMember>& members,
   return orders;
 }
 
+/// What each member's folder and log say: its status, wall time, reason and results.
+struct MemberStates {
+  std::vector<MemberResult> results;
+  std::vector<std::string> statuses, reasons;
+  std::vector<double> walls;
+};
+
+MemberStates read_member_states(const fs::path& dir, const std::vector<SweepMember>& members) {
+  MemberStates m;
+  m.results.resize(members.size());
+  m.statuses.resize(members.size());
+  m.reasons.resize(members.size());
+  m.walls.assign(members.size(), 0.0);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    std::ifstream in(dir / "logs" / (members[k].name + ".status"));
+    in >> m.statuses[k] >> m.walls[k] >> m.reasons[k];
+    if (m.statuses[k].empty()) {
+      const auto why = invalid_reason(members[k]);
+      m.statuses[k] = why ? "invalid" : "missing";
+      m.reasons[k] = why ? token(*why) : "-";
+    }
+    // a member recorded ok or blew-up whose output is gone or cut short is not a result
+    if (const auto why = member_output_problem(dir, members[k], m.statuses[k])) {
+      m.statuses[k] = "missing";
+      m.reasons[k] = token(*why);
+    }
+    m.results[k] = read_result(dir / members[k].name / "timeseries.dat");
+  }
+  return m;
+}
+
+/// summary.dat's header: the members that are the same run, the sweep, and the columns' meaning.
+std::string summary_header(const SweepOptions& options, const std::vector<SweepMember>& members) {
+  std::string same;
+  for (const auto& g : same_runs(members))
+    same += g.text() + "\n";
+  return same
+         + fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
+                       "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
+                       "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
+                       "order_H_final fitted over N for members that differ only in N\n"
+                       "flag: spike for a finished member whose H_L2_R_max is more than {:g} "
+                       "times the median of its neighbours along an axis (the finished "
+                       "members that differ from it in that axis' values only; not along an "
+                       "axis of N), '-' otherwise; the reason says along which axis\n",
+                       members.size(), fmt::join(options.sweeps, " "), kSpikeFactor);
+}
+
 } // namespace
 
 std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& options,
@@ -245,24 +293,11 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
     cols.emplace_back("order_H_final");
   cols.emplace_back("reason");
 
-  std::vector<MemberResult> results(members.size());
-  std::vector<std::string> statuses(members.size()), reasons(members.size());
-  std::vector<double> walls(members.size(), 0.0);
-  for (std::size_t k = 0; k < members.size(); ++k) {
-    std::ifstream in(dir / "logs" / (members[k].name + ".status"));
-    in >> statuses[k] >> walls[k] >> reasons[k];
-    if (statuses[k].empty()) {
-      const auto why = invalid_reason(members[k]);
-      statuses[k] = why ? "invalid" : "missing";
-      reasons[k] = why ? token(*why) : "-";
-    }
-    // a member recorded ok or blew-up whose output is gone or cut short is not a result
-    if (const auto why = member_output_problem(dir, members[k], statuses[k])) {
-      statuses[k] = "missing";
-      reasons[k] = token(*why);
-    }
-    results[k] = read_result(dir / members[k].name / "timeseries.dat");
-  }
+  MemberStates states = read_member_states(dir, members);
+  const std::vector<MemberResult>& results = states.results;
+  std::vector<std::string>& statuses = states.statuses;
+  std::vector<std::string>& reasons = states.reasons;
+  const std::vector<double>& walls = states.walls;
   const std::vector<double> orders = final_H_orders(members, resolution_axis, statuses, results);
   const std::vector<Spike> spikes = find_spikes(axes, resolution_axis, members, statuses, results);
   for (const auto& sp : spikes)
@@ -270,22 +305,7 @@ std::vector<std::string> write_summary(const fs::path& dir, const SweepOptions& 
         token(fmt::format("spike: H_L2_R_max {:.2e} is {:.0f} times the median "
                           "{:.2e} of its neighbours along {}",
                           results[sp.member].H_R_max, sp.factor, sp.median, sp.axis));
-  std::string same;
-  for (const auto& g : same_runs(members))
-    same += g.text() + "\n";
-  DataFile summary(
-      dir / "summary.dat",
-      same
-          + fmt::format("sweep over {} members: {}\nr_ah_final is the last r_ah; "
-                        "M_ah_drift = max |M_ah - M_ah(first)|; M_ah_err_max = max |M_ah - M|; "
-                        "H_L2_ext_max, H_L2_R_max over the run; t_end the last time; "
-                        "order_H_final fitted over N for members that differ only in N\n"
-                        "flag: spike for a finished member whose H_L2_R_max is more than {:g} "
-                        "times the median of its neighbours along an axis (the finished "
-                        "members that differ from it in that axis' values only; not along an "
-                        "axis of N), '-' otherwise; the reason says along which axis\n",
-                        members.size(), fmt::join(options.sweeps, " "), kSpikeFactor),
-      cols);
+  DataFile summary(dir / "summary.dat", summary_header(options, members), cols);
   for (std::size_t k = 0; k < members.size(); ++k) {
     std::string line;
     for (const auto& [flag, value] : members[k].values)

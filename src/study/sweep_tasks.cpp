@@ -4,7 +4,7 @@
 #include "config/paths.hpp"
 #include "core/console.hpp"
 #include "core/text.hpp"
-#include "io/output.hpp"
+#include "io/data_file.hpp"
 #include "study/sweep_store.hpp"
 
 #include <fmt/format.h>

@@ -51,6 +51,96 @@ std::string class_words(ConvergenceClass c) {
   return "does not converge";
 }
 
+namespace {
+
+/// The order of the RMS of `s` over the judged times times[begin, end).
+double rms_order(const OrderSeries& s, const std::vector<std::size_t>& times, std::size_t begin,
+                 std::size_t end) {
+  double sum_coarse = 0.0, sum_fine = 0.0;
+  for (std::size_t q = begin; q < end; ++q) {
+    sum_coarse += s.coarse[times[q]] * s.coarse[times[q]];
+    sum_fine += s.fine[times[q]] * s.fine[times[q]];
+  }
+  const double n = static_cast<double>(end - begin);
+  return order_at(s.N, std::sqrt(sum_coarse / n), std::sqrt(sum_fine / n));
+}
+
+/// Every time of `s` into `j`: those with a value, those at the round-off floor, the orders
+/// below `threshold` and the worst. Returns the judged times.
+std::vector<std::size_t> scan_times(const OrderSeries& s, double threshold, OrderJudgement& j) {
+  std::vector<std::size_t> times; // the judged times
+  for (std::size_t t = 0; t < s.coarse.size(); ++t) {
+    const double c = s.coarse[t], f = s.fine[t];
+    j.valued += std::isfinite(c) ? 1 : 0;
+    // no value, not to be judged, or no error at all (G^r of the initial data): neither
+    // judged nor at the floor
+    if (!std::isfinite(c) || !std::isfinite(s.floor[t]) || (c == 0.0 && f == 0.0))
+      continue;
+    if (f <= kFloorFactor * s.floor[t]) { // the finer member at round-off: not judged
+      if (j.at_floor++ == 0) {
+        j.first_floor = t;
+        j.floor_value = s.floor[t];
+      }
+      continue;
+    }
+    times.push_back(t); // (a non-finite finer value too: it fails)
+    const double p = order_at(s.N, c, f);
+    if (p < j.worst) {
+      j.worst = p;
+      j.worst_at = t;
+    }
+    if (p < threshold && j.below++ == 0) {
+      j.first_below = t;
+      j.first_order = p;
+    }
+  }
+  return times;
+}
+
+/// The order of the RMS over all judged times and over consecutive windows of (about) a tenth
+/// of them each, and from them the class of `j`.
+void classify(const OrderSeries& s, const std::vector<std::size_t>& times, double threshold,
+              OrderJudgement& j) {
+  if (j.judged == 0) {
+    j.p_rms = std::numeric_limits<double>::quiet_NaN();
+    j.worst = std::numeric_limits<double>::quiet_NaN();
+    // no value at any time (not one at the floor or both zero): not judged, not "converges"
+    j.kind = j.at_floor > 0  ? ConvergenceClass::to_floor
+             : j.valued == 0 ? ConvergenceClass::unjudged
+                             : ConvergenceClass::converges;
+    return;
+  }
+  j.p_rms = rms_order(s, times, 0, j.judged);
+  // consecutive windows of (about) a tenth of the judged times each
+  j.windows = s.windowed ? std::min<std::size_t>(kWindows, j.judged) : 0;
+  for (std::size_t w = 0; w < j.windows; ++w) {
+    const std::size_t begin = w * j.judged / j.windows, end = (w + 1) * j.judged / j.windows;
+    const double p = rms_order(s, times, begin, end);
+    if (p < threshold && j.windows_below++ == 0) {
+      j.window_begin = times[begin];
+      j.window_end = times[end - 1];
+      j.window_order = p;
+    }
+    if (p < 0.0 && j.windows_worse++ == 0) {
+      j.worse_begin = times[begin];
+      j.worse_end = times[end - 1];
+      j.worse_order = p;
+    }
+  }
+  const bool falls = !(j.p_rms < kFallingOrder) && j.windows_worse == 0;
+  const bool meets = !(j.p_rms < threshold) && j.windows_below == 0;
+  // kWindows or fewer judged times: each tenth of the run would be one time, and one time
+  // does not decide (header comment)
+  j.too_short = j.judged <= kWindows;
+  j.kind = j.too_short      ? ConvergenceClass::unjudged
+           : !falls         ? ConvergenceClass::diverges
+           : !meets         ? ConvergenceClass::pre_asymptotic
+           : j.at_floor > 0 ? ConvergenceClass::to_floor
+                            : ConvergenceClass::converges;
+}
+
+} // namespace
+
 Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_order) {
   Verdict v;
   v.design = design_order;
@@ -60,79 +150,9 @@ Verdict judge_convergence(const std::vector<OrderSeries>& series, double design_
     j.quantity = s.quantity;
     j.N = s.N;
     j.worst = inf;
-    std::vector<std::size_t> times; // the judged times
-    for (std::size_t t = 0; t < s.coarse.size(); ++t) {
-      const double c = s.coarse[t], f = s.fine[t];
-      j.valued += std::isfinite(c) ? 1 : 0;
-      // no value, not to be judged, or no error at all (G^r of the initial data): neither
-      // judged nor at the floor
-      if (!std::isfinite(c) || !std::isfinite(s.floor[t]) || (c == 0.0 && f == 0.0))
-        continue;
-      if (f <= kFloorFactor * s.floor[t]) { // the finer member at round-off: not judged
-        if (j.at_floor++ == 0) {
-          j.first_floor = t;
-          j.floor_value = s.floor[t];
-        }
-        continue;
-      }
-      times.push_back(t); // (a non-finite finer value too: it fails)
-      const double p = order_at(s.N, c, f);
-      if (p < j.worst) {
-        j.worst = p;
-        j.worst_at = t;
-      }
-      if (p < v.threshold && j.below++ == 0) {
-        j.first_below = t;
-        j.first_order = p;
-      }
-    }
+    const std::vector<std::size_t> times = scan_times(s, v.threshold, j);
     j.judged = times.size();
-    // the order of the RMS over the judged times in [begin, end)
-    auto rms_order = [&](std::size_t begin, std::size_t end) {
-      double sum_coarse = 0.0, sum_fine = 0.0;
-      for (std::size_t q = begin; q < end; ++q) {
-        sum_coarse += s.coarse[times[q]] * s.coarse[times[q]];
-        sum_fine += s.fine[times[q]] * s.fine[times[q]];
-      }
-      const double n = static_cast<double>(end - begin);
-      return order_at(s.N, std::sqrt(sum_coarse / n), std::sqrt(sum_fine / n));
-    };
-    if (j.judged == 0) {
-      j.p_rms = std::numeric_limits<double>::quiet_NaN();
-      j.worst = std::numeric_limits<double>::quiet_NaN();
-      // no value at any time (not one at the floor or both zero): not judged, not "converges"
-      j.kind = j.at_floor > 0  ? ConvergenceClass::to_floor
-               : j.valued == 0 ? ConvergenceClass::unjudged
-                               : ConvergenceClass::converges;
-    } else {
-      j.p_rms = rms_order(0, j.judged);
-      // consecutive windows of (about) a tenth of the judged times each
-      j.windows = s.windowed ? std::min<std::size_t>(kWindows, j.judged) : 0;
-      for (std::size_t w = 0; w < j.windows; ++w) {
-        const std::size_t begin = w * j.judged / j.windows, end = (w + 1) * j.judged / j.windows;
-        const double p = rms_order(begin, end);
-        if (p < v.threshold && j.windows_below++ == 0) {
-          j.window_begin = times[begin];
-          j.window_end = times[end - 1];
-          j.window_order = p;
-        }
-        if (p < 0.0 && j.windows_worse++ == 0) {
-          j.worse_begin = times[begin];
-          j.worse_end = times[end - 1];
-          j.worse_order = p;
-        }
-      }
-      const bool falls = !(j.p_rms < kFallingOrder) && j.windows_worse == 0;
-      const bool meets = !(j.p_rms < v.threshold) && j.windows_below == 0;
-      // kWindows or fewer judged times: each tenth of the run would be one time, and one time
-      // does not decide (header comment)
-      j.too_short = j.judged <= kWindows;
-      j.kind = j.too_short      ? ConvergenceClass::unjudged
-               : !falls         ? ConvergenceClass::diverges
-               : !meets         ? ConvergenceClass::pre_asymptotic
-               : j.at_floor > 0 ? ConvergenceClass::to_floor
-                                : ConvergenceClass::converges;
-    }
+    classify(s, times, v.threshold, j);
     v.items.push_back(std::move(j));
   }
   v.nothing_judged =
