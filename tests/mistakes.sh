@@ -197,6 +197,9 @@ mistakes=(
   "flag suggestions within one edit, not two|src/cli/cli.cpp|d = edit_distance(name.substr(2), known); d <= 2)|d = edit_distance(name.substr(2), known); d <= 1)|unknown flags are named as typed, with the nearest flags, and flags before the subcommand are told to follow it"
   "converge accepting a resolution given twice|src/study/converge.cpp|if (!(options.N[k] > options.N[k - 1]))|if (!(options.N[k] >= options.N[k - 1]))|hostile inputs: each refused cleanly, naming its flag, nothing written or damaged"
   "--gbssn-volume eulerian not passed on to the right-hand side|src/config/param_convert.cpp|? Formulation::bssn_eulerian|? Formulation::bssn|every flag acts where its table row says it acts: a number the run writes and the run key change with it, and the flags that change no number by design do what they do"
+  "profiles' beta written as beta_GD alone|src/io/output.cpp|v = beta_GD + beta_H[i];|v = beta_GD;|profiles.dat: beta is beta_GD + beta_H, beta_GD the evolved shift, with the horizon shift on"
+  "converge judged against 4th order whatever --fd-order|src/study/converge_verdict.cpp|s.options.expect_order.value_or(static_cast<double>(s.base.fd_order))|s.options.expect_order.value_or(4.0)|converge: the expected order is --fd-order's unless --expect-order is given"
+  "a checkpoint at the run's last step refused|src/evolution/checkpoint.cpp|c.step > run.n_steps)|c.step >= run.n_steps)|SIGTERM: the run finishes its step, keeps complete files, says so, exits 143"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs

@@ -4,6 +4,7 @@
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
 #include "config/params.hpp"
+#include "evolution/checkpoint.hpp"
 
 #include <fmt/format.h>
 
@@ -85,6 +86,15 @@ TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, ex
   }
   CHECK(rows >= 3200);
   CHECK(rows % 3200 == 0);
+  // resumed to the checkpoint's own time (its exact double): no step left, the run completes
+  // there (the checkpoint's step is this run's last, not outside its steps)
+  const double t_stop = gbssn1d::read_checkpoint(out / "checkpoint.bin").t;
+  const auto at = run(fmt::format("resume {} --tmax {:.17g}", out.string(), t_stop));
+  INFO(at.err);
+  CHECK(at.status == 0);
+  const std::string resumed = slurp(out / "timeseries.dat");
+  CHECK(resumed.substr(resumed.rfind("# end:"))
+        == fmt::format("# end: completed at t = {}\n", t_stop));
   fs::remove_all(out);
 }
 

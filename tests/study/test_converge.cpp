@@ -172,6 +172,24 @@ TEST_CASE("converge: a study whose errors fall short of the expected order is pr
   fs::remove_all(out);
 }
 
+// Without --expect-order a study is judged against its own --fd-order: at 2nd order the
+// threshold is 2 - 1.5, not the 4th-order default's 2.5 (a 2nd-order trumpet study judged
+// against 4 would be called pre-asymptotic however well it converged).
+TEST_CASE("converge: the expected order is --fd-order's unless --expect-order is given") {
+  const fs::path out = scratch("converge_fd_order");
+  std::string err;
+  run_study("converge --N 40,60,80 --out " + out.string()
+                + " --id 1log-trumpet --grid uniform --rmax 20 --tmax 2 --dt-series 0.1"
+                  " --fd-order 2",
+            &err);
+  INFO(err);
+  CHECK(err.find("(expected order 2)") != std::string::npos);
+  CHECK(slurp(out / "convergence.dat")
+            .find("converges if each is at least 0.50 (expected order 2 - 1.5)")
+        != std::string::npos);
+  fs::remove_all(out);
+}
+
 namespace {
 
 /// The 1+log trumpet on seven boxes to 128 M, at N = 24, 32, 48 (M/24 to M/48 near the
