@@ -268,8 +268,11 @@ problem() {
 # With them, by hand as well: those whose files take longest to compile beside the sanitizer
 # stage (every point-loop instance: 55 s; evolve_resume.cpp: 25 s; CI on a fresh clone,
 # 2026-11-28, build stage 302 s) and the later rows in headers that every point loop includes
-# (rhs_loop.hpp, equations.hpp, bssn_eulerian.hpp; each verified caught when added), so that CI
-# stays under 25 minutes on a slow host too.
+# (rhs_loop.hpp, equations.hpp, bssn_eulerian.hpp, gauge.hpp, dispatch.hpp: each such row
+# recompiles all 38 point-loop instances, about 35 s of compiler time; each verified caught when
+# added) and in core/decimal.hpp (55 s), so that CI stays under 25 minutes: CI on a fresh clone
+# at 419a0cb took 1820 s, its mistakes stage 1435 s of it, these eight rows about 300 s of
+# compiler time (measured per object file, 2026-12-07).
 whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
                "the published driver stencil as the default again"
                "--force keeps the earlier run's checkpoint"
@@ -277,7 +280,14 @@ whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
                "beta_GD's second derivative with the map's term of the wrong sign"
                "dissipation at sigma/dx, not the cell's sigma/dr"
                "--gbssn-volume eulerian evolving the Lagrangian equations"
-               "the Eulerian (E3e) with the sign of alpha b A_a flipped")
+               "the Eulerian (E3e) with the sign of alpha b A_a flipped"
+               "B's advective bracket with the wrong sign" "beta's advective bracket dropped"
+               "--upwind biased evaluated with the lopsided pair"
+               "--fd-order 6 differenced at 4th order"
+               "the biased pair's sum replaced by the lopsided one in the point loop"
+               "B's matched driver term without its beta_H correction (B driven by the full shift)"
+               "--upwind biased: Delta^r's stencil with the lopsided pair's ratio"
+               "numbers read as octal again")
 if [ -n "$only" ]; then
   selected=()
   for m in "${mistakes[@]}"; do
