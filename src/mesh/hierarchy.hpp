@@ -81,27 +81,6 @@ std::vector<long> level_steps(const MeshLayout& layout, const StepperOptions& op
 /// The hierarchy's step (level 0's) under `options`.
 double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options);
 
-/// One term of prolong_combination's sums, sum + w x: fused, one rounding, where the target has
-/// FMA, written out so that the sums do not depend on whether the compiler contracts them (GCC
-/// contracts a * b + c only from -O2: the optimised and the -O1 sanitizer builds rounded
-/// differently, and a test's own loop could not follow both); sum + w x elsewhere.
-inline double combination_term(double sum, double w, double x) {
-#ifdef __FP_FAST_FMA
-  return std::fma(w, x, sum);
-#else
-  return sum + w * x;
-#endif
-}
-
-/// The fine level's interior cells [j_begin, N + n_ghost) (its outer ghosts included), every
-/// row: the prolongation (transfer.hpp's prolong) of the parent's sum_m weights[m] arrays[m]
-/// (1, 2, 3 or 5 arrays, summed in the order m = 0, 1, ..., each term by combination_term). Away
-/// from the origin the sums stay in a local array; near it (a coarse cell read below 0) they go
-/// through `scratch` and prolong_field's mirror. The same bits either way.
-void prolong_combination(std::span<const State* const> arrays, std::span<const double> weights,
-                         const Grid& coarse_grid, State& fine, const Grid& fine_grid, long j_begin,
-                         State& scratch);
-
 class MeshStepper {
 public:
   /// One RHS per level, in level order (`layout` must outlive the stepper). Throws

@@ -5,6 +5,7 @@
 // uniform grid at the finest spacing (the reflection off the refinement boundary) converging
 // away.
 #include "mesh/hierarchy.hpp"
+#include "mesh/prolong_rows.hpp"
 #include "mesh/transfer.hpp"
 
 #include "gbssn/rhs.hpp"
