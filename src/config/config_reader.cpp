@@ -49,8 +49,8 @@ namespace {
 /// A basic string (TOML's, with escapes) whose opening '"' is at line[k], for `key`: its value,
 /// with k past the closing '"'. `fail(why)` throws.
 template <class Fail>
-std::string basic_string(const std::string& line, std::size_t& k, const std::string& key,
-                         const Fail& fail) {
+std::string read_basic_string(const std::string& line, std::size_t& k, const std::string& key,
+                              const Fail& fail) {
   std::string value;
   bool closed = false;
   for (++k; k < line.size() && !closed; ++k) {
@@ -113,7 +113,7 @@ std::vector<std::pair<std::string, std::string>> read_config_text(const std::str
       fail(fmt::format("key '{}' has no value", key));
     std::string value;
     if (line[k] == '"') { // a basic string, with escapes
-      value = basic_string(line, k, key, fail);
+      value = read_basic_string(line, k, key, fail);
     } else if (line[k] == '\'') { // a literal string: no escapes
       const std::size_t end = line.find('\'', k + 1);
       if (end == std::string::npos)

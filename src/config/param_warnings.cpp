@@ -3,7 +3,7 @@
 #include "config/param_rules.hpp"
 #include "config/same_run.hpp"
 #include "evolution/levels.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/level_steps.hpp"
 
 #include <fmt/format.h>
 

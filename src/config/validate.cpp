@@ -7,7 +7,7 @@
 #include "core/text.hpp"
 #include "evolution/levels.hpp"
 #include "fd/stencils.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/level_steps.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

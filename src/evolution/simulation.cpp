@@ -2,6 +2,7 @@
 
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
+#include "mesh/level_steps.hpp"
 
 #include <fmt/format.h>
 

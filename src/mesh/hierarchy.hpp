@@ -62,24 +62,16 @@
 #include "mesh/time_interpolation_kind.hpp"
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <limits>
-#include <span>
 #include <vector>
 
 namespace gbssn1d::mesh {
 
 /// One level's right-hand side d u / dt (GbssnRhs has this signature).
 using LevelRhs = std::function<void(const State&, State&, double)>;
-
-/// Steps level l takes per step of the hierarchy (level 0's step) under `options`: 1 on level
-/// 0, then the same or twice its parent's (see StepperOptions::dt_max).
-std::vector<long> level_steps(const MeshLayout& layout, const StepperOptions& options);
-/// The hierarchy's step (level 0's) under `options`.
-double hierarchy_dt(const MeshLayout& layout, const StepperOptions& options);
 
 class MeshStepper {
 public:

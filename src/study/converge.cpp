@@ -17,7 +17,7 @@
 #include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
-#include "mesh/hierarchy.hpp"
+#include "mesh/level_steps.hpp"
 #include "study/parallel.hpp"
 #include "study/verdict.hpp"
 

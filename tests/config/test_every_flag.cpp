@@ -21,6 +21,7 @@
 #include "grid/grid.hpp"
 #include "mesh/hierarchy.hpp"
 #include "mesh/layout.hpp"
+#include "mesh/level_steps.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>

@@ -3,6 +3,7 @@
 // one level is its own composite. Also the per-level steps under a largest step (dt_max).
 #include "mesh/composite.hpp"
 #include "mesh/hierarchy.hpp"
+#include "mesh/level_steps.hpp"
 
 #include <doctest/doctest.h>
 
