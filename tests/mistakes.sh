@@ -63,7 +63,10 @@ else
   git -C "$repo" worktree add -q --detach "$work/src" HEAD
   cd "$work/src"
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
+# shellcheck source=.ci/generator.sh
+source .ci/generator.sh
+generator_for build
+cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
 if [ $mode = full ]; then
   cmake --build build -j "$jobs" >/dev/null
 else
@@ -178,7 +181,7 @@ mistakes=(
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
   "Z4c's ADM-K lapse driven by K-hat + Theta|src/gbssn/z4c.hpp|lapse_theta(p.lapse_adm_K ? 2.0 : 0.0)|lapse_theta(p.lapse_adm_K ? 1.0 : 0.0)|Z4c: --z4c-lapse-adm drives the lapse by K-hat + 2 Theta, without it by K-hat"
   "--z4c-lapse-adm's table row: idle without damping|src/config/flag_table.cpp|\"slicing) instead of K-hat\",\n       Acts::with_z4c},|\"slicing) instead of K-hat\",\n       Acts::with_z4c_damping},|--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and numbers, idle in BSSN alone"
-  "Z4c's damping limit twice as loose|src/config/validate.cpp|rate * dt_finest > eta_dt_max)|rate * dt_finest > 2.0 * eta_dt_max)|Z4c's damping limit: kappa1 (2 + kappa2) dt just inside RK4's limit runs, just beyond it is refused, naming the flag"
+  "Z4c's damping limit twice as loose|src/config/validate_steps.cpp|rate * dt_finest > eta_dt_max)|rate * dt_finest > 2.0 * eta_dt_max)|Z4c's damping limit: kappa1 (2 + kappa2) dt just inside RK4's limit runs, just beyond it is refused, naming the flag"
   "a checkpoint's flag byte of 2 accepted|src/evolution/checkpoint.cpp|    if (v > 1)|    if (v > 2)|a checkpoint's flag bytes: 0 and 1 read back, any other value is refused as corrupt, naming the flag;resume refuses a checkpoint whose flag byte is neither 0 nor 1, naming the flag, and leaves the run as it was"
   "the horizon's root tolerance divided by dx/dr|src/horizon/apparent_horizon.cpp|params.tolerance * grid.inv_dr_dx()|params.tolerance / grid.inv_dr_dx()|--ah-tol bounds the error of the horizon's radius in r, on the sinh and the uniform grid"
   "the maximal trumpet's puncture series from u = 1e-7|src/initial_data/maximal_trumpet.cpp|  if (ln_u_small < std::log(1e-17))|  if (ln_u_small < std::log(1e-7))|MaximalTrumpet near the puncture: alpha, R and the initial data's fields to round-off across the switch to the puncture limit"
