@@ -34,7 +34,10 @@ build=build-sanitize
 logs=$PWD/$build/sanitizer-logs
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DGBSSN1D_SANITIZE=ON -DGBSSN1D_BUILD_BENCH=OFF -DCMAKE_UNITY_BUILD=ON \
+# shellcheck source=.ci/generator.sh
+source .ci/generator.sh
+generator_for "$build"
+cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DGBSSN1D_SANITIZE=ON -DGBSSN1D_BUILD_BENCH=OFF -DCMAKE_UNITY_BUILD=ON \
   "${launcher[@]}" >/dev/null
 cmake --build "$build" -j "$(nproc)" 2>&1 | grep -v '^\[' || true
 [ -x "$build/gbssn1d" ] && [ -x "$build/tests/gbssn1d_tests" ] || { echo "sanitize: build failed" >&2; exit 1; }
