@@ -45,6 +45,14 @@ Params trumpet(int n, double rmax, const std::string& grid_flag, bool horizon_sh
   return p;
 }
 
+/// The evolution's configuration of `p`, its defaults resolved and validated as the command
+/// line does (ParamError otherwise).
+EvolutionConfig validated_config(const Params& p) {
+  const ResolvedParams run = resolve(p);
+  validate(run);
+  return evolution_config(run);
+}
+
 /// Full-grid RHS evaluations of `sim`'s state, repeated for at least `seconds` (one RHS with
 /// the run's horizon locator, so that the shift's searches count).
 /// Each evaluation is timed on its own as well (a clock read costs about 20 ns, 0.1% of an
@@ -208,9 +216,7 @@ int main(int argc, char** argv) {
         Params p = trumpet(n, 100.0, "sinh", horizon_shift);
         p.dr_inner = 0.01; // one sinh map for every N (innermost 0.01 M at N = 400)
         p.tmax = 0.0;
-        resolve_defaults(p);
-        validate(p);
-        Simulation sim(evolution_config(p));
+        Simulation sim(validated_config(p));
         const RhsTiming timing = time_rhs(sim, seconds);
         const long evals = timing.evaluations;
         const double elapsed = timing.seconds;
@@ -244,9 +250,7 @@ int main(int argc, char** argv) {
         Params p = trumpet(n, 100.0, "sinh", horizon_shift);
         p.dr_inner = 0.01;
         p.tmax = 0.0;
-        resolve_defaults(p);
-        validate(p);
-        return evolution_config(p);
+        return validated_config(p);
       };
       const EvolutionConfig shifted_config = config(true);
       const Simulation plain(config(false)), shifted(shifted_config);
@@ -272,9 +276,7 @@ int main(int argc, char** argv) {
       p.dr_inner = 0.01;
       p.tmax = 0.0;
       p.fd_order = order;
-      resolve_defaults(p);
-      validate(p);
-      Simulation sim(evolution_config(p));
+      Simulation sim(validated_config(p));
       const RhsTiming t = time_rhs(sim, seconds);
       const double rate = static_cast<double>(t.evaluations) * n / t.seconds;
       fmt::print("{} {} {} {:.3f} {:.4e} {:.2f} {:.2f} {:.2f}\n", order, n, t.evaluations,
@@ -293,9 +295,7 @@ int main(int argc, char** argv) {
         p.dr_inner = 0.01;
         p.tmax = 0.0;
         p.upwind = UpwindChoice::parse(upwind);
-        resolve_defaults(p);
-        validate(p);
-        Simulation sim(evolution_config(p));
+        Simulation sim(validated_config(p));
         const RhsTiming t = time_rhs(sim, seconds);
         const double rate = static_cast<double>(t.evaluations) * n / t.seconds;
         fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f} {:.2f} {:.2f}\n", upwind,
@@ -316,9 +316,7 @@ int main(int argc, char** argv) {
         p.dr_inner = 0.01;
         p.tmax = 0.0;
         p.formulation = FormulationChoice::parse(formulation);
-        resolve_defaults(p);
-        validate(p);
-        Simulation sim(evolution_config(p));
+        Simulation sim(validated_config(p));
         const RhsTiming t = time_rhs(sim, seconds);
         const double rate = static_cast<double>(t.evaluations) * n / t.seconds;
         fmt::print("{} {} {} {} {:.3f} {:.4e} {:.2f} {:.2f} {:.2f}\n", formulation,
@@ -339,9 +337,7 @@ int main(int argc, char** argv) {
         Params p = trumpet(n, 1024.0, "boxes", horizon_shift);
         p.levels = 9;
         p.tmax = 100.0;
-        resolve_defaults(p);
-        validate(p);
-        Simulation sim(evolution_config(p));
+        Simulation sim(validated_config(p));
         using clock = std::chrono::steady_clock;
         const auto start = clock::now();
         sim.run(nullptr);

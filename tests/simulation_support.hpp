@@ -8,10 +8,10 @@
 namespace gbssn1d::testing {
 
 /// `p` with its defaults resolved; throws ParamError as the command line would.
-inline Params validated(Params p) {
-  resolve_defaults(p);
-  validate(p);
-  return p;
+inline ResolvedParams validated(const Params& p) {
+  ResolvedParams r = resolve(p);
+  validate(r);
+  return r;
 }
 
 /// The simulation of the parameters `p` (validated first).

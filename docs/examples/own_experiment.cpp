@@ -26,9 +26,9 @@ int main(int argc, char** argv) {
       p.dt_series = 1.0;
       p.rahA = A;
       p.rah0 = 1.2;
-      resolve_defaults(p);
-      validate(p); // throws ParamError naming the flag, as the command line would
-      Simulation sim(evolution_config(p));
+      const ResolvedParams run = resolve(p); // the defaults that are rules (eta = 2/M, ...)
+      validate(run); // throws ParamError naming the flag, as the command line would
+      Simulation sim(evolution_config(run));
       sim.on_series = [A](Simulation& s) { // at t = 0 and every dt_series
         const auto horizon = s.horizons().horizon();
         const double none = std::numeric_limits<double>::quiet_NaN();

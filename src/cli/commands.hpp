@@ -15,7 +15,7 @@
 namespace gbssn1d {
 
 /// `gbssn1d evolve`: one run into p.out (or its configuration printed).
-int evolve(Params p, bool print_config);
+int evolve(const Params& given, bool print_config);
 /// `gbssn1d resume DIR [--tmax T]`: a run continued from DIR/checkpoint.bin.
 int resume(const std::string& dir_name, std::optional<double> tmax);
 /// `gbssn1d converge`: one configuration at several resolutions (lists as given on the line).

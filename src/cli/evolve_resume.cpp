@@ -96,8 +96,8 @@ void warn_shift_courant(const Simulation& sim, const Params& p) {
 
 } // namespace
 
-int evolve(Params p, bool print_config) {
-  resolve_defaults(p);
+int evolve(const Params& given, bool print_config) {
+  const ResolvedParams p = resolve(given);
   validate(p);
   if (print_config) {
     const std::string text = config_text(p) + rule_values_line(p);
@@ -341,11 +341,11 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   std::vector<std::string> args{"--config", (dir / "config.toml").string()};
   for (const auto& a : absent_key_args(file_text(dir / "config.toml")))
     args.push_back(a);
-  Params p = parse_evolve_args(args);
+  Params given = parse_evolve_args(args);
   if (tmax)
-    p.tmax = *tmax;
-  p.out = dir_name;
-  resolve_defaults(p);
+    given.tmax = *tmax;
+  given.out = dir_name;
+  const ResolvedParams p = resolve(given);
   validate(p);
   Checkpoint c;
   try {
@@ -377,7 +377,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
                                  "the output written after it",
                                  time_text(written.t_last)));
   const KeptHorizonFile kept = with_kept_horizon_file(p, dir_name, c.config);
-  Simulation sim(evolution_config(kept.params));
+  Simulation sim(evolution_config(resolve(kept.params)));
   try {
     sim.restore(c);
     Output::check_resumable(dir, c.marks);

@@ -180,9 +180,9 @@ void warn_of_foreign_files(const ConvergeOptions& options) {
 }
 
 /// The members' warnings (as evolve's), each once, naming the members it concerns when not all.
-void say_member_warnings(const std::vector<Params>& members) {
+void say_member_warnings(const std::vector<ResolvedParams>& members) {
   std::vector<std::pair<std::string, std::vector<int>>> said;
-  for (const Params& m : members)
+  for (const ResolvedParams& m : members)
     for (const auto& w : warnings(m)) {
       auto it = std::find_if(said.begin(), said.end(), [&](const auto& x) { return x.first == w; });
       if (it == said.end())
@@ -211,10 +211,10 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
     throw ParamError("--order", fmt::format("{}", options.order),
                      "must be a number in (0, 30] (H is scaled by (N/N_0)^order)");
   check_jobs(options.jobs);
-  Params base = parse_evolve_args(evolve_args);
-  base.N = options.N.front(); // the first member; each member sets its own
-  base.out = options.out;
-  resolve_defaults(base);
+  Params given = parse_evolve_args(evolve_args);
+  given.N = options.N.front(); // the first member; each member sets its own
+  given.out = options.out;
+  const ResolvedParams base = resolve(given);
   check_scaled_times(options, times, base.tmax);
   check_path("--out", options.out);
   bool continuing = false;
@@ -237,14 +237,14 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
         earlier == now ? "" : fmt::format(" but N: {} where it ran N = {}", now, earlier));
   }
   validate_output_dir([&] {
-    Params o = base;
+    Params o = base.flags();
     o.force = options.force || continuing;
     return o;
   }());
   if (options.force && !continuing) // what --force leaves of another command's output
     warn_of_foreign_files(options);
   // validates every member before anything is written
-  const std::vector<Params> members = converge_members(base, options);
+  const std::vector<ResolvedParams> members = converge_members(base, options);
   say_member_warnings(members);
   return run_converge(base, options, config_text(base));
 }

@@ -1,9 +1,11 @@
 #include "config/flag_table.hpp"
 
 #include "config/config_file.hpp"
+#include "config/param_rules.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <type_traits>
 
 namespace gbssn1d {
@@ -22,7 +24,7 @@ AdvectionStencil upwind_or_centred(AdvectionStencil driver, const Params& p) {
 } // namespace
 
 /// Whether a flag that acts `where` acts in `p`.
-bool acts(Acts where, const Params& p) {
+bool acts(Acts where, const ResolvedParams& p) {
   switch (where) {
   case Acts::always:
     return true;
@@ -33,7 +35,7 @@ bool acts(Acts where, const Params& p) {
   case Acts::on_boxes:
     return p.grid == RadialGrid::boxes;
   case Acts::with_box_taper:
-    return p.grid == RadialGrid::boxes && p.box_taper.value_or(0.0) > 0.0;
+    return p.grid == RadialGrid::boxes && p.box_taper() > 0.0;
   case Acts::on_sinh:
     return p.grid == RadialGrid::sinh;
   case Acts::with_wormhole:
@@ -45,8 +47,7 @@ bool acts(Acts where, const Params& p) {
   case Acts::with_searches:
     return shift_on(p) && !uses_hAH_file(p);
   case Acts::with_tapered_boxes:
-    return p.grid == RadialGrid::boxes && p.levels.value_or(1) > 1
-           && 0.5 * p.rmax > p.box_taper_from * p.M;
+    return p.grid == RadialGrid::boxes && p.levels() > 1 && 0.5 * p.rmax > p.box_taper_from * p.M;
   case Acts::with_delta_stencil:
     return shift_on(p) || p.delta_advection.value() == AdvectionStencil::centred;
   case Acts::with_driver_stencil:
@@ -59,7 +60,7 @@ bool acts(Acts where, const Params& p) {
 
 /// Why a flag that acts `where` does nothing in `p` (acts(where, p) is false), as a user reads
 /// it ("with --rahA 0"), and what to do instead.
-std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
+std::pair<std::string, std::string> idle_because(Acts where, const ResolvedParams& p) {
   const std::string shift_off =
       "the horizon-adjusting shift is off (give --rahA A, e.g. 0.5, to move the horizon)";
   switch (where) {
@@ -112,202 +113,34 @@ std::pair<std::string, std::string> idle_because(Acts where, const Params& p) {
   return {};
 }
 
-namespace {
-
-/// The grid and the initial data.
-std::vector<ParamSpec> grid_and_data_specs() {
-  return {
-      {"N", &Params::N, "Grid", "number of cells"},
-      {"rmax", &Params::rmax, "Grid", "outer radius"},
-      {"grid", &Params::grid, "Grid",
-       "radial grid: uniform | sinh | boxes (box-in-box mesh refinement: --levels boxes, box l "
-       "covering r <= rmax/2^l with --N cells, Berger-Oliger subcycling)"},
-      {"levels", &Params::levels, "Grid",
-       "--grid boxes: number of boxes (refinement levels); default max(2, 1 + "
-       "floor(log2(rmax/4M)))",
-       Acts::on_boxes},
-      {"time-interp", &Params::time_interp, "Grid",
-       "--grid boxes: a fine box's boundary in time: rk-stages (RK4 stage values of the coarse "
-       "step, 4th order) | dense (RK4 dense output) | quadratic (three coarse time levels with "
-       "buffer zones, as Carpet and BAM)",
-       Acts::on_boxes},
-      {"no-subcycling", &Params::no_subcycling, "Grid",
-       "--grid boxes: every box steps with the finest box's dt (no Berger-Oliger subcycling)",
-       Acts::on_boxes},
-      {"box-taper", &Params::box_taper, "Grid",
-       "--grid boxes: the outermost fraction F of a fine box's cells (round(F N) cells) is "
-       "relaxed smoothly towards its parent at every synchronisation (a tapered buffer that "
-       "absorbs what the parent cannot carry), 0 ... 0.5; 0: off",
-       Acts::with_tapered_boxes},
-      {"box-taper-from", &Params::box_taper_from, "Grid",
-       "--grid boxes: --box-taper only on the boxes that reach beyond this radius, in units "
-       "of M",
-       Acts::with_box_taper},
-      {"dr-inner", &Params::dr_inner, "Grid",
-       "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
-       "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)",
-       Acts::on_sinh},
-      {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
-      {"M", &Params::M, "Initial data", "black-hole mass"},
-      {"lapse0", &Params::lapse0, "Initial data",
-       "initial lapse of the wormhole: one | precollapsed", Acts::with_wormhole},
-  };
+std::optional<std::string> Bounds::refusal(double v) const {
+  const std::string why = note ? fmt::format(" ({})", note) : "";
+  if (!std::isfinite(v))
+    return "must be a finite number" + why;
+  const bool low = lo && (lo_open ? !(v > *lo) : !(v >= *lo));
+  const bool high = hi && (hi_open ? !(v < *hi) : !(v <= *hi));
+  if (!low && !high)
+    return std::nullopt;
+  if (lo && hi)
+    return fmt::format("must lie in {}{}, {}{}{}", lo_open ? '(' : '[', *lo, *hi,
+                       hi_open ? ')' : ']', why);
+  return fmt::format("must be {} {}{}", lo_open ? ">" : ">=", *lo, why);
 }
 
-/// The formulation, gauge, numerics, times and output cadences.
-std::vector<ParamSpec> evolution_specs() {
-  return {
-      {"formulation", &Params::formulation, "Formulation",
-       "bssn | z4c (Z4c: K-hat = K - 2 Theta and Theta evolved, constraint damping kappa1, "
-       "kappa2; docs/gbssn1d-equations.md Sec. 17)"},
-      {"gbssn-volume", &Params::gbssn_volume, "Formulation",
-       "BSSN's volume choice (Brown 2009): lagrangian, d_t det(gbar) = 0 | eulerian, det(gbar) "
-       "carried by the shift (docs/gbssn1d-equations.md Sec. 18); Z4c takes lagrangian"},
-      {"kappa1", &Params::kappa1, "Formulation",
-       "Z4c: constraint damping kappa1 (1/length, as --eta), >= 0: Theta and G^r decay at "
-       "~ alpha kappa1; grid-scale noise grows where kappa1 x cell width > 0.3 "
-       "(docs/z4c-study.md)",
-       Acts::with_z4c},
-      {"kappa1-hole", &Params::kappa1_hole, "Formulation",
-       "Z4c: kappa1 near the hole, >= --kappa1 or 0 (off): kappa1 rises towards it inside the "
-       "areal radius 6 M, capped at 0.2/(cell width) (docs/z4c-study.md Sec. 9: the horizon "
-       "mass's drift)",
-       Acts::with_z4c},
-      {"kappa2", &Params::kappa2, "Formulation",
-       "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard; it "
-       "multiplies kappa1, so does nothing with --kappa1 0)",
-       Acts::with_z4c_damping},
-      {"z4c-lapse-adm", &Params::z4c_lapse_adm, "Formulation",
-       "Z4c, for the study: the 1+log lapse driven by the ADM K = K-hat + 2 Theta (BSSN's "
-       "slicing) instead of K-hat",
-       Acts::with_z4c},
-      {"eta", &Params::eta, "Gauge",
-       "Gamma-driver damping eta (1/M); default 2/M, 1/M for a shrink of wormhole data "
-       "(--rahA != 0, --rah0 < 0.8304 M)"},
-      {"advective-shift", &Params::advective_shift, "Gauge",
-       "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
-      {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
-       "1+log without advection: d_t alpha = -2 alpha K"},
-      {"cfl", &Params::cfl, "Numerics",
-       "dt = cfl * smallest spacing, in (0, 1] (measured: errors unchanged from 0.25 on every "
-       "grid, boxes included; unstable from 0.8)"},
-      {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]"},
-      {"fd-order", &Params::fd_order, "Numerics",
-       "order of the finite differences: 2 | 4 | 6 | 8 (derivatives, upwind advection, and "
-       "dissipation of the (order+2)-th difference; boxes: 2 | 4 | 6)"},
-      {"upwind", &Params::upwind, "Numerics",
-       "stencil of every advection term beta d_r f: lopsided (order fd-order, as moving-puncture "
-       "codes) | biased (order fd-order + 1, one point more upwind than downwind: at 4th order "
-       "1.5-8 times lower errors from M/12 (horizon mass, H), but up to 7 times higher on a "
-       "trumpet at M/8 and 1.5 times on a shrink to 0.6 M; docs/horizon-shift-study.md Sec. 7.4)"},
-      {"chi-floor", &Params::chi_floor, "Numerics",
-       "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
-       "cross chi = 0 at the innermost cell during the lapse collapse"},
-      {"tmax", &Params::tmax, "Time", "final time; 0 writes the initial data only"},
-      {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat"},
-      {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat"},
-      {"checkpoint-every", &Params::checkpoint_every, "Output",
-       "simulated time between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
-       "(0: none; SIGTERM, SIGINT, SIGHUP, SIGUSR1 and SIGUSR2 always write one)"},
-  };
+Bounds finite() {
+  return {};
 }
-
-/// The norm windows, the horizon-adjusting shift (its profile, stencils, searches and study
-/// variants), and the output folder.
-std::vector<ParamSpec> diagnostics_and_shift_specs() {
-  return {
-      {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms"},
-      {"norm-rmax", &Params::norm_rmax, "Diagnostics",
-       "outer radius of the exterior norms; default min(10 M, rmax/2)"},
-      {"norm-Rmin", &Params::norm_Rmin, "Diagnostics",
-       "areal-radius window of the *_R norms: norm-Rmin M <= R (the same place in every gauge)"},
-      {"norm-Rmax", &Params::norm_Rmax, "Diagnostics", "... R <= norm-Rmax M"},
-      {"norm-Rint", &Params::norm_Rint, "Diagnostics",
-       "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon"},
-      {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)"},
-      {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon",
-       Acts::with_shift},
-      {"rah-width", &Params::rah_width, "Horizon",
-       "width w of f(r), for every --rah-profile but auto", Acts::with_shift},
-      {"rah-rcut", &Params::rah_rcut, "Horizon",
-       "beta_H vanishes smoothly by rcut (see --rah-taper), before the outer boundary; default "
-       "rmax/2 when --rahA != 0",
-       Acts::with_shift},
-      {"rah-taper", &Params::rah_taper, "Horizon",
-       "how beta_H vanishes before the outer boundary: quartic (beta_H x exp(-(2r/rcut)^4): 0.94 "
-       "at rcut/4, 0.37 at rcut/2, 1e-7 at rcut; its derivatives are small enough for coarse "
-       "boxes) | step (C-infinity step from 1 at rcut/2 to 0 at rcut; large derivatives: "
-       "convergence lost on boxes with rmax 128); default quartic when --rahA != 0",
-       Acts::with_shift},
-      {"rah-ramp", &Params::rah_ramp, "Horizon",
-       "T: the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0",
-       Acts::with_shift},
-      {"rah-profile", &Params::rah_profile, "Horizon",
-       "f(r), q = r/w: auto (rational with w = 3 max(rah0, M) to stretch, rah0 >= 0.8304 M; gauss "
-       "with "
-       "w = 1 M to shrink; "
-       "--rah-width is then not used) | rational q/(1+q^2) (published) | rational3 "
-       "q^3/(1+q^4) | gauss (q/2)exp((1-q^2)/2) | gauss3 (q^3/2)exp(3(1-q^2)/2)",
-       Acts::with_shift},
-      {"rah-normal", &Params::rah_normal, "Horizon",
-       "s^r: conformal 1/sqrt(a) (smooth at the puncture) | unit sqrt(chi/a) (published; "
-       "~|r| at a trumpet's puncture) | smooth sqrt((chi+chi_s)/a)",
-       Acts::with_shift},
-      {"rah-chi-smooth", &Params::rah_chi_smooth, "Horizon",
-       "chi_s of --rah-normal smooth: the kink of sqrt(chi) at the puncture is rounded where "
-       "chi ~ chi_s",
-       Acts::with_smooth_normal},
-      {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
-       "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)",
-       Acts::with_shift},
-      {"driver-advection", &Params::driver_advection, "Numerics",
-       "stencil of beta_GD d_r Delta^r in B's driver: matched (Delta^r's own term minus beta_H "
-       "d_r Delta^r centred: stable at every spacing) | upwind-gd (published; with the horizon "
-       "shift it grows at the grid scale at a rate ~ |beta_H|/dr: a blow-up whose onset time "
-       "falls with the spacing) | upwind-full | centred",
-       Acts::with_driver_stencil},
-      {"delta-advection", &Params::delta_advection, "Numerics",
-       "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred",
-       Acts::with_delta_stencil},
-      {"ah-every", &Params::ah_every, "Horizon",
-       "horizon search: substage (every RK stage), extrapolated (after every step, h_AH at the "
-       "RK stages from the last four radii; on two or more boxes the same as substage), step, "
-       "or a number of steps (held in between); with --rahA != 0 and no --rah-hAH-file",
-       Acts::with_searches},
-      {"ah-interval", &Params::ah_interval, "Horizon",
-       "T: a horizon search every T of evolution time (after the first step of the hierarchy at "
-       "or past each multiple of T), h_AH held in between: the same hold at every resolution, as "
-       "a 3D code calls its finder; refused with --ah-every other than substage",
-       Acts::with_searches},
-      {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches for the shift before this time",
-       Acts::with_searches},
-      {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches for the shift after this time",
-       Acts::with_searches},
-      {"ah-tol", &Params::ah_tol, "Horizon",
-       "root-finder tolerance of the horizon radius; at most 1e-3 x the smallest cell width"},
-      {"rah-variant", &Params::rah_variant, "Horizon",
-       "consistent (the method); for the study only: no-shift-derivatives, "
-       "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update, "
-       "box-substage (boxes: each box its own latest h_AH)",
-       Acts::with_shift},
-      {"out", &Params::out, "Output", "output directory (refused if it exists and is not empty)"},
-      {"force", &Params::force, "Output", "write into an existing non-empty --out"},
-  };
+Bounds above(double lo, const char* note) {
+  return {lo, std::nullopt, true, false, note};
 }
-
-} // namespace
-
-/// Every evolve parameter, in the order of --help and config.toml.
-const std::vector<ParamSpec>& param_specs() {
-  static const std::vector<ParamSpec> specs = [] {
-    std::vector<ParamSpec> all;
-    for (auto group : {grid_and_data_specs, evolution_specs, diagnostics_and_shift_specs}) {
-      const std::vector<ParamSpec> specs = group();
-      all.insert(all.end(), specs.begin(), specs.end());
-    }
-    return all;
-  }();
-  return specs;
+Bounds at_least(double lo, const char* note) {
+  return {lo, std::nullopt, false, false, note};
+}
+Bounds within(double lo, double hi, const char* note) {
+  return {lo, hi, false, false, note};
+}
+Bounds within_below(double lo, double hi, const char* note) {
+  return {lo, hi, false, true, note};
 }
 
 /// The value as config-file text, or nothing for an unset optional (the file then leaves the
@@ -333,19 +166,37 @@ std::optional<std::string> value_text(const Params& p, const ParamSpec& spec) {
       spec.member);
 }
 
-/// The rule a flag's unset value stands for, shown by --help as its default.
-const std::map<std::string, std::string>& default_rules() {
-  static const std::map<std::string, std::string> rules{
-      {"eta", "2/M (1/M: wormhole shrinks)"},
-      {"kappa1", "0.02/M"},
-      {"kappa1-hole", "1/M"},
-      {"norm-rmax", "min(10 M, rmax/2)"},
-      {"ah-tmax", "none"},
-      {"ah-interval", "none (--ah-every)"},
-      {"rah-taper", "quartic"},
-      {"levels", "max(2, 1 + floor(log2(rmax/4M)))"},
-      {"box-taper", "0.5 on two or more boxes"}};
-  return rules;
+void check_bounds(const Params& p) {
+  for (const auto& spec : param_specs())
+    std::visit(
+        [&](auto member) {
+          using T = std::decay_t<decltype(p.*member)>;
+          const std::string flag = "--" + std::string(spec.name);
+          const auto check = [&](double v, const std::string& shown) {
+            if (!spec.bounds)
+              return;
+            if (const auto why = spec.bounds->refusal(v))
+              throw ParamError(flag, shown, *why);
+          };
+          if constexpr (ChoiceValue<T>) {
+            if constexpr (!std::is_same_v<T, AhEvery>) // its number form: validate()
+              require_choice(flag, p.*member);
+          } else if constexpr (is_optional_choice<T>) {
+            if (p.*member)
+              require_choice(flag, *(p.*member));
+          } else if constexpr (std::is_same_v<T, double>) {
+            check(p.*member, num(p.*member));
+          } else if constexpr (std::is_same_v<T, int>) {
+            check(p.*member, std::to_string(p.*member));
+          } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+            if (p.*member)
+              check(*(p.*member), num(*(p.*member)));
+          } else if constexpr (std::is_same_v<T, std::optional<int>>) {
+            if (p.*member)
+              check(*(p.*member), std::to_string(*(p.*member)));
+          }
+        },
+        spec.member);
 }
 
 } // namespace gbssn1d

@@ -1,6 +1,8 @@
 // The table of evolve flags (internal to src/config): for each flag its name, where it lives in
-// Params, its --help group and text, and where it acts. One row per flag: the CLI11 options,
-// config files (config_file.cpp) and the effective configuration (same_run.cpp) all read it.
+// Params, its --help group and text, where it acts and the values it accepts (its rows:
+// flag_rows.cpp). One row per flag: the CLI11 options, config files (config_file.cpp), the
+// effective configuration (same_run.cpp) and each flag's own refusals (check_bounds()) all
+// read it.
 #pragma once
 
 #include "config/params.hpp"
@@ -22,7 +24,7 @@ concept ChoiceValue = requires(const T& value, std::string_view text) {
   { T::parse(text) } -> std::same_as<T>;
   { value.name() } -> std::same_as<std::string>;
 };
-/// A choice flag whose unset value stands for a rule (resolve_defaults).
+/// A choice flag whose unset value stands for a rule (resolve()).
 template <class T>
 inline constexpr bool is_optional_choice = false;
 template <ChoiceValue C>
@@ -54,14 +56,32 @@ enum class Acts {
 };
 
 /// Whether a flag that acts `where` acts in `p`.
-bool acts(Acts where, const Params& p);
+bool acts(Acts where, const ResolvedParams& p);
 
 /// Why a flag that acts `where` does nothing in `p` (acts(where, p) is false), as a user reads
 /// it ("with --rahA 0"), and what to do instead.
-std::pair<std::string, std::string> idle_because(Acts where, const Params& p);
+std::pair<std::string, std::string> idle_because(Acts where, const ResolvedParams& p);
 
-/// One run parameter: its flag (without "--"), where it lives in Params, group and help, and
-/// where it acts. The same table drives the CLI11 options, the config file and the effective
+/// The values a number flag accepts: finite, and beyond or at `lo` and `hi` where given (open
+/// or closed), with a note on why; every row's bounds are checked by check_bounds() wherever the
+/// flag is given, before validate()'s checks between flags.
+struct Bounds {
+  std::optional<double> lo, hi;
+  bool lo_open = false, hi_open = false;
+  const char* note = nullptr; ///< appended to the refusal, in parentheses
+  /// Why `v` is refused ("must be > 0", "must lie in [0, 1] (note)"), or nothing.
+  std::optional<std::string> refusal(double v) const;
+};
+/// Bounds of the table's rows: any finite number; > lo; >= lo; within [lo, hi] or [lo, hi).
+Bounds finite();
+Bounds above(double lo, const char* note = nullptr);
+Bounds at_least(double lo, const char* note = nullptr);
+Bounds within(double lo, double hi, const char* note = nullptr);
+Bounds within_below(double lo, double hi, const char* note = nullptr);
+
+/// One run parameter: its flag (without "--"), where it lives in Params, group and help,
+/// where it acts, and the values it accepts (a number flag's bounds; a choice flag's are its
+/// table's names). The same table drives the CLI11 options, the config file and the effective
 /// configuration (a flag's value where it does nothing is not part of the run), so they cannot
 /// drift apart.
 struct ParamSpec {
@@ -77,6 +97,7 @@ struct ParamSpec {
   const char* group;
   const char* help;
   Acts acts = Acts::always;
+  std::optional<Bounds> bounds = std::nullopt; ///< none: checked by validate() itself
 };
 
 /// Every evolve parameter, in the order of --help and config.toml.
@@ -85,6 +106,10 @@ const std::vector<ParamSpec>& param_specs();
 /// The value as config-file text, or nothing for an unset optional (the file then leaves the
 /// key out, which reads back as unset).
 std::optional<std::string> value_text(const Params& p, const ParamSpec& spec);
+
+/// Throws ParamError for the first flag in table order whose value lies outside its row's
+/// bounds, or a choice flag's that names none of its choices (a rule's value as given).
+void check_bounds(const Params& p);
 
 /// The rule a flag's unset value stands for, shown by --help as its default.
 const std::map<std::string, std::string>& default_rules();

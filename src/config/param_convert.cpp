@@ -45,14 +45,14 @@ HorizonSearchSettings::Schedule search_schedule(ShiftVariant v) {
 
 } // namespace
 
-EvolutionConfig mesh_config(const Params& p) {
+EvolutionConfig mesh_config(const ResolvedParams& p) {
   EvolutionConfig c;
   c.grid = grid_spec(p);
   if (p.grid == RadialGrid::boxes) {
-    c.refinement.levels = static_cast<std::size_t>(p.levels.value());
+    c.refinement.levels = static_cast<std::size_t>(p.levels());
     c.stepping.time = p.time_interp.value();
     c.stepping.subcycling = !p.no_subcycling;
-    c.stepping.taper_cells = static_cast<std::size_t>(std::lround(p.box_taper.value() * p.N));
+    c.stepping.taper_cells = static_cast<std::size_t>(std::lround(p.box_taper() * p.N));
     c.stepping.taper_min_extent = p.box_taper_from * p.M;
     c.stepping.dt_max = dt_max_of_damping(damping_rate(p));
   }
@@ -71,7 +71,7 @@ GridSpec grid_spec(const Params& p) {
   return spec;
 }
 
-EvolutionConfig evolution_config(const Params& p) {
+EvolutionConfig evolution_config(const ResolvedParams& p) {
   EvolutionConfig c = mesh_config(p);
   c.initial_data = initial_data_params(p);
   c.rhs = rhs_params(p);
@@ -81,7 +81,7 @@ EvolutionConfig evolution_config(const Params& p) {
   c.dt_profiles = p.dt_profiles;
   c.checkpoint_every = p.checkpoint_every;
   c.norms.rmin = p.norm_rmin;
-  c.norms.rmax = p.norm_rmax.value();
+  c.norms.rmax = p.norm_rmax();
   c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
   c.norms.Rmax = p.norm_Rmax * p.M;
   c.norms.Rint = p.norm_Rint * p.M;
@@ -105,18 +105,18 @@ InitialDataParams initial_data_params(const Params& p) {
   return id;
 }
 
-RhsParams rhs_params(const Params& p) {
+RhsParams rhs_params(const ResolvedParams& p) {
   RhsParams r;
   // the Eulerian volume choice is a formulation of its own (gbssn/bssn_eulerian.hpp)
   r.formulation = p.formulation == Formulation::bssn && p.gbssn_volume == Volume::eulerian
                       ? Formulation::bssn_eulerian
                       : p.formulation.value();
-  r.z4c.kappa1 = p.kappa1.value_or(kappa1_rule(p));
+  r.z4c.kappa1 = p.kappa1();
   r.z4c.kappa2 = p.kappa2;
-  r.z4c.kappa1_hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+  r.z4c.kappa1_hole = p.kappa1_hole();
   r.z4c.hole_radius = Z4cParams{}.hole_radius * p.M;
   r.z4c.lapse_adm_K = p.z4c_lapse_adm;
-  r.gauge.shift.eta = p.eta.value();
+  r.gauge.shift.eta = p.eta();
   r.gauge.shift.advective = p.advective_shift;
   r.gauge.slicing.advective = !p.non_advective_lapse;
   r.ko_sigma = p.ko_sigma;
@@ -124,9 +124,8 @@ RhsParams rhs_params(const Params& p) {
   r.horizon_shift.h = p.rah0;
   r.horizon_shift.width = p.rah_width;
   r.horizon_shift.ramp = p.rah_ramp;
-  r.horizon_shift.r_cut = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
-  if (p.rah_taper) // unset only without the horizon shift: HorizonShiftParams' default then
-    r.horizon_shift.taper = p.rah_taper->value();
+  r.horizon_shift.r_cut = p.rah_rcut();
+  r.horizon_shift.taper = p.rah_taper().value();
   r.horizon_shift.profile = p.rah_profile.value();
   r.horizon_shift.normal = p.rah_normal.value();
   r.horizon_shift.chi_smooth = p.rah_chi_smooth;

@@ -75,6 +75,6 @@ inline void require_positive(const std::string& flag, double v) {
 
 /// The grid and refinement part of the evolution's configuration of validated parameters:
 /// what make_layout() (evolution/levels.hpp) and the stepper read.
-EvolutionConfig mesh_config(const Params& p);
+EvolutionConfig mesh_config(const ResolvedParams& p);
 
 } // namespace gbssn1d

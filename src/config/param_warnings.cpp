@@ -20,11 +20,11 @@ namespace {
 
 /// Boxes: the horizon belongs on the finest box, well inside its edge; wormhole data's gauge
 /// pulse comes back from where the boxes end.
-void box_warnings(const Params& p, std::vector<std::string>& w) {
+void box_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
   // the horizon shift see the finest spacing.
-  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.N > 0) {
-    const double finest_extent = std::ldexp(p.rmax, -(*p.levels - 1));
+  if (p.grid == RadialGrid::boxes && p.levels() > 1 && p.N > 0) {
+    const double finest_extent = std::ldexp(p.rmax, -(p.levels() - 1));
     const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
     const double horizon = std::max(standard_horizon_radius * p.M, shift_on(p) ? p.rah0 : 0.0);
     if (horizon > trusted)
@@ -36,7 +36,7 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   }
   // Quadratic time interpolation loses its order at the default step (Sec. 11: six boxes,
   // h = 2 M, orders 3.49, 1.76 at cfl 0.5 against 4.37, 3.92 at 0.25)
-  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
+  if (p.grid == RadialGrid::boxes && p.levels() > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && p.cfl > 0.25)
     w.push_back(fmt::format(
         "--time-interp quadratic with --cfl {}: its fine boundaries lose their order above cfl "
@@ -50,7 +50,7 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // under refinement (docs/horizon-shift-study.md, Sec. 13, 13.1: the published stretch to
   // 0.89 M on 7 boxes converges at 4.23 over M/12-M/16 and at 1.56 over M/24-M/32, the finer
   // run's H above the coarser one's from 2.75 M; 3.92 with h_AH at every substage)
-  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1
+  if (p.grid == RadialGrid::boxes && p.levels() > 1
       && p.time_interp == mesh::TimeInterpolation::quadratic && !p.no_subcycling && shift_on(p)
       && !uses_hAH_file(p)
       && (p.ah_interval
@@ -67,24 +67,24 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
   // A taper radius given beyond every fine box: the taper acts on the boxes that reach beyond
   // it (the largest fine box ends at rmax/2), so it would taper none (the default radius, 16 M,
   // leaves the small grids of tests and short runs untapered by design: not warned about)
-  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.box_taper.value_or(0.0) > 0.0
+  if (p.grid == RadialGrid::boxes && p.levels() > 1 && p.box_taper() > 0.0
       && p.box_taper_from != Params{}.box_taper_from && !(0.5 * p.rmax > p.box_taper_from * p.M))
     w.push_back(fmt::format(
         "--box-taper-from {} (M) lies beyond every fine box (the largest ends at r = rmax/2 = "
         "{} M): --box-taper {} tapers no box; give a radius below {} to taper the boxes that "
         "reach beyond it, or --box-taper 0 to say there is no taper",
-        num(p.box_taper_from), num(0.5 * p.rmax / p.M), num(*p.box_taper),
+        num(p.box_taper_from), num(0.5 * p.rmax / p.M), num(p.box_taper()),
         num(0.5 * p.rmax / p.M)));
   // Boxes and wormhole data: without the tapered buffer the collapse's outgoing gauge pulse
   // comes back from where the boxes end, at about (1/sqrt 2 + 1) R_b, in bursts of H and M_AH
   // that fall with N (docs/horizon-shift-study.md, Sec. 7: 6e-3 in M_AH at N = 96, 7e-4 at
   // 128, 1e-4 at 200); the taper absorbs it (Sec. 6.6), so only untapered box ends are meant.
-  if (p.grid == RadialGrid::boxes && p.levels && *p.levels > 1 && p.id == InitialDataKind::wormhole
+  if (p.grid == RadialGrid::boxes && p.levels() > 1 && p.id == InitialDataKind::wormhole
       && p.N < 200) {
     const double back = 1.0 / std::sqrt(2.0) + 1.0;
-    for (int l = *p.levels - 1; l >= 1; --l) { // the box ends from the inside out
+    for (int l = p.levels() - 1; l >= 1; --l) { // the box ends from the inside out
       const double end = std::ldexp(p.rmax, -l);
-      const bool tapered = p.box_taper.value_or(0.0) > 0.0 && end > p.box_taper_from * p.M;
+      const bool tapered = p.box_taper() > 0.0 && end > p.box_taper_from * p.M;
       if (!tapered && end >= 50.0 * p.M && back * end <= p.tmax) {
         w.push_back(fmt::format(
             "wormhole data on untapered boxes with --N {} < 200: the collapse's gauge pulse "
@@ -101,15 +101,15 @@ void box_warnings(const Params& p, std::vector<std::string>& w) {
 
 /// Flags given where they do nothing (each flag's table entry says where it acts): a user who
 /// forgot --rahA, or gave --dr-inner to a uniform grid, would not otherwise learn it.
-void idle_flag_warnings(const Params& p, std::vector<std::string>& w) {
+void idle_flag_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   for (const auto& idle : idle_flags(p))
     w.push_back(idle.warning());
 }
 
 /// The radial spacing at r = M: where the horizon and the puncture's throat are resolved.
-double spacing_near_horizon(const Params& p) {
+double spacing_near_horizon(const ResolvedParams& p) {
   if (p.grid == RadialGrid::boxes)
-    return std::ldexp(p.rmax, -(p.levels.value_or(1) - 1)) / p.N;
+    return std::ldexp(p.rmax, -(p.levels() - 1)) / p.N;
   if (p.grid == RadialGrid::uniform)
     return p.rmax / p.N;
   const Grid g(RadialMap::sinh(p.rmax, p.dr_inner, sinh_reference_N), static_cast<std::size_t>(p.N),
@@ -124,7 +124,7 @@ double spacing_near_horizon(const Params& p) {
 /// shrink to 0.6 M at M/8 to M/16; H 1.5-8 times lower from M/12 otherwise).
 /// A target radius within two cells of the origin: the horizon cannot be resolved there (runs
 /// lose it, or go non-finite: tests/horizon/test_horizon_tracking.cpp).
-void small_target_warning(const Params& p, std::vector<std::string>& w) {
+void small_target_warning(const ResolvedParams& p, std::vector<std::string>& w) {
   if (!shift_on(p) || p.N <= 0)
     return;
   const double dr = spacing_near_horizon(p);
@@ -136,7 +136,7 @@ void small_target_warning(const Params& p, std::vector<std::string>& w) {
         num(p.rah0), dr / p.M));
 }
 
-void upwind_warnings(const Params& p, std::vector<std::string>& w) {
+void upwind_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   if (p.upwind != fd::Upwind::biased || p.N <= 0)
     return;
   const double dr = spacing_near_horizon(p);
@@ -161,9 +161,9 @@ constexpr double large_output_bytes = 200e6;
 
 /// The bytes a run will write, roughly: profiles.dat's blocks (one row per composite point, 19
 /// columns of 17 significant digits) and timeseries.dat's rows (16 columns).
-void output_size_warning(const Params& p, std::vector<std::string>& w) {
+void output_size_warning(const ResolvedParams& p, std::vector<std::string>& w) {
   constexpr double bytes_per_value = 21.0; // measured: 20.4 on average
-  const double levels = p.grid == RadialGrid::boxes && p.levels ? *p.levels : 1.0;
+  const double levels = p.levels();
   const double points = p.N * (1.0 + 0.5 * (levels - 1.0)); // a box's outer half per parent
   const double blocks = std::floor(p.tmax / p.dt_profiles) + 1.0, rows = p.tmax / p.dt_series;
   const double profiles = blocks * points * 19.0 * bytes_per_value;
@@ -181,15 +181,15 @@ void output_size_warning(const Params& p, std::vector<std::string>& w) {
 
 /// Horizon-shift settings that make it do less than it says: a taper radius beyond the grid, or
 /// no horizon search before the run ends.
-void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
+void horizon_shift_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   if (!shift_on(p))
     return;
-  if (p.rah_rcut && *p.rah_rcut > p.rmax)
+  if (p.rah_rcut() > p.rmax)
     w.push_back(fmt::format(
         "--rah-rcut {} lies beyond --rmax {}: beta_H is not tapered to zero before the outer "
         "boundary, whose condition assumes the Gamma-driver's shift alone (leave --rah-rcut out "
         "for its default rmax/2)",
-        num(*p.rah_rcut), num(p.rmax)));
+        num(p.rah_rcut()), num(p.rmax)));
   // --rah-variant midstep-update and box-substage change when the horizon is searched for;
   // with --rah-hAH-file nothing is searched for (--ah-every, --ah-tmin and --ah-tmax are idle
   // flags then: config/flag_table.cpp)
@@ -220,24 +220,24 @@ void horizon_shift_warnings(const Params& p, std::vector<std::string>& w) {
         num(p.ah_tmin), num(p.tmax), num(p.rahA)));
 }
 
-std::vector<std::string> warnings(const Params& p) {
+std::vector<std::string> warnings(const ResolvedParams& p) {
   std::vector<std::string> w;
   horizon_shift_warnings(p, w);
   small_target_warning(p, w);
   // docs/horizon-shift-study.md Sec. 4: with eta = 2/M the Gamma-driver never settles on
   // wormhole data (its horizon drifts outwards to 1000 M), a shrunk horizon has to be held
   // against that drift, and the runs went non-finite at 137-201 M; eta <= 1/M settled them.
-  if (shrinks_wormhole(p) && p.eta.value_or(1.0 / p.M) > 1.0 / p.M)
+  if (shrinks_wormhole(p) && p.eta() > 1.0 / p.M)
     w.push_back(fmt::format(
         "--rah0 {} shrinks the horizon of wormhole data with --eta {} > 1/M: the Gamma-driver "
         "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
         "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
-        num(p.rah0), num(p.eta.value_or(1.0 / p.M))));
+        num(p.rah0), num(p.eta())));
   // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
   // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
   // number measured there after it holds boundary reflections.
   const double speed = std::sqrt(2.0);
-  const double window = std::max(p.norm_rmax.value_or(0.0), p.norm_Rmax * p.M);
+  const double window = std::max(p.norm_rmax(), p.norm_Rmax * p.M);
   const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
   if (p.tmax > t_window && p.rmax > window)
     w.push_back(fmt::format(

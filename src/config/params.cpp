@@ -35,14 +35,30 @@ double dt_max_of_damping(double rate) {
   return rate > 0.0 ? 1.0 / rate : std::numeric_limits<double>::infinity();
 }
 
-double damping_rate(const Params& p) {
-  const double eta = p.eta.value_or(2.0 / p.M);
-  const double kappa1 =
-      z4c_on(p) ? p.kappa1.value_or(kappa1_rule(p)) * std::max(2.0, 2.0 + p.kappa2) : 0.0;
-  return std::max(eta, kappa1);
+double damping_rate(const ResolvedParams& p) {
+  const double kappa1 = z4c_on(p) ? p.kappa1() * std::max(2.0, 2.0 + p.kappa2) : 0.0;
+  return std::max(p.eta(), kappa1);
 }
 
-void resolve_defaults(Params& p) {
+namespace {
+
+/// Z4c's damping kappa1 when not given: 0.02/M, the field's value (docs/z4c-study.md: larger
+/// values, up to 5/M, gave lower H and M_AH errors on trumpet data, but grid-scale noise grows
+/// where kappa1 dr > 0.3, and no value made wormhole data's M_AH as good as BSSN's).
+double kappa1_rule(const Params& p) {
+  return 0.02 / p.M;
+}
+
+/// Z4c's damping near the hole when not given: 1/M (docs/z4c-study.md, Sec. 9: with kappa1 =
+/// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 1/M inside ~6 M, 0.3 times
+/// BSSN's and H 0.08; 2/M did as well on long runs, but on coarse boxes the momentum constraint
+/// lost order in a convergence test: perhaps the cell-width cap, different in each member).
+double kappa1_hole_rule(const Params& p) {
+  return 1.0 / p.M;
+}
+
+/// The rules' values filled into the flags where config.toml records them.
+void fill_rule_values(Params& p) {
   if (p.grid == RadialGrid::boxes && !p.levels)
     p.levels = levels_rule(p.rmax, p.M);
   // M and rmax are validated afterwards: a bad M gives a non-finite eta
@@ -88,6 +104,22 @@ void resolve_defaults(Params& p) {
       p.rah_width = hs.width;
     }
   }
+}
+
+} // namespace
+
+ResolvedParams resolve(Params p) {
+  fill_rule_values(p);
+  ResolvedParams r(p);
+  r.levels_ = p.levels.value_or(1);
+  r.box_taper_ = *p.box_taper;
+  r.eta_ = *p.eta;
+  r.kappa1_ = p.kappa1.value_or(kappa1_rule(p));
+  r.kappa1_hole_ = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+  r.norm_rmax_ = *p.norm_rmax;
+  r.rah_rcut_ = p.rah_rcut.value_or(std::numeric_limits<double>::infinity());
+  r.rah_taper_ = p.rah_taper.value_or(TaperChoice(HorizonShiftParams{}.taper));
+  return r;
 }
 
 } // namespace gbssn1d

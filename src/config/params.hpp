@@ -29,14 +29,14 @@ struct Params {
   int N = static_cast<int>(evolution_defaults().grid.N);
   double rmax = evolution_defaults().grid.rmax;
   GridChoice grid = RadialGrid::sinh; ///< uniform | sinh | boxes
-  /// --grid boxes: refinement levels; unset: levels_rule (resolve_defaults)
+  /// --grid boxes: refinement levels; unset: levels_rule (resolve())
   std::optional<int> levels;
   /// boxes: rk-stages | dense | quadratic
   TimeInterpChoice time_interp = mesh::TimeInterpolation::rk_stages;
   bool no_subcycling = false; ///< boxes: every level steps with the finest dt
   /// boxes: the fraction of a box's cells (outermost) blended towards its parent at every
   /// synchronisation, 0 ... 0.5 (mesh::StepperOptions::taper_cells = round(box_taper N));
-  /// unset: 0.5 on two or more boxes, 0 on a single grid or one box (resolve_defaults;
+  /// unset: 0.5 on two or more boxes, 0 on a single grid or one box (resolve();
   /// docs/horizon-shift-study.md Sec. 6.6)
   std::optional<double> box_taper;
   /// boxes: only boxes reaching beyond this radius / M are tapered
@@ -51,7 +51,7 @@ struct Params {
   // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/length) and kappa2
   FormulationChoice formulation = Formulation::bssn; ///< bssn | z4c
   VolumeChoice gbssn_volume = Volume::lagrangian;    ///< BSSN's: lagrangian | eulerian
-  /// unset: 0.02/M with Z4c (resolve_defaults, kappa1_rule); left unset with BSSN
+  /// unset: 0.02/M with Z4c (resolve(), kappa1_rule); left unset with BSSN
   std::optional<double> kappa1;
   double kappa2 = evolution_defaults().rhs.z4c.kappa2;
   /// Z4c: kappa1 near the hole (areal radius below ~6 M, where the cell resolves it); unset:
@@ -59,7 +59,7 @@ struct Params {
   std::optional<double> kappa1_hole;
   bool z4c_lapse_adm = false; ///< Z4c: the lapse driven by the ADM K instead of K-hat (study)
   // gauge
-  /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve_defaults)
+  /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve())
   std::optional<double> eta;
   bool advective_shift = false;
   bool non_advective_lapse = false;
@@ -80,7 +80,7 @@ struct Params {
   double checkpoint_every = evolution_defaults().checkpoint_every;
   // diagnostics
   double norm_rmin = evolution_defaults().norms.rmin;
-  std::optional<double> norm_rmax; ///< unset: min(10 M, rmax / 2) (resolve_defaults)
+  std::optional<double> norm_rmax; ///< unset: min(10 M, rmax / 2) (resolve())
   double norm_Rmin = 2.5;  ///< areal-radius window of the *_R norms, in M (the same place in
   double norm_Rmax = 12.0; ///< every gauge): norm-Rmin M <= R <= norm-Rmax M
   double norm_Rint = 1.8;  ///< interior window: R <= norm-Rint M inside the horizon
@@ -93,10 +93,10 @@ struct Params {
       evolution_defaults().rhs.horizon_shift.width; ///< w in f(r) = (r/w) / (1 + (r/w)^2) (M)
   /// T of the strength ramp A (1 - exp(-(t/T)^2)) (M)
   double rah_ramp = evolution_defaults().rhs.horizon_shift.ramp;
-  /// beta_H vanishes by rah_rcut (see rah_taper); unset: rmax/2 (resolve_defaults, with the
+  /// beta_H vanishes by rah_rcut (see rah_taper); unset: rmax/2 (resolve(), with the
   /// horizon shift on)
   std::optional<double> rah_rcut;
-  /// quartic | step (HorizonShiftParams::Taper); unset: quartic when rahA != 0 (resolve_defaults),
+  /// quartic | step (HorizonShiftParams::Taper); unset: quartic when rahA != 0 (resolve()),
   /// so that config.toml records it and a run made with another taper is told apart
   std::optional<TaperChoice> rah_taper;
   /// auto | rational | rational3 | gauss | gauss3
@@ -167,28 +167,6 @@ inline bool z4c_on(const Params& p) {
   return p.formulation == Formulation::z4c;
 }
 
-/// Z4c's damping kappa1 when not given: 0.02/M, the field's value (docs/z4c-study.md: larger
-/// values, up to 5/M, gave lower H and M_AH errors on trumpet data, but grid-scale noise grows
-/// where kappa1 dr > 0.3, and no value made wormhole data's M_AH as good as BSSN's).
-inline double kappa1_rule(const Params& p) {
-  return 0.02 / p.M;
-}
-
-/// Z4c's damping near the hole when not given: 1/M (docs/z4c-study.md, Sec. 9: with kappa1 =
-/// 0.02/M alone the horizon mass drifts 15 times BSSN's; raised to 1/M inside ~6 M, 0.3 times
-/// BSSN's and H 0.08; 2/M did as well on long runs, but on coarse boxes the momentum constraint
-/// lost order in a convergence test: perhaps the cell-width cap, different in each member).
-inline double kappa1_hole_rule(const Params& p) {
-  return 1.0 / p.M;
-}
-
-/// Z4c with its constraint damping on somewhere (kappa1 > 0, or kappa1 raised near the hole).
-inline bool damped_z4c(const Params& p) {
-  return z4c_on(p)
-         && (p.kappa1.value_or(kappa1_rule(p)) > 0.0
-             || p.kappa1_hole.value_or(kappa1_hole_rule(p)) > 0.0);
-}
-
 /// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.
 inline bool shift_on(const Params& p) {
   return p.rahA != 0.0;
@@ -210,24 +188,64 @@ bool shrinks_wormhole(const Params& p);
 /// 1 + floor(log2(rmax / 4M)), at least 2 (rmax 128: 6 levels; rmax 1024: 9).
 int levels_rule(double rmax, double M);
 
-/// Fill the defaults that depend on other parameters (eta = 2/M, norm-rmax, levels of boxes);
-/// after it, eta and norm_rmax hold values, and levels does for --grid boxes. Throws
-/// ParamError for a value the rule it resolves would drop (--rah-width with --rah-profile
-/// auto and the shift on).
-void resolve_defaults(Params& p);
+/// A run's parameters with every rule default resolved, once (resolve()): the type that
+/// validate(), warnings(), the same-run key and the conversions into the evolution's
+/// configuration take. Its Params are the flags as config.toml records them (a rule's value
+/// filled in where the rule applies, e.g. eta always, kappa1 with Z4c only); the values the
+/// rules give are read through the accessors below, numbers on every grid and formulation.
+/// They hide the optional flags of the same names, so that a resolved parameter is never read
+/// as unset nor its rule applied a second time. Change a flag on a Params and resolve again.
+class ResolvedParams : public Params {
+public:
+  /// The flags as config.toml records them.
+  const Params& flags() const { return *this; }
+  int levels() const { return levels_; }          ///< 1 on a single grid
+  double box_taper() const { return box_taper_; } ///< 0 on a single grid and one box
+  double eta() const { return eta_; }
+  double kappa1() const { return kappa1_; }           ///< with BSSN too, where nothing reads it
+  double kappa1_hole() const { return kappa1_hole_; } ///< likewise
+  double norm_rmax() const { return norm_rmax_; }
+  /// beta_H vanishes by this radius: rmax/2 with the shift on, infinity without (unless given)
+  double rah_rcut() const { return rah_rcut_; }
+  TaperChoice rah_taper() const { return rah_taper_; }
+
+private:
+  friend ResolvedParams resolve(Params p);
+  explicit ResolvedParams(const Params& flags) : Params(flags) {}
+  int levels_ = 1;
+  double box_taper_ = 0.0;
+  double eta_ = 0.0;
+  double kappa1_ = 0.0;
+  double kappa1_hole_ = 0.0;
+  double norm_rmax_ = 0.0;
+  double rah_rcut_ = 0.0;
+  TaperChoice rah_taper_ = Taper::quartic;
+};
+
+/// The parameters with the defaults that depend on other parameters resolved (eta = 2/M,
+/// Z4c's kappa1 and kappa1-hole, norm-rmax, the boxes' levels and taper, the shift's cut-off,
+/// taper and auto profile): the rules' values, each computed here only. Throws ParamError for
+/// a value the rule it resolves would drop (--rah-width with --rah-profile auto and the shift
+/// on). Validates nothing else (validate()).
+ResolvedParams resolve(Params p);
+
+/// Z4c with its constraint damping on somewhere (kappa1 > 0, or kappa1 raised near the hole).
+inline bool damped_z4c(const ResolvedParams& p) {
+  return z4c_on(p) && (p.kappa1() > 0.0 || p.kappa1_hole() > 0.0);
+}
 
 /// Throws ParamError naming the first bad parameter. Reads nothing from disk, writes nothing.
-void validate(const Params& p);
+void validate(const ResolvedParams& p);
 
 /// Valid but known-bad combinations, each a sentence for stderr (the run goes ahead).
-std::vector<std::string> warnings(const Params& p);
+std::vector<std::string> warnings(const ResolvedParams& p);
 
-// Conversions of the validated (and resolved) parameters into the typed pieces the code uses.
+// Conversions of the validated parameters into the typed pieces the code uses.
 /// The evolution's configuration; may read --rah-hAH-file (ParamError if it cannot).
-EvolutionConfig evolution_config(const Params& p);
+EvolutionConfig evolution_config(const ResolvedParams& p);
 GridSpec grid_spec(const Params& p);
 InitialDataParams initial_data_params(const Params& p);
-RhsParams rhs_params(const Params& p);
+RhsParams rhs_params(const ResolvedParams& p);
 
 /// h_AH(t) read from the columns `t` and `r_ah` of a gbssn1d output file (horizon.dat or
 /// timeseries.dat), as a cubic B-spline in t (C2, so that RK4 sees a smooth function). Throws
@@ -243,8 +261,8 @@ double dt_max_of_damping(double rate);
 
 /// The fastest damping of the run's equations, 1/length: the Gamma-driver's eta, and with Z4c
 /// the constraint damping's alpha kappa1 (2 + kappa2) of Theta and 2 alpha kappa1 of Delta^r
-/// (alpha <= 1; equations document Sec. 17). Before resolve_defaults: eta's rule.
-double damping_rate(const Params& p);
+/// (alpha <= 1; equations document Sec. 17).
+double damping_rate(const ResolvedParams& p);
 
 /// How often h_AH is searched for: at every RK substage (0), or every n >= 1 full steps.
 long ah_every_steps(const Params& p);

@@ -13,14 +13,13 @@ namespace gbssn1d {
 
 namespace {
 
-/// `p` with the value of `spec` as an unset flag would resolve it (resolve_defaults, given
-/// the other flags of `p`).
-Params with_default(const Params& p, const ParamSpec& spec) {
+/// `p` with the value of `spec` as an unset flag would resolve it (resolve(), given the other
+/// flags of `p`).
+ResolvedParams with_default(const Params& p, const ParamSpec& spec) {
   Params q = p;
   const Params unset;
   std::visit([&](auto member) { q.*member = unset.*member; }, spec.member);
-  resolve_defaults(q);
-  return q;
+  return resolve(q);
 }
 
 /// A value as a user gives it on the command line ("0.6", "gauss", a path; "" for a switch).
@@ -47,7 +46,7 @@ std::string shown(const Params& p, const ParamSpec& spec) {
 
 } // namespace
 
-std::vector<IdleFlags> idle_flags(const Params& p) {
+std::vector<IdleFlags> idle_flags(const ResolvedParams& p) {
   std::vector<IdleFlags> groups;
   for (const auto& spec : param_specs()) {
     if (acts(spec.acts, p) || value_text(p, spec) == value_text(with_default(p, spec), spec))
@@ -101,7 +100,7 @@ std::vector<std::string> rule_valued_keys(const Params& p) {
       std::visit([&](auto member) { q.*member = unset.*member; }, spec->member);
     }
     try {
-      resolve_defaults(q);
+      q = resolve(q).flags();
     } catch (const ParamError&) { // (not a rule's value: the rule refuses the others)
       continue;
     }
@@ -130,17 +129,17 @@ std::string IdleFlags::warning() const {
                      given.size() == 1 ? "does" : "do", because, instead);
 }
 
-Params effective(const Params& p) {
-  Params e = p;
+Params effective(const ResolvedParams& p) {
+  Params e = p.flags();
   for (const auto& spec : param_specs())
     if (!acts(spec.acts, p))
-      e = with_default(e, spec);
+      e = with_default(e, spec).flags();
   e.out.clear();
   e.force = false;
   return e;
 }
 
-std::string run_key(const Params& p) {
+std::string run_key(const ResolvedParams& p) {
   return config_text(effective(p));
 }
 

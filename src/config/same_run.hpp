@@ -24,17 +24,17 @@ struct IdleFlags {
   /// --rahA 0: ..."
   std::string warning() const;
 };
-std::vector<IdleFlags> idle_flags(const Params& p);
+std::vector<IdleFlags> idle_flags(const ResolvedParams& p);
 
-/// The effective configuration of resolved parameters (resolve_defaults): `p` with every flag
+/// The effective configuration of resolved parameters: `p` with every flag
 /// that does nothing in it at the value an unset flag resolves to, and without --out and
 /// --force. It is what decides a run's outputs.
-Params effective(const Params& p);
+Params effective(const ResolvedParams& p);
 
 /// The one notion of "the same run": two resolved parameter sets are the same run (the same
 /// outputs but for the folder's name) exactly when their keys are equal. config_text() of the
 /// effective configuration.
-std::string run_key(const Params& p);
+std::string run_key(const ResolvedParams& p);
 
 /// The keys of resolved parameters whose values are what their rules give for the others (eta
 /// 2/M, Z4c's kappa1 0.02/M and kappa1-hole 1/M, norm-rmax, levels, box-taper, rah-rcut,

@@ -18,17 +18,16 @@ namespace gbssn1d {
 namespace {
 
 /// The grid itself: its layout, with cells finite, increasing and resolvable.
-mesh::MeshLayout checked_layout(const Params& p) {
+mesh::MeshLayout checked_layout(const ResolvedParams& p) {
   // The grid itself: a map whose cells are not finite, increasing and resolvable in double
   // precision is refused here, before anything is written, naming the flag that shapes it (the
   // sinh grid's innermost width, the uniform grid's N).
   const std::string grid_flag = p.grid == RadialGrid::sinh    ? "--dr-inner"
                                 : p.grid == RadialGrid::boxes ? "--levels"
                                                               : "--N";
-  const std::string grid_value = p.grid == RadialGrid::sinh ? num(p.dr_inner)
-                                 : p.grid == RadialGrid::boxes
-                                     ? std::to_string(p.levels.value_or(1))
-                                     : std::to_string(p.N);
+  const std::string grid_value = p.grid == RadialGrid::sinh    ? num(p.dr_inner)
+                                 : p.grid == RadialGrid::boxes ? std::to_string(p.levels())
+                                                               : std::to_string(p.N);
   const mesh::MeshLayout layout = [&] {
     try {
       return make_layout(mesh_config(p));
@@ -59,11 +58,11 @@ mesh::MeshLayout checked_layout(const Params& p) {
 
 /// Z4c's constraint damping against the finest step dt_finest: alpha kappa1 (2 + kappa2) at
 /// most (alpha <= 1), and the damping near the hole.
-void validate_damping_step(const Params& p, double dt_finest) {
-  const double eta = p.eta.value();
+void validate_damping_step(const ResolvedParams& p, double dt_finest) {
+  const double eta = p.eta();
   // Z4c's constraint damping, alpha kappa1 (2 + kappa2) at most (alpha <= 1), likewise; the flag
   // named is the one that makes it too fast (kappa2 where kappa1 alone, at 2 kappa1, would not)
-  const double kappa1_value = p.kappa1.value_or(kappa1_rule(p));
+  const double kappa1_value = p.kappa1();
   const bool kappa2_decides = p.kappa2 > 0.0 && 2.0 * kappa1_value * dt_finest <= eta_dt_max;
   if (const double rate = damping_rate(p); rate > eta && rate * dt_finest > eta_dt_max)
     throw ParamError(kappa2_decides ? "--kappa2" : "--kappa1",
@@ -76,7 +75,7 @@ void validate_damping_step(const Params& p, double dt_finest) {
   // step is at most cfl dr (a single grid: the finest step everywhere), so that its rate times a
   // step stays below max(2, 2 + kappa2) min(kappa1-hole dt, 0.2 cfl) (boxes: 0.2 cfl)
   if (z4c_on(p)) {
-    const double hole = p.kappa1_hole.value_or(kappa1_hole_rule(p));
+    const double hole = p.kappa1_hole();
     const double resolved = Z4cParams::kappa1_dr_max * p.cfl;
     const double per_step =
         std::max(2.0, 2.0 + p.kappa2)
@@ -96,8 +95,8 @@ void validate_damping_step(const Params& p, double dt_finest) {
 
 /// The grid and the steps it takes: the grid (checked_layout), the horizon finder's tolerance,
 /// the step's limits (checkpoints, step and row counts, the Gamma-driver damping, Z4c's).
-void validate_grid_and_steps(const Params& p) {
-  const double eta = p.eta.value();
+void validate_grid_and_steps(const ResolvedParams& p) {
+  const double eta = p.eta();
   const mesh::MeshLayout layout = checked_layout(p);
   const Grid& grid = layout.grid(layout.levels() - 1); // the finest
   if (p.ah_tol > ah_tol_over_spacing_max * grid.min_spacing())

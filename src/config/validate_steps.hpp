@@ -8,6 +8,6 @@
 namespace gbssn1d {
 
 /// Throws ParamError naming the flag whose value gives no usable grid or step.
-void validate_grid_and_steps(const Params& p);
+void validate_grid_and_steps(const ResolvedParams& p);
 
 } // namespace gbssn1d

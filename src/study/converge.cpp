@@ -71,7 +71,7 @@ void warn_of_unlisted_members(const std::string& out, const std::vector<int>& N)
 
 /// Where a member's round-off floor is estimated: its composite cells, the coordinate window,
 /// the points of the areal window on its initial data (outer sheet) and the sampled radii.
-MemberCells member_cells(const Params& p, const std::vector<double>& radii) {
+MemberCells member_cells(const ResolvedParams& p, const std::vector<double>& radii) {
   const Simulation sim(evolution_config(p));
   const Grid& g = sim.composite().grid();
   const mesh::MeshLayout& layout = sim.layout();
@@ -103,7 +103,7 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   const Grid coarse = mesh::Composite(coarse_layout).grid();
   for (std::size_t i = coarse.first_interior(); i < coarse.end_interior(); ++i)
     if (coarse.r()[i] >= s.members.front().norm_rmin
-        && coarse.r()[i] <= *s.members.front().norm_rmax)
+        && coarse.r()[i] <= s.members.front().norm_rmax())
       s.radii.push_back(coarse.r()[i]);
   if (s.radii.empty())
     throw ParamError("--norm-rmin", fmt::format("{}", s.members.front().norm_rmin),
@@ -127,7 +127,7 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
   for (double r : s.radii)
     s.samples_key += fmt::format(" {:.17g}", r);
   s.records.resize(s.members.size());
-  for (const Params& p : s.members)
+  for (const ResolvedParams& p : s.members)
     s.cells.push_back(member_cells(p, s.radii));
   return s;
 }
@@ -138,15 +138,15 @@ ConvergeStudy plan_study(const Params& base, const ConvergeOptions& options) {
 /// (docs/horizon-shift-study.md, Sec. 6.7); held every n steps, each member holds it for its own
 /// time (Sec. 13). With --ah-interval T every member holds it for T, unless T is no whole number
 /// of some member's step. Empty when the steps agree or do not matter.
-std::string hierarchy_step_warning(const std::vector<Params>& members) {
-  const Params& p = members.front();
-  if (p.grid != RadialGrid::boxes || !p.levels || *p.levels < 2 || p.no_subcycling || !shift_on(p)
+std::string hierarchy_step_warning(const std::vector<ResolvedParams>& members) {
+  const ResolvedParams& p = members.front();
+  if (p.grid != RadialGrid::boxes || p.levels() < 2 || p.no_subcycling || !shift_on(p)
       || uses_hAH_file(p))
     return {};
   std::vector<std::string> steps, uneven;
   bool differ = false;
   double first = 0.0;
-  for (const Params& m : members) {
+  for (const ResolvedParams& m : members) {
     const EvolutionConfig c = evolution_config(m);
     const double dt = mesh::hierarchy_dt(make_layout(c), c.stepping);
     if (steps.empty())
@@ -189,7 +189,7 @@ std::string hierarchy_step_warning(const std::vector<Params>& members) {
 
 } // namespace
 
-std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options) {
+std::vector<ResolvedParams> converge_members(const Params& base, const ConvergeOptions& options) {
   if (options.N.size() < 3)
     throw ParamError("--N", fmt::format("{}", fmt::join(options.N, ",")),
                      "needs at least three resolutions");
@@ -206,15 +206,14 @@ std::vector<Params> converge_members(const Params& base, const ConvergeOptions& 
                        fmt::format("is not evolved with --formulation {} (z4c evolves it)",
                                    base.formulation.name()));
   }
-  std::vector<Params> members;
+  std::vector<ResolvedParams> members;
   for (int n : options.N) {
     Params p = base;
     p.N = n; // the map does not depend on N, so this is a refinement on either grid
     p.out = (fs::path(options.out) / fmt::format("N{}", n)).string();
     p.force = true;
-    resolve_defaults(p);
-    validate(p);
-    members.push_back(p);
+    members.push_back(resolve(p));
+    validate(members.back());
   }
   return members;
 }

@@ -25,7 +25,7 @@ struct ConvergeOptions {
 
 /// The members' parameters: `base` at each N (the grid's map does not depend on N, so every
 /// member lives on the same map). Validates all.
-std::vector<Params> converge_members(const Params& base, const ConvergeOptions& options);
+std::vector<ResolvedParams> converge_members(const Params& base, const ConvergeOptions& options);
 
 /// Whether the folder `out` holds this very study (an interrupted one, or one to extend): its
 /// config.toml is a converge study's (it has the "# converge: N = ..." line only converge

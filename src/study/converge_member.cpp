@@ -130,7 +130,7 @@ bool take_completed_records(const Params& p, const std::string& samples_key,
 /// Member p evolved (or continued from its checkpoint) into its folder, recording into `rec`,
 /// with the study's fields, radii and samples key; the records kept as completed at its end.
 /// Throws what stopped it.
-void evolve_member(const ConvergeStudy& study, const Params& p,
+void evolve_member(const ConvergeStudy& study, const ResolvedParams& p,
                    const std::optional<std::string>& hAH, const std::string& config,
                    const std::string& member_config, MemberRecord& rec, std::mutex& log_mutex) {
   const auto start = std::chrono::steady_clock::now();
@@ -139,7 +139,7 @@ void evolve_member(const ConvergeStudy& study, const Params& p,
     say("gbssn1d converge: member N = {} started\n", p.N);
   }
   const fs::path copy = fs::path(p.out) / std::string(prescribed_horizon_copy);
-  Params from_copy = p;
+  Params from_copy = p.flags();
   if (hAH) {
     write_file_atomically(copy, *hAH);
     from_copy.rah_hAH_file = copy.string();
@@ -147,7 +147,7 @@ void evolve_member(const ConvergeStudy& study, const Params& p,
     std::error_code ignored;
     fs::remove(copy, ignored);
   }
-  Simulation sim(evolution_config(from_copy));
+  Simulation sim(evolution_config(resolve(from_copy)));
   // as evolve writes it: `gbssn1d resume` continues the member alone from its checkpoint
   write_file_atomically(fs::path(p.out) / "config.toml",
                         header_text("") + config + rule_values_line(p));
@@ -196,7 +196,7 @@ void evolve_member(const ConvergeStudy& study, const Params& p,
 
 void run_converge_member(ConvergeStudy& study, std::size_t k, const std::optional<std::string>& hAH,
                          std::mutex& log_mutex) {
-  const Params& p = study.members[k]; // its folder locked by the study (run_converge)
+  const ResolvedParams& p = study.members[k]; // its folder locked by the study (run_converge)
   MemberRecord& rec = study.records[k];
   if (stop_signal() != 0) { // interrupted: start no new member (a rerun continues the study)
     rec.error = "not started: the study was interrupted";

@@ -38,7 +38,7 @@ struct MemberCells {
 struct ConvergeStudy {
   const Params& base;
   const ConvergeOptions& options;
-  std::vector<Params> members;
+  std::vector<ResolvedParams> members;
   std::vector<double> radii;
   std::vector<Var> fields;
   std::string samples_key; ///< saved samples are reused only for the same key

@@ -136,9 +136,7 @@ void check_some_member_valid(const SweepOptions& options, const std::vector<Swee
   for (const auto& m : members) {
     try {
       std::vector<std::string> args(m.args.begin() + 1, m.args.end());
-      Params p = parse_evolve_args(args);
-      resolve_defaults(p);
-      validate(p);
+      validate(resolve(parse_evolve_args(args)));
       any_valid = true;
       break;
     } catch (const ParamError& e) {

@@ -38,9 +38,9 @@ std::vector<std::string> split(const std::string& s, char sep) {
 /// member that does not parse, its arguments (and no end time).
 void set_inputs(SweepMember& m) {
   try {
-    Params p = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // without --out, --force
-    p.out.clear();
-    resolve_defaults(p);
+    Params given = parse_evolve_args({m.args.begin() + 1, m.args.end() - 2}); // no --out, --force
+    given.out.clear();
+    const ResolvedParams p = resolve(given);
     m.inputs = config_text(p) + input_files_text(p);
     m.run_key = run_key(p);
     m.idle.clear();
@@ -212,9 +212,7 @@ std::vector<SameRun> same_runs(const std::vector<SweepMember>& members) {
 std::optional<std::string> invalid_reason(const SweepMember& m) {
   try {
     std::vector<std::string> args(m.args.begin() + 1, m.args.end());
-    Params p = parse_evolve_args(args);
-    resolve_defaults(p);
-    validate(p);
+    validate(resolve(parse_evolve_args(args)));
     return std::nullopt;
   } catch (const std::exception& e) {
     return std::string(e.what());

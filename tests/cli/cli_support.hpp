@@ -34,10 +34,8 @@ inline std::vector<std::string> command_words(const std::string& text) {
 }
 
 /// The resolved parameters of an evolve command line (split at white space, no quoting).
-inline Params resolved_evolve(const std::string& args) {
-  Params p = parse_evolve_args(command_words(args));
-  resolve_defaults(p);
-  return p;
+inline ResolvedParams resolved_evolve(const std::string& args) {
+  return resolve(parse_evolve_args(command_words(args)));
 }
 
 /// The executable run with `args` (a shell command line after the program's name).

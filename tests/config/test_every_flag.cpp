@@ -239,7 +239,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
     INFO("--" << row.flag << " " << row.value << " on: " << row.base);
     const auto given = command_words(row.base);
     CHECK(std::find(given.begin(), given.end(), "--" + row.flag) == given.end());
-    const Params base = resolved_evolve(row.base), with = resolved_evolve(row.with());
+    const ResolvedParams base = resolved_evolve(row.base), with = resolved_evolve(row.with());
     CHECK(acts(spec->acts, with));
     CHECK(run_key(with) != run_key(base));
     CHECK(run_of(row.with()).numbers != run_of(row.base).numbers);
@@ -290,10 +290,10 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
   }
   {
     INFO("--out and --force: the same run, the same numbers");
-    Params elsewhere = resolved_evolve(trumpet);
+    Params elsewhere = resolved_evolve(trumpet).flags();
     elsewhere.out = "elsewhere";
     elsewhere.force = true;
-    CHECK(run_key(elsewhere) == run_key(resolved_evolve(trumpet)));
+    CHECK(run_key(resolve(elsewhere)) == run_key(resolved_evolve(trumpet)));
     const fs::path full = scratch("every_flag_force", true);
     std::ofstream(full / "notes.txt") << "kept\n";
     const auto r = run("evolve " + trumpet + " --force --out " + full.string());
@@ -331,7 +331,7 @@ struct Steps {
   double dt, dt_finest, min_spacing;
 };
 Steps steps_of(const std::string& args) {
-  const Params p = resolved_evolve(args);
+  const ResolvedParams p = resolved_evolve(args);
   const EvolutionConfig config = mesh_config(p);
   const mesh::MeshLayout layout = make_layout(config);
   const Grid& finest = layout.grid(layout.levels() - 1);
@@ -392,19 +392,21 @@ std::set<std::string> flags_validate_names() {
   return flags;
 }
 
-/// Flags validate.cpp names that have no numeric limit of their own, and why.
+/// The flags whose row of the flag table carries bounds (check_bounds()).
+std::set<std::string> flags_with_table_bounds() {
+  std::set<std::string> flags;
+  for (const auto& spec : param_specs())
+    if (spec.bounds)
+      flags.insert("--" + std::string(spec.name));
+  return flags;
+}
+
+/// Flags validate.cpp names that have no numeric limit of their own, and why (a choice flag's
+/// names are its row's: tests/config/test_flag_bounds.cpp).
 const std::map<std::string, std::string>& no_numeric_limit() {
   static const std::map<std::string, std::string> flags{
-      {"--grid", "a choice of names (tests/cli/hostile_inputs.txt)"},
-      {"--id", "a choice of names"},
-      {"--lapse0", "a choice of names"},
       {"--time-interp", "a choice, refused without two or more boxes: no number"},
       {"--no-subcycling", "a switch, refused without two or more boxes: no number"},
-      {"--rah-profile", "a choice of names"},
-      {"--rah-normal", "a choice of names"},
-      {"--rah-taper", "a choice of names"},
-      {"--driver-advection", "a choice of names"},
-      {"--delta-advection", "a choice of names"},
       {"--upwind", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--formulation", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--gbssn-volume", "a choice, refused as eulerian with --formulation z4c: no number"},
@@ -432,15 +434,17 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
       {"--N", "--id 1log-trumpet --grid boxes --rmax 16 --levels 3", "N", "33", "34",
        "must be even with --grid boxes"},
       {"--levels", "--id 1log-trumpet --grid boxes --N 16 --rmax 16", "levels", "0", "1",
-       fmt::format("must lie in 1 ... {}", levels_max)},
+       fmt::format("must lie in [1, {}]", levels_max)},
       // (the finest of 30 boxes of 16 cells is 16/2^29/16 = 1.9e-9, above 1e-10 x rmax)
       {"--levels", "--id 1log-trumpet --grid boxes --N 16 --rmax 16", "levels",
        std::to_string(levels_max + 1), std::to_string(levels_max),
-       fmt::format("must lie in 1 ... {}", levels_max)},
-      {"--box-taper", boxes3, "box-taper", text(-tiny), "0", "must lie in 0 ... 0.5"},
-      {"--box-taper", boxes3, "box-taper", text(up(0.5)), "0.5", "must lie in 0 ... 0.5"},
+       fmt::format("must lie in [1, {}]", levels_max)},
+      {"--box-taper", boxes3, "box-taper", text(-tiny), "0", "must lie in [0, 0.5]"},
+      {"--box-taper", boxes3, "box-taper", text(up(0.5)), "0.5", "must lie in [0, 0.5]"},
       {"--box-taper-from", boxes3, "box-taper-from", text(-tiny), "0",
-       "must be a finite radius >= 0"},
+       "must be >= 0 (a radius in units of M)"},
+      {"--dr-inner", sinh, "dr-inner", "0", "", "must be > 0",
+       "the smallest positive width gives no usable grid: the grid's own row below"},
       {"--fd-order", uniform, "fd-order", "10", "8", "must be 2, 4, 6 or 8"},
       {"--fd-order", boxes3, "fd-order", "8", "6", "must be 2, 4 or 6 with --grid boxes"},
       // lengths in units of M: rmax / M at most rmax_over_M_max (no damping: eta dt would
@@ -452,6 +456,8 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
        "gives --rmax / M"},
       {"--M", "--id 1log-trumpet --grid uniform --N 32 --rmax 1 --eta 0 --norm-rmin 0", "M", "0",
        text(1.0 / rmax_over_M_max * (1 + 1e-9)), "must be > 0"},
+      {"--rmax", "--id 1log-trumpet --grid uniform --N 32", "rmax", "0", "", "must be > 0",
+       "a radius just above 0 lies inside the black hole: the row below"},
       {"--rmax", "--id 1log-trumpet --grid uniform --N 32", "rmax", text(down(4.0)), "4",
        "the outer boundary must lie outside the black hole"},
       {"--rmax", "--id 1log-trumpet --grid sinh --N 32 --dr-inner 0.04", "rmax",
@@ -547,9 +553,8 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
     bounds.push_back({"--kappa2", z4c_uniform + " --kappa1-hole 0 --kappa1 1", "kappa2",
                       text(kappa2 * (1 + 1e-9) - 2.0), text(kappa2 * (1 - 1e-9) - 2.0),
                       "RK4 limit of the constraint damping"});
-    const Params p = resolved_evolve(z4c_uniform);
-    const double near = std::min(Z4cParams::kappa1_dr_max * p.cfl,
-                                 p.kappa1_hole.value_or(kappa1_hole_rule(p)) * s.dt_finest);
+    const ResolvedParams p = resolved_evolve(z4c_uniform);
+    const double near = std::min(Z4cParams::kappa1_dr_max * p.cfl, p.kappa1_hole() * s.dt_finest);
     bounds.push_back({"--kappa2", z4c_uniform, "kappa2", text(eta_dt_max / near * (1 + 1e-9) - 2.0),
                       text(eta_dt_max / near * (1 - 1e-9) - 2.0), "the damping near the hole"});
     // (that refusal names --kappa1-hole where kappa2 <= 0: unreachable, the rate per step is
@@ -598,8 +603,12 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
   for (const auto& b : bounds)
     check_bound(b);
 
-  // every flag validate.cpp names has a bound row, or no numeric limit (and why)
-  const std::set<std::string> named = flags_validate_names();
+  // every flag validate.cpp names or the flag table bounds has a bound row, or no numeric limit
+  // (and why)
+  std::set<std::string> named = flags_validate_names();
+  const std::set<std::string> table_bounds = flags_with_table_bounds();
+  CHECK(table_bounds.size() > 25);
+  named.insert(table_bounds.begin(), table_bounds.end());
   CHECK(named.size() > 40);
   std::set<std::string> with_row;
   for (const auto& b : bounds) {
@@ -614,6 +623,19 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
   for (const auto& [flag, why] : no_numeric_limit()) {
     INFO(flag << " (" << why << ") is not named in validate.cpp");
     CHECK(named.count(flag) == 1);
+  }
+  // a table row's bounds, where they bound (not only finiteness, which the number reader
+  // ensures on the command line), each have a row of their own refusal's form
+  for (const auto& spec : param_specs()) {
+    if (!spec.bounds || (!spec.bounds->lo && !spec.bounds->hi))
+      continue;
+    const std::string flag = "--" + std::string(spec.name);
+    INFO(flag << ": its table bounds have no row here");
+    CHECK(std::any_of(bounds.begin(), bounds.end(), [&](const Bound& b) {
+      return b.flag == flag
+             && (b.why.rfind("must be > ", 0) == 0 || b.why.rfind("must be >= ", 0) == 0
+                 || b.why.rfind("must lie in [", 0) == 0);
+    }));
   }
 }
 

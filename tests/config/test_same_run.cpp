@@ -30,7 +30,7 @@ using gbssn1d::testing::slurp;
 namespace {
 
 /// The names of the flags idle_flags() calls idle in `p`.
-std::set<std::string> idle_names(const Params& p) {
+std::set<std::string> idle_names(const ResolvedParams& p) {
   std::set<std::string> names;
   for (const auto& group : idle_flags(p))
     names.insert(group.flags.begin(), group.flags.end());
@@ -144,7 +144,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     const Case& c = cases[k];
     INFO("flag " << c.flag << " with " << c.base);
     // the table: idle with the base, and the same run key
-    const Params base = resolved_evolve(c.base), with = resolved_evolve(c.base + " " + c.flag);
+    const ResolvedParams base = resolved_evolve(c.base),
+                         with = resolved_evolve(c.base + " " + c.flag);
     const std::string name = c.flag.substr(2, c.flag.find(' ') - 2);
     CHECK(idle_names(with).count(name) == 1);
     CHECK(idle_names(base).count(name) == 0);
@@ -153,8 +154,8 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
     // the runs: the same numbers
     CHECK(numbers_of(c.base + " " + c.flag, "idle_a") == numbers_of(c.base, "idle_b"));
     // where it acts: another key, other numbers
-    const Params acting = resolved_evolve(c.acting),
-                 acting_with = resolved_evolve(c.acting + " " + c.flag);
+    const ResolvedParams acting = resolved_evolve(c.acting),
+                         acting_with = resolved_evolve(c.acting + " " + c.flag);
     CHECK(idle_names(acting_with).count(name) == 0);
     CHECK(run_key(acting_with) != run_key(acting));
     if (c.flag.rfind("--rah-variant midstep", 0) == 0 || c.flag.rfind("--rah-hAH", 0) == 0
@@ -171,10 +172,11 @@ TEST_CASE("the same run: a flag the table calls idle changes no number the run w
 
 TEST_CASE("idle flags: named with their values, grouped by why, in the run's warnings, and a "
           "resolved default is not one") {
-  const Params quiet = resolved_evolve(trumpet);
+  const ResolvedParams quiet = resolved_evolve(trumpet);
   CHECK(idle_flags(quiet).empty());
   CHECK(warnings(quiet).empty()); // box-taper resolved to 0 on a single grid: not given
-  const Params p = resolved_evolve(trumpet + " --rah0 0.6 --rah-profile gauss --dr-inner 0.03");
+  const ResolvedParams p =
+      resolved_evolve(trumpet + " --rah0 0.6 --rah-profile gauss --dr-inner 0.03");
   const auto idle = idle_flags(p);
   REQUIRE(idle.size() == 2);
   CHECK(idle[0].because == "with --grid uniform");
@@ -194,21 +196,22 @@ TEST_CASE("idle flags: named with their values, grouped by why, in the run's war
 
 TEST_CASE("the effective configuration: without --out and --force, idle flags at their "
           "resolved defaults, the rest as given") {
-  Params p = resolved_evolve(trumpet + " --rah0 0.6 --ko-sigma 0.2");
-  p.out = "somewhere";
-  p.force = true;
+  Params given = resolved_evolve(trumpet + " --rah0 0.6 --ko-sigma 0.2").flags();
+  given.out = "somewhere";
+  given.force = true;
+  const ResolvedParams p = resolve(given);
   const Params e = effective(p);
   CHECK(e.out.empty());
   CHECK_FALSE(e.force);
   CHECK(e.rah0 == Params{}.rah0);
   CHECK(e.ko_sigma == 0.2);
-  CHECK(e.box_taper == p.box_taper); // resolved on a single grid: 0, kept
+  CHECK(e.box_taper == p.flags().box_taper); // resolved on a single grid: 0, kept
   CHECK(run_key(p) == config_text(e));
 }
 
 TEST_CASE("the horizon searches' flags do nothing without the shift or with an h_AH file, "
           "and the search schedules of --rah-variant nothing with the file: warned about") {
-  auto warned = [](const Params& p, const std::string& start) {
+  auto warned = [](const ResolvedParams& p, const std::string& start) {
     const auto w = warnings(p);
     return std::count_if(w.begin(), w.end(),
                          [&](const std::string& s) { return s.rfind(start, 0) == 0; });
@@ -220,7 +223,8 @@ TEST_CASE("the horizon searches' flags do nothing without the shift or with an h
         == 0);
   // midstep-update changes when h_AH is searched for: nothing is with an h_AH file
   const std::string file = trumpet + " --rahA 0.5 --rah-hAH-file h.dat";
-  const Params midstep = resolved_evolve(file + " --ah-every step --rah-variant midstep-update");
+  const ResolvedParams midstep =
+      resolved_evolve(file + " --ah-every step --rah-variant midstep-update");
   CHECK(warned(midstep, "--rah-variant midstep-update does nothing with --rah-hAH-file") == 1);
   const auto idle = idle_flags(midstep);
   REQUIRE(idle.size() == 1);
@@ -234,7 +238,7 @@ TEST_CASE("the horizon searches' flags do nothing without the shift or with an h
 TEST_CASE("a taper radius is warned about where it tapers nothing: without a taper, or beyond "
           "every fine box") {
   const std::string boxes = "--id 1log-trumpet --grid boxes --levels 3 --N 32 --rmax 16 --tmax 1";
-  auto warned = [](const Params& p, const std::string& start) {
+  auto warned = [](const ResolvedParams& p, const std::string& start) {
     const auto w = warnings(p);
     return std::count_if(w.begin(), w.end(),
                          [&](const std::string& s) { return s.rfind(start, 0) == 0; });
@@ -324,8 +328,8 @@ TEST_CASE("rule values are recorded as such in config.toml and read back as unse
 TEST_CASE("--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and "
           "numbers, idle in BSSN alone") {
   const std::string undamped = trumpet + " --formulation z4c --kappa1 0 --kappa1-hole 0";
-  const Params base = resolved_evolve(undamped),
-               with = resolved_evolve(undamped + " --z4c-lapse-adm");
+  const ResolvedParams base = resolved_evolve(undamped),
+                       with = resolved_evolve(undamped + " --z4c-lapse-adm");
   CHECK(idle_names(with).count("z4c-lapse-adm") == 0);
   CHECK(idle_names(with) == idle_names(base));
   const auto w = warnings(with);
@@ -340,8 +344,8 @@ TEST_CASE("--z4c-lapse-adm acts in Z4c without damping: its own run key, config 
   CHECK(idle_names(resolved_evolve(trumpet + " --formulation z4c --z4c-lapse-adm"))
             .count("z4c-lapse-adm")
         == 0);
-  const Params bssn = resolved_evolve(trumpet),
-               bssn_with = resolved_evolve(trumpet + " --z4c-lapse-adm");
+  const ResolvedParams bssn = resolved_evolve(trumpet),
+                       bssn_with = resolved_evolve(trumpet + " --z4c-lapse-adm");
   CHECK(idle_names(bssn_with).count("z4c-lapse-adm") == 1);
   CHECK(run_key(bssn_with) == run_key(bssn));
 }

@@ -45,9 +45,9 @@ std::vector<SeriesRow> series_of(const Params& p) {
   return rows;
 }
 
-/// How many of the run's warnings (after resolve_defaults and validate) hold `text`.
-int warnings_holding(Params p, const std::string& text) {
-  resolve_defaults(p);
+/// How many of the run's warnings (after resolve and validate) hold `text`.
+int warnings_holding(const Params& given, const std::string& text) {
+  const ResolvedParams p = resolve(given);
   validate(p);
   int n = 0;
   for (const auto& w : warnings(p))
@@ -301,8 +301,8 @@ TEST_CASE("a horizon or rah0 outside the finest box's inner part is warned about
   // the default number of boxes keeps the finest box out to 4 M
   Params q = boxes(7, 1024.0, 32);
   q.levels.reset();
-  resolve_defaults(q);
-  CHECK(q.levels == 9);
+  CHECK(resolve(q).levels() == 9);
+  CHECK(resolve(q).flags().levels == 9); // config.toml records it
   CHECK(levels_rule(128.0, 1.0) == 6);
   CHECK(levels_rule(100.0, 1.0) == 5);
 }

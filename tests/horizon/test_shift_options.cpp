@@ -195,27 +195,26 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   CHECK(fixed.profile == ShiftProfile::gauss3);
   CHECK(fixed.width == 0.7);
   // the run's parameters resolve it
-  Params p = trumpet(200, 20.0, 0.0);
-  p.rahA = 0.5;
-  p.rah0 = 0.6;
-  resolve_defaults(p);
+  Params given = trumpet(200, 20.0, 0.0);
+  given.rahA = 0.5;
+  given.rah0 = 0.6;
+  const ResolvedParams p = resolve(given);
   CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
   // and config.toml records what auto stood for, so that a later change of auto is detected
   CHECK(p.rah_profile == ShiftProfile::gauss);
   CHECK(p.rah_width == 1.0);
-  Params q = trumpet(200, 20.0, 0.0);
-  q.rahA = 0.5;
-  q.rah0 = 0.89;
-  resolve_defaults(q);
+  Params q_given = trumpet(200, 20.0, 0.0);
+  q_given.rahA = 0.5;
+  q_given.rah0 = 0.89;
+  const ResolvedParams q = resolve(q_given);
   CHECK(rhs_params(q).horizon_shift.profile == ShiftProfile::rational);
   CHECK(rhs_params(q).horizon_shift.width == 3.0);
   CHECK(q.rah_profile == ShiftProfile::rational);
   CHECK(config_text(q).find("rah-width = 3\n") != std::string::npos);
   // without the horizon shift nothing is resolved (auto means nothing there)
-  Params off = trumpet(200, 20.0, 0.0);
-  resolve_defaults(off);
+  const ResolvedParams off = resolve(trumpet(200, 20.0, 0.0));
   CHECK(off.rah_profile == ShiftProfile::automatic);
-  CHECK_FALSE(off.rah_rcut.has_value());
+  CHECK_FALSE(off.flags().rah_rcut.has_value());
 }
 
 TEST_CASE("beta_H is tapered to zero before the outer boundary: quartic (default) and step") {
@@ -261,14 +260,15 @@ TEST_CASE("beta_H is tapered to zero before the outer boundary: quartic (default
   CHECK(quartic6 * 100.0 < step6);
   // in a run: default rcut = rmax / 2 and the quartic taper; beta_H / (f(r)/sqrt(a)) is
   // A (h_AH - h) times the taper everywhere
-  Params p = trumpet(400, 40.0, 0.0);
-  p.rahA = 0.5;
-  p.rah0 = 1.2;
-  p.rah_profile = ShiftProfile::rational;
-  p.rah_width = 3.0;
-  p.rah_normal = ShiftNormal::conformal;
-  resolve_defaults(p);
-  CHECK(p.rah_taper == Taper::quartic);
+  Params given = trumpet(400, 40.0, 0.0);
+  given.rahA = 0.5;
+  given.rah0 = 1.2;
+  given.rah_profile = ShiftProfile::rational;
+  given.rah_width = 3.0;
+  given.rah_normal = ShiftNormal::conformal;
+  const ResolvedParams p = resolve(given);
+  CHECK(p.rah_taper() == Taper::quartic);
+  CHECK(p.flags().rah_taper == Taper::quartic);
   const std::string text = config_text(p);
   CHECK(text.find("rah-taper = \"quartic\"\n") != std::string::npos);
   {
@@ -280,14 +280,14 @@ TEST_CASE("beta_H is tapered to zero before the outer boundary: quartic (default
     REQUIRE(diff.size() == 1);
     CHECK(diff.front() == "rah-taper: (unset) -> \"quartic\"");
     // without the horizon shift nothing is recorded, and nothing differs
-    Params off = trumpet(400, 40.0, 0.0);
-    resolve_defaults(off);
-    CHECK_FALSE(off.rah_taper.has_value());
+    const ResolvedParams off = resolve(trumpet(400, 40.0, 0.0));
+    CHECK_FALSE(off.flags().rah_taper.has_value());
     CHECK(config_text(off).find("rah-taper") == std::string::npos);
   }
   Simulation sim = simulation(p);
-  REQUIRE(p.rah_rcut.has_value());
-  CHECK(*p.rah_rcut == 20.0);
+  REQUIRE(p.flags().rah_rcut.has_value());
+  CHECK(*p.flags().rah_rcut == 20.0);
+  CHECK(p.rah_rcut() == 20.0);
   const auto beta_H = sim.horizon_shift();
   const Grid& g = sim.grid();
   const auto a = field(sim.state(), g, Var::a);
@@ -537,19 +537,19 @@ TEST_CASE("a wormhole shrink defaults to eta = 1/M, and is warned about with eta
   p.rah0 = 0.6;
   p.M = 2.0;
   p.rah0 = 1.2; // below the standard 0.8304 M = 1.66
-  Params q = p;
-  resolve_defaults(q);
-  CHECK(q.eta == 0.5); // 1/M
+  const ResolvedParams q = resolve(p);
+  CHECK(q.eta() == 0.5); // 1/M
   CHECK(warnings(q).empty());
-  q.eta = 1.0; // 2/M, given
-  REQUIRE(warnings(q).size() == 1);
-  CHECK(warnings(q)[0].find("eta = 1/M, their default") != std::string::npos);
+  Params q_eta = p;
+  q_eta.eta = 1.0; // 2/M, given
+  REQUIRE(warnings(resolve(q_eta)).size() == 1);
+  CHECK(warnings(resolve(q_eta))[0].find("eta = 1/M, their default") != std::string::npos);
   for (auto change : {+[](Params& x) { x.id = InitialDataKind::onelog_trumpet; },
                       +[](Params& x) { x.rah0 = 1.7; }, +[](Params& x) { x.rahA = 0.0; }}) {
-    Params r = p;
-    change(r);
-    resolve_defaults(r);
-    CHECK(r.eta == 1.0); // 2/M
+    Params r_given = p;
+    change(r_given);
+    const ResolvedParams r = resolve(r_given);
+    CHECK(r.eta() == 1.0); // 2/M
     // no eta warning; with rahA = 0 the idle --rah0 is warned about instead
     const auto w = warnings(r);
     CHECK(w.size() == (r.rahA == 0.0 ? 1u : 0u));
@@ -634,15 +634,14 @@ TEST_CASE("a tmax that lets the outer boundary reach the norm windows is warned 
   Params p;
   p.rmax = 100.0;
   p.tmax = 60.0; // (100 - 12) / sqrt(2) = 62.2
-  resolve_defaults(p);
-  CHECK(warnings(p).empty());
+  CHECK(warnings(resolve(p)).empty());
   p.tmax = 64.0;
-  const auto w = warnings(p);
+  const auto w = warnings(resolve(p));
   REQUIRE(w.size() == 1);
   CHECK(w[0].find("t ~ 62 M") != std::string::npos);
   CHECK(w[0].find("--rmax > 103") != std::string::npos); // 12 + sqrt(2) 64 = 102.5
   p.rmax = 120.0;
-  CHECK(warnings(p).empty());
+  CHECK(warnings(resolve(p)).empty());
 }
 
 TEST_CASE("B's driver term under refinement: the published upwind-gd stencil blows up at a time "

@@ -388,10 +388,10 @@ TEST_CASE("converge refuses bad input before running anything") {
 TEST_CASE("converge: a folder another command wrote after the check, before the study's lock, "
           "is refused under the lock and left as it was") {
   const fs::path out = scratch("converge_written_meanwhile");
-  gbssn1d::Params base = gbssn1d::parse_evolve_args(
+  gbssn1d::Params given = gbssn1d::parse_evolve_args(
       {"--id", "1log-trumpet", "--grid", "uniform", "--rmax", "8", "--tmax", "0", "--N", "32"});
-  base.out = out.string();
-  gbssn1d::resolve_defaults(base);
+  given.out = out.string();
+  const gbssn1d::Params base = gbssn1d::resolve(given).flags();
   gbssn1d::ConvergeOptions options;
   options.N = {32, 40, 48};
   options.out = out.string();
