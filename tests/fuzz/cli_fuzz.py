@@ -137,10 +137,6 @@ def scenarios(draw, surfaces):
 KNOWN_DEFECTS = ()
 
 
-def flag_value(args, flag):
-    return args[args.index(flag) + 1] if flag in args[:-1] else None
-
-
 def known_defect(kind, case):
     for kinds, match, what in KNOWN_DEFECTS:
         try:
