@@ -2,8 +2,8 @@
 
 #include "core/text.hpp"
 
+#include "cli/command_rules.hpp"
 #include "cli/commands.hpp"
-#include "cli/study_cli.hpp"
 
 #include "config/config_file.hpp"
 #include "config/params.hpp"
@@ -50,20 +50,6 @@ int help_or_version(CLI::App& app, const CLI::Error& e) {
   return status;
 }
 
-/// Each subcommand's options as CLI11 fills them.
-struct EvolveArgs {
-  Params params;
-  bool print_config = false;
-  std::string config_file; // expanded before parsing (expand_config); listed here for --help
-  CLI::App* cmd = nullptr;
-};
-struct ResumeArgs {
-  std::string dir;
-  double tmax = 0.0;
-  CLI::Option* tmax_opt = nullptr;
-  CLI::App* cmd = nullptr;
-};
-
 /// The process made safe before anything is opened or parsed.
 void prepare_process(int argc, char** argv) {
   // Standard streams closed by the caller (`2>&-`) are reopened on /dev/null before anything
@@ -83,50 +69,6 @@ void prepare_process(int argc, char** argv) {
   install_stop_handlers();
   if (argc > 0 && argv[0] != nullptr && std::string(argv[0]).find('/') != std::string::npos)
     invoked_as() = argv[0];
-}
-
-/// `evolve`: the evolve flags (config/config_file.cpp), --config and --print-config.
-void add_evolve(CLI::App& app, EvolveArgs& a) {
-  a.cmd = app.add_subcommand(
-      "evolve",
-      "evolve one black hole and write ASCII output.\nMost runs need only: --id (wormhole | "
-      "1log-trumpet | maximal-trumpet), --tmax, --out, --rahA A --rah0 h (move the horizon to "
-      "h), and for resolution --N (or --grid uniform|sinh|boxes with --N, --rmax). Example: "
-      "gbssn1d evolve --id 1log-trumpet --rahA 0.5 --rah0 1.2 --tmax 100 --out out/stretch");
-  add_options(*a.cmd, a.params);
-  a.cmd->footer(
-      "Lengths and times are in the units of --M (geometric units; with the default M = 1 "
-      "they are multiples of M); the areal windows --norm-R* are multiples of M.\n"
-      "Output in --out DIR: config.toml (repeats the run with --config), timeseries.dat (a row "
-      "per --dt-series; its last line says how the run ended), profiles.dat (a block per "
-      "--dt-profiles), horizon.dat, checkpoint.bin (with --checkpoint-every or after a "
-      "signal; `gbssn1d resume DIR` continues), rah-hAH-file.dat (with --rah-hAH-file: the "
-      "file as read at the start, which a resume uses).\nExit status: 0 completed; 1 a failed "
-      "write; 2 "
-      "invalid input (nothing written); 3 stopped (non-finite value, chi or alpha out of range, "
-      "horizon finder failure); 128 + n interrupted by signal n: SIGTERM, SIGINT, SIGHUP, "
-      "SIGUSR1 and SIGUSR2 (what batch schedulers send ahead of a time limit) finish the step, "
-      "write a checkpoint and the end line; `gbssn1d resume DIR` continues.");
-  a.cmd
-      ->add_option("--config", a.config_file,
-                   "read parameters from a TOML/INI file of `key = value` lines (as "
-                   "written to OUT/config.toml); flags given too override it")
-      ->group("Configuration");
-  a.cmd
-      ->add_flag("--print-config", a.print_config,
-                 "print the effective configuration (a valid --config file) and exit")
-      ->group("Configuration");
-}
-
-/// `converge`: its own flags; the rest are passed to every member.
-void add_resume(CLI::App& app, ResumeArgs& a) {
-  a.cmd = app.add_subcommand(
-      "resume", "continue a run in DIR from DIR/checkpoint.bin, bit for bit as if uninterrupted");
-  a.cmd->add_option("DIR", a.dir, "output directory of the run")->required();
-  a.tmax_opt =
-      add_number_option(*a.cmd, "--tmax", a.tmax, "new final time (M); default: the run's own");
-  a.tmax_opt->default_str("the run's own");
-  a.cmd->footer("The output files are cut back to the checkpoint and continued.");
 }
 
 /// The flags whose values came from an evolve --config file, and that file: a refused value
@@ -265,11 +207,9 @@ int run_command_line(int argc, char** argv) {
 
   try {
     if (evolve_args.cmd->parsed())
-      return evolve(evolve_args.params, evolve_args.print_config);
+      return run_evolve_command(evolve_args);
     if (resume_args.cmd->parsed())
-      return resume(resume_args.dir, resume_args.tmax_opt->count() > 0
-                                         ? std::optional(resume_args.tmax)
-                                         : std::nullopt);
+      return run_resume_command(resume_args);
     if (converge_args.cmd->parsed())
       return run_converge_command(converge_args);
     if (sweep_args.cmd->parsed())

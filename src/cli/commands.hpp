@@ -1,38 +1,56 @@
-// The subcommands behind the command line (cli.cpp parses, these run): evolve and resume
-// (evolve_resume.cpp), converge and the argument rules shared by all (study_commands.cpp).
-// Each throws ParamError for invalid input and returns the exit status it documents.
+// The subcommands behind the command line, one file each (cli.cpp parses and dispatches):
+// evolve_command.cpp, resume_command.cpp, converge_command.cpp, sweep_command.cpp. Each
+// defines its flags on the CLI11 app (add_*) and runs the parsed command (run_*_command);
+// each throws ParamError for invalid input and returns the exit status its --help documents.
 #pragma once
 
 #include "config/params.hpp"
 #include "study/converge.hpp"
+#include "study/sweep.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <optional>
 #include <string>
-#include <vector>
 
 namespace gbssn1d {
 
-/// `gbssn1d evolve`: one run into p.out (or its configuration printed).
-int evolve(const Params& given, bool print_config);
-/// `gbssn1d resume DIR [--tmax T]`: a run continued from DIR/checkpoint.bin.
-int resume(const std::string& dir_name, std::optional<double> tmax);
-/// `gbssn1d converge`: one configuration at several resolutions (lists as given on the line).
-int converge(const ConvergeOptions& options, const std::string& N_list, const std::string& factors,
-             const std::string& fields, const std::string& times,
-             const std::vector<std::string>& evolve_args);
+/// Each subcommand's options as CLI11 fills them.
+struct EvolveArgs {
+  Params params;
+  bool print_config = false;
+  std::string config_file; // expanded before parsing (expand_config); listed here for --help
+  CLI::App* cmd = nullptr;
+};
+struct ResumeArgs {
+  std::string dir;
+  double tmax = 0.0;
+  CLI::Option* tmax_opt = nullptr;
+  CLI::App* cmd = nullptr;
+};
+struct ConvergeArgs {
+  ConvergeOptions options;
+  std::string N_list, factors, fields = "alpha,chi,K", scaled_times;
+  double expect_order = 0.0;
+  CLI::Option* expect_order_opt = nullptr;
+  CLI::App* cmd = nullptr;
+};
+struct SweepArgs {
+  SweepOptions options;
+  CLI::Option *jobs = nullptr, *emit = nullptr, *member = nullptr, *collect = nullptr;
+  CLI::App* cmd = nullptr;
+};
 
-/// -j: at least 1, at most jobs_max (threads and processes beyond that only thrash).
-void check_jobs(int jobs);
-/// A flag given twice on the command line is refused (a --config file's values may be
-/// overridden once by the command line; --sweep is meant to repeat). The short -j is the same
-/// flag as --jobs ("-j 2", "-j2").
-void refuse_repeated_flags(const std::vector<std::string>& args);
-/// Refuses empty values: `--flag=` (which a parser would complete with the next argument, so
-/// that the next flag became the value and was lost) and an empty argument (`--flag ''`).
-void refuse_empty_values(const std::vector<std::string>& args);
-/// The evolve flags given to converge/sweep; refuses those the study sets itself.
-std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std::string>& own);
+/// `gbssn1d evolve`: one run into --out (or its configuration printed).
+void add_evolve(CLI::App& app, EvolveArgs& a);
+int run_evolve_command(const EvolveArgs& a);
+/// `gbssn1d resume DIR [--tmax T]`: a run continued from DIR/checkpoint.bin.
+void add_resume(CLI::App& app, ResumeArgs& a);
+int run_resume_command(const ResumeArgs& a);
+/// `gbssn1d converge`: one configuration at several resolutions.
+void add_converge(CLI::App& app, ConvergeArgs& a);
+int run_converge_command(ConvergeArgs& a);
+/// `gbssn1d sweep`: a grid of runs over flag values.
+void add_sweep(CLI::App& app, SweepArgs& a);
+int run_sweep_command(SweepArgs& a);
 
 } // namespace gbssn1d

@@ -1,18 +1,17 @@
+// `gbssn1d resume DIR [--tmax T]`: a run continued from its checkpoint, bit for bit.
 #include "cli/commands.hpp"
+#include "cli/run_report.hpp"
 
 #include "config/config_file.hpp"
 #include "config/folder_lock.hpp"
 #include "config/input_files.hpp"
-#include "config/param_rules.hpp"
 #include "config/params.hpp"
 #include "config/paths.hpp"
 #include "config/same_run.hpp"
 #include "core/console.hpp"
-#include "core/registry.hpp"
 #include "core/stop_signal.hpp"
 #include "core/text.hpp"
 #include "evolution/checkpoint.hpp"
-#include "evolution/observe.hpp"
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 
@@ -20,57 +19,31 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cerrno>
-#include <charconv>
-#include <chrono>
-#include <cmath>
-#include <csignal>
+#include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <limits>
-#include <map>
 #include <optional>
-#include <set>
 #include <sstream>
-#include <string_view>
+#include <string>
 #include <unistd.h>
-#include <variant>
+#include <vector>
 
 namespace gbssn1d {
 
-namespace {
-
-/// With --force into a folder that is not empty: the entries an evolve run does not write (its
-/// files, their temporary names, the lock), named for a warning; empty otherwise.
-std::string leftovers_of_force(const Params& p) {
-  namespace fs = std::filesystem;
-  if (!p.force)
-    return {};
-  static const std::set<std::string> own = {"timeseries.dat", "profiles.dat",   "horizon.dat",
-                                            "config.toml",    "checkpoint.bin", "rah-hAH-file.dat",
-                                            folder_lock_name};
-  std::vector<std::string> left;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(p.out, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (!own.count(name) && !name.ends_with(".tmp") && !name.ends_with(".resume"))
-      left.push_back(printable(name) + (entry.is_directory(ec) ? "/" : ""));
-  }
-  std::sort(left.begin(), left.end());
-  if (left.size() > 6) {
-    const std::size_t more = left.size() - 5;
-    left.resize(5);
-    left.push_back(fmt::format("and {} more", more));
-  }
-  return fmt::format("{}", fmt::join(left, ", "));
+/// `resume`: the run's folder DIR and a new --tmax.
+void add_resume(CLI::App& app, ResumeArgs& a) {
+  a.cmd = app.add_subcommand(
+      "resume", "continue a run in DIR from DIR/checkpoint.bin, bit for bit as if uninterrupted");
+  a.cmd->add_option("DIR", a.dir, "output directory of the run")->required();
+  a.tmax_opt =
+      add_number_option(*a.cmd, "--tmax", a.tmax, "new final time (M); default: the run's own");
+  a.tmax_opt->default_str("the run's own");
+  a.cmd->footer("The output files are cut back to the checkpoint and continued.");
 }
 
-int run_and_report(Simulation& sim, Output& out, const Params& p);
+namespace {
 
 /// The bytes of a file ("" if it cannot be read: the caller's checks refuse such a file).
 std::string file_text(const std::filesystem::path& file) {
@@ -78,120 +51,6 @@ std::string file_text(const std::filesystem::path& file) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-/// Warns of a horizon-adjusting shift faster than the grid's Courant limit on the initial data
-/// (|beta_H| dt / dr above 1). Not a refusal: the feedback shrinks beta_H as the horizon
-/// moves, and such runs can go through (1+log trumpet, N = 200, rah0 1.2: --rahA 200, a
-/// Courant number of 7.6 at t = 0, reaches 1000 M; --rahA 500 leaves the physical range at
-/// t = 0.06); the warning names the flag for when the run stops.
-void warn_shift_courant(const Simulation& sim, const Params& p) {
-  const auto c = sim.horizon_shift_courant();
-  if (c && !(c->number <= 1.0))
-    say("gbssn1d: warning: --rahA {}: the horizon-adjusting shift starts at beta_H = {:.3g} at "
-        "r = {:.4g} (h_AH = {:.4g}, --rah0 {}), a Courant number |beta_H| dt / dr of {:.3g} "
-        "above 1; if the run stops early, lower --rahA\n",
-        num(p.rahA), c->beta_H, c->r, c->h_AH, num(p.rah0), c->number);
-}
-
-} // namespace
-
-int evolve(const Params& given, bool print_config) {
-  const ResolvedParams p = resolve(given);
-  validate(p);
-  if (print_config) {
-    const std::string text = config_text(p) + rule_values_line(p);
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-      throw OutputError(fmt::format("cannot write the configuration to standard output: {}",
-                                    std::strerror(errno)));
-    return 0;
-  }
-  validate_output_dir(p);
-  for (const auto& w : warnings(p))
-    say("gbssn1d: warning: {}\n", w);
-  if (const std::string left = leftovers_of_force(p); !left.empty())
-    say("gbssn1d: warning: --force: {} also holds {}, which this run does not write: left as "
-        "they are, beside its own files (another command's output, e.g. a study's?)\n",
-        printable(p.out), left);
-
-  Simulation sim(evolution_config(p)); // initial data are computed before anything is written
-  sim.show_progress = true;
-  warn_shift_courant(sim, p);
-  for (const auto& w : empty_norm_windows(sim.composite().grid(), sim.composite_profiles().R_areal,
-                                          sim.config().norms))
-    say("gbssn1d: warning: {}: {}\n", w.flags, w.what);
-  const std::filesystem::path dir(p.out);
-  // the content of --rah-hAH-file as it was read (before the folder is made)
-  const std::optional<std::string> hAH_content = prescribed_horizon_content(p);
-  if (const int signal = stop_signal(); signal != 0) {
-    say("gbssn1d: interrupted by {} before the run started; nothing was written\n",
-        signal_name(signal));
-    return 128 + signal;
-  }
-  // one writer per folder, from here to the process's end; then the emptiness check again, under
-  // the lock: another process may have written the folder since validate_output_dir
-  const FolderLock lock("--out", dir);
-  if (!p.force && !folder_is_empty(dir))
-    throw ParamError("--out", p.out,
-                     "exists and is not empty: another process wrote it meanwhile (use --force "
-                     "to overwrite)");
-  if (p.force) {
-    // the earlier run's files this run may not write again go (unlinked: a hard-linked backup
-    // keeps them): its checkpoint would otherwise offer `resume` a run this folder no longer
-    // holds, its copy of --rah-hAH-file a curve this run does not follow
-    std::error_code ignored;
-    std::filesystem::remove(dir / "checkpoint.bin", ignored);
-    if (!hAH_content)
-      std::filesystem::remove(dir / std::string(prescribed_horizon_copy), ignored);
-  }
-  const std::string config = config_text(p);
-  write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
-  if (hAH_content)
-    write_file_atomically(dir / std::string(prescribed_horizon_copy), *hAH_content);
-  Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation);
-  sim.checkpoint_config = config + copy_hash_line(hAH_content);
-  return run_and_report(sim, out, p);
-}
-
-namespace {
-
-/// Runs `sim` into `out`; says how it ended on stderr and in timeseries.dat; returns the exit
-/// status (0, 3 stopped, 128 + n interrupted by signal n, 1 a failed write).
-int run_and_report(Simulation& sim, Output& out, const Params& p) {
-  install_stop_handlers();
-  const auto start = std::chrono::steady_clock::now();
-  // How the run ended goes to stderr and, as the last line, into timeseries.dat.
-  auto stopped = [&](const std::string& prefix, const std::string& what, const std::string& kept,
-                     int status) {
-    say("gbssn1d: {}{}; {}\n", prefix, what, kept);
-    out.write_end(fmt::format("stopped: {}", what));
-    return status;
-  };
-  try {
-    sim.run(&out);
-  } catch (const NonFiniteError& e) {
-    return stopped("error: ", e.what(), "output up to the last finite state kept in " + p.out, 3);
-  } catch (const HorizonFinderError& e) {
-    return stopped("error: ", e.what(), "output up to then kept in " + p.out, 3);
-  } catch (const Interrupted& e) {
-    return stopped("", e.what(),
-                   fmt::format("output up to then and a checkpoint kept in {}; resume with: {}",
-                               p.out, resume_command(p.out)),
-                   128 + e.signal);
-  } catch (const OutputError& e) {
-    say("gbssn1d: error: {}; the output in {} is incomplete\n", e.what(), p.out);
-    try {
-      out.write_end(fmt::format("stopped: {}", e.what())); // other files may still take it
-    } catch (const OutputError&) {
-    }
-    return 1;
-  }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out.write_end(fmt::format("completed at t = {}", sim.time()));
-  say("gbssn1d: reached t = {} in {:.2f} s ({} steps, {} RHS evaluations)\n", sim.time(), wall,
-      sim.schedule().n_steps, sim.evaluations());
-  return 0;
 }
 
 /// How far timeseries.dat goes: the time of its last data row, and whether its last line says
@@ -214,10 +73,6 @@ SeriesEnd series_end(const std::filesystem::path& file) {
   }
   return end;
 }
-
-} // namespace
-
-namespace {
 
 /// DIR must hold a run's config.toml and (`with_checkpoint`) checkpoint.bin; a file of the run
 /// that cannot even be examined (a loop of symbolic links) is refused.
@@ -327,8 +182,7 @@ KeptHorizonFile with_kept_horizon_file(const Params& p, const std::string& dir_n
   return run;
 }
 
-} // namespace
-
+/// The run in DIR continued from its checkpoint to the run's own or a new tmax.
 int resume(const std::string& dir_name, std::optional<double> tmax) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
@@ -398,6 +252,12 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
       time_text(p.tmax));
   Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation, c.marks);
   return run_and_report(sim, out, p);
+}
+
+} // namespace
+
+int run_resume_command(const ResumeArgs& a) {
+  return resume(a.dir, a.tmax_opt->count() > 0 ? std::optional(a.tmax) : std::nullopt);
 }
 
 } // namespace gbssn1d
