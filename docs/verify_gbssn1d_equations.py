@@ -1157,5 +1157,123 @@ report(okA, 'Eulerian: all RHS finite at r=0 for regular data; d_t Delta^r and d
 report(okB and okC, 'Eulerian: d_t A_a = O(r^2) and d_t (a-b) = O(r^2) at r=0')
 print(f'      ({time.time()-t:.1f}s)', flush=True)
 
+# ============================================================================
+print('=== V10: massless scalar field (Sec. 19) ===', flush=True)
+t = time.time()
+
+
+def scalar_sources(a, chi, Phi, Pi):
+    """(S3): rho, j_r, S^r_r, S^theta_theta and S of T_ab = d_a Phi d_b Phi - (1/2) g_ab (dPhi)^2,
+    with Pi = n^a d_a Phi (chi form)."""
+    q = chi*D(Phi)**2/a
+    return {'rho': (Pi**2 + q)/2, 'jr': -Pi*D(Phi), 'Sa': (Pi**2 + q)/2, 'Sb': (Pi**2 - q)/2,
+            'S': sp.Rational(3, 2)*Pi**2 - q/2}
+
+
+def scalar_rhs(a, b, chi, K, alpha, beta, Phi, Pi):
+    """(S1)-(S2): d_t Phi and d_t Pi, Pi = n^a d_a Phi = (d_t Phi - beta Phi')/alpha."""
+    return {'Phi': beta*D(Phi) + alpha*Pi,
+            'Pi': beta*D(Pi) + alpha*K*Pi
+            + chi/a*(alpha*D(Phi, 2) + D(Phi)*(D(alpha) + alpha*(2/r + D(b)/b - D(a)/(2*a)
+                                                                 - D(chi)/(2*chi))))}
+
+
+def matter_terms(a, alpha, src):
+    """(S4)-(S6): the stress-energy's terms in d_t K (Z4c: d_t K-hat), d_t A_a, d_t Delta^r and
+    d_t Theta (Z4c), and in H and M_r (each constraint minus its source vanishes)."""
+    return {'K': 4*sp.pi*alpha*(src['rho'] + src['S']),
+            'Aa': -8*sp.pi*alpha*(src['Sa'] - src['S']/3),
+            'L': -16*sp.pi*alpha*src['jr']/a,
+            'Theta': -8*sp.pi*alpha*src['rho'],
+            'H': -16*sp.pi*src['rho'], 'M': -8*sp.pi*src['jr']}
+
+
+fPhi, fPi = [sp.Function(n)(r) for n in ['Phi', 'Pi']]
+chi10 = fpsi**-4                                  # chi = e^{-4 phi}, phi = log psi
+g10 = sp.exp(4*fphi)*sph_diag(fa, fb)             # the physical metric
+# the 4-metric at one instant, coordinates (t, r, theta, varphi); beta_r = gamma_rr beta
+g4 = sp.zeros(4, 4)
+g4[0, 0] = -fal**2 + g10[0, 0]*fbe**2
+g4[0, 1] = g4[1, 0] = g10[0, 0]*fbe
+for i in range(3):
+    g4[i + 1, i + 1] = g10[i, i]
+g4i = sp.simplify(g4.inv())
+dPhi4 = [fbe*D(fPhi) + fal*fPi, D(fPhi), 0, 0]    # d_t Phi = beta Phi' + alpha Pi, (S1)
+n_d = [-fal, 0, 0, 0]
+n_u = [sp.simplify(sum(g4i[m, k]*n_d[k] for k in range(4))) for m in range(4)]
+dPhi2 = sp.simplify(sum(g4i[m, k]*dPhi4[m]*dPhi4[k] for m in range(4) for k in range(4)))
+T4 = sp.Matrix(4, 4, lambda m, k: dPhi4[m]*dPhi4[k] - g4[m, k]*dPhi2/2)
+src = scalar_sources(fa, chi10, fPhi, fPi)
+rho4 = sum(n_u[m]*n_u[k]*T4[m, k] for m in range(4) for k in range(4))
+jr4 = -sum(n_u[k]*T4[1, k] for k in range(4))      # -gamma_r^a n^b T_ab, gamma_r^a = delta_r^a
+report(zero(n_u[0] - 1/fal) and zero(n_u[1] + fbe/fal), 'n^a = (1, -beta)/alpha from the 4-metric')
+report(zero(sum(n_u[m]*dPhi4[m] for m in range(4)) - fPi), 'Pi = n^a d_a Phi')
+report(zero(rho4 - src['rho']), 'rho = n^a n^b T_ab')
+report(zero(jr4 - src['jr']), 'j_r = -gamma_r^a n^b T_ab')
+report(zero(T4[1, 1]/g10[0, 0] - src['Sa']) and zero(T4[2, 2]/g10[1, 1] - src['Sb']),
+       'S^r_r and S^theta_theta = gamma^ii T_ii')
+report(zero(src['Sa'] + 2*src['Sb'] - src['S']), 'S = S^r_r + 2 S^theta_theta')
+# The Klein-Gordon equation: sqrt(-g) box Phi = d_mu (sqrt(-g) g^{mu nu} d_nu Phi) = 0 with the
+# time derivatives of (S1)-(S2) and of the BSSN metric right-hand sides; the lapse's and the
+# shift's rates are arbitrary (the gauge may not enter)
+sqrtg4 = fal*sp.sqrt(g10[0, 0]*g10[1, 1]*g10[2, 2])
+report(zero(sp.simplify(-g4.det()) - sqrtg4**2), 'sqrt(-g) = alpha sqrt(gamma)')
+W = [sp.simplify(sqrtg4*sum(g4i[m, k]*dPhi4[k] for k in range(4))) for m in range(2)]
+o10 = rhs_1d(fa, fb, fphi, fK, fAa, -fAa/2, Delta_gamma(fa, fb), fal, fbe)
+sr = scalar_rhs(fa, fb, chi10, fK, fal, fbe, fPhi, fPi)
+al_t, be_t = [sp.Function(n)(r) for n in ['alpha_t', 'beta_t']]
+sub10 = {fa: fa + eps*o10['a'], fb: fb + eps*o10['b'], fpsi: fpsi*sp.exp(eps*o10['phi']),
+         fPhi: fPhi + eps*sr['Phi'], fPi: fPi + eps*sr['Pi'], fal: fal + eps*al_t,
+         fbe: fbe + eps*be_t, fK: fK + eps*o10['K'], fAa: fAa + eps*o10['Aa']}
+
+
+def ddt10(expr):
+    return sp.diff(expr.xreplace(sub10).doit(), eps).subs(eps, 0)
+
+
+box = ddt10(W[0]) + D(W[1])
+report(zero(sp.simplify(box/sp.sin(th))), 'box Phi = 0: (S1)-(S2) are the Klein-Gordon equation, any lapse and shift')
+# The stress-energy of any matter in the ADM equations, d_t K_ij += -8 pi alpha (S_ij - (1/2)
+# gamma_ij (S - rho)), H = 16 pi rho, D_j K^j_r - d_r K = 8 pi j_r: (S4)'s terms in d_t K and
+# d_t A_a give it, with (E4)'s use of H = 16 pi rho (V3: d_t K_ij(BSSN) = d_t K_ij(ADM) -
+# (alpha/3) gamma_ij (H - 16 pi rho)); and d_t Delta^r's term keeps (E6) - d_t Delta^r(a,b) =
+# (2 alpha/a)(M_r - 8 pi j_r)
+frho, fjr, fSa, fSb = [sp.Function(n)(r) for n in ['rho', 'j_r', 'S_a', 'S_b']]
+gsrc = {'rho': frho, 'jr': fjr, 'Sa': fSa, 'Sb': fSb, 'S': fSa + 2*fSb}
+mt = matter_terms(fa, fal, gsrc)
+Sdd = sp.diag(g10[0, 0]*fSa, g10[1, 1]*fSb, g10[2, 2]*fSb)
+adm_K_m = adm_K + -8*sp.pi*fal*(Sdd - g10*(gsrc['S'] - frho)/2)
+o = rhs_1d(fa, fb, fphi, fK, fAa, -fAa/2, Lg, fal, fbe)   # V3's data again
+sub_t_m = {fa: fa + eps*o['a'], fb: fb + eps*o['b'], fpsi: fpsi*sp.exp(eps*o['phi']),
+           fK: fK + eps*(o['K'] + mt['K']), fAa: fAa + eps*(o['Aa'] + mt['Aa'])}
+
+
+def ddt_m(expr):
+    return sp.diff(expr.xreplace(sub_t_m).doit(), eps).subs(eps, 0)
+
+
+for (i, j, nm) in [(0, 0, 'rr'), (1, 1, 'thth')]:
+    report(zero(ddt_m(Kdd[i, j]) - (adm_K_m[i, j] - fal*g10[i, j]*(Hdir + mt['H'])/3)),
+           f'with matter: d_t K_{nm} from BSSN (S4) == ADM - (alpha/3) gamma_{nm} (H - 16 pi rho)')
+    report(zero(ddt_m(g[i, j]) - adm_g[i, j]), f'with matter: d_t gamma_{nm} unchanged')
+Mr1 = momentum(fa, fb, fphi, fK, fAa, -fAa/2)
+report(zero(o['L'] + mt['L'] - ddt(Lg) - 2*fal/fa*(Mr1 + mt['M'])),
+       'with matter: d_t Delta^r - d_t[Delta^r(a,b)] == (2 alpha/a)(M_r - 8 pi j_r)')
+# Z4c (Sec. 17) with the same terms: with Theta = 0 and Delta^r = Delta^r(a,b) it is BSSN with
+# matter, and d_t Theta = (alpha/2)(H - 16 pi rho)
+k1s, k2s = sp.symbols('kappa_1 kappa_2')
+oz = rhs_z4c_1d(fa, fb, fphi, fK, 0, fAa, Lg, fal, fbe, k1s, k2s)
+report(zero(oz['K'] + mt['K'] - (o['K'] + mt['K'])) and zero(oz['L'] + mt['L'] - (o['L'] + mt['L'])),
+       'Z4c with matter, Theta = 0, G^r = 0: K-hat and Delta^r rates are BSSN\'s with matter')
+report(zero(oz['Theta'] + mt['Theta'] - fal/2*(Hdir + mt['H'])), 'Z4c with matter: d_t Theta = (alpha/2)(H - 16 pi rho) at Theta = 0')
+# parity: Phi and Pi even, their rates even; rho, S even, j_r odd (V7's even and odd functions)
+EPhi, EPi = [sp.Function(n)(r**2) for n in ['EPhi', 'EPi']]
+sr7 = scalar_rhs(Ea, Eb, sp.exp(-4*Ep), EK, Eal, Obe, EPhi, EPi)
+src7 = scalar_sources(Ea, sp.exp(-4*Ep), EPhi, EPi)
+report(parity_of(sr7['Phi']) == 1 and parity_of(sr7['Pi']) == 1, 'parity of d_t Phi and d_t Pi is even')
+report(all(parity_of(src7[k]) == 1 for k in ['rho', 'Sa', 'Sb', 'S']) and parity_of(src7['jr']) == -1,
+       'rho, S^r_r, S^theta_theta, S even; j_r odd')
+print(f'      ({time.time()-t:.1f}s)', flush=True)
+
 print(f'\nTotal time {time.time()-T0:.1f}s;  failures: {NFAIL}')
 sys.exit(1 if NFAIL else 0)
