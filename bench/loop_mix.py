@@ -40,7 +40,7 @@ import subprocess
 import sys
 
 DEFAULT_OBJECT = "build/CMakeFiles/gbssn1d_core.dir/src/gbssn/rhs_bssn.cpp.o"
-DEFAULT_SYMBOL = r"interiorINS_4BssnELi4ELNS_2fd6UpwindE0ELb0E"
+DEFAULT_SYMBOL = r"interiorINS_4BssnENS_6VacuumELi4ELNS_2fd6UpwindE0ELb0E"
 
 INSTRUCTION = re.compile(r"\s*([0-9a-f]+):\s+(\S+)\s*(.*)")
 

@@ -336,6 +336,33 @@ def expansion_chi(a, b, chi, K, Aa):
     return sp.sqrt(chi/a)*(2/r + D(b)/b - D(chi)/chi) + Aa - sp.Rational(2, 3)*K
 
 
+# the massless scalar field (Sec. 19)
+def scalar_sources(a, chi, Phi, Pi):
+    """(S3): rho, j_r, S^r_r, S^theta_theta and S of T_ab = d_a Phi d_b Phi - (1/2) g_ab (dPhi)^2,
+    with Pi = n^a d_a Phi (chi form)."""
+    q = chi*D(Phi)**2/a
+    return {'rho': (Pi**2 + q)/2, 'jr': -Pi*D(Phi), 'Sa': (Pi**2 + q)/2, 'Sb': (Pi**2 - q)/2,
+            'S': sp.Rational(3, 2)*Pi**2 - q/2}
+
+
+def scalar_rhs(a, b, chi, K, alpha, beta, Phi, Pi):
+    """(S1)-(S2): d_t Phi and d_t Pi, Pi = n^a d_a Phi = (d_t Phi - beta Phi')/alpha."""
+    return {'Phi': beta*D(Phi) + alpha*Pi,
+            'Pi': beta*D(Pi) + alpha*K*Pi
+            + chi/a*(alpha*D(Phi, 2) + D(Phi)*(D(alpha) + alpha*(2/r + D(b)/b - D(a)/(2*a)
+                                                                 - D(chi)/(2*chi))))}
+
+
+def matter_terms(a, alpha, src):
+    """(S4)-(S6): the stress-energy's terms in d_t K (Z4c: d_t K-hat), d_t A_a, d_t Delta^r and
+    d_t Theta (Z4c), and in H and M_r (each constraint minus its source vanishes)."""
+    return {'K': 4*sp.pi*alpha*(src['rho'] + src['S']),
+            'Aa': -8*sp.pi*alpha*(src['Sa'] - src['S']/3),
+            'L': -16*sp.pi*alpha*src['jr']/a,
+            'Theta': -8*sp.pi*alpha*src['rho'],
+            'H': -16*sp.pi*src['rho'], 'M': -8*sp.pi*src['jr']}
+
+
 # ----------------------------------------------------------------------------
 # 2. Independent 3D machinery (full tensor index loops, theta-dependence kept)
 # ----------------------------------------------------------------------------
@@ -1160,32 +1187,6 @@ print(f'      ({time.time()-t:.1f}s)', flush=True)
 # ============================================================================
 print('=== V10: massless scalar field (Sec. 19) ===', flush=True)
 t = time.time()
-
-
-def scalar_sources(a, chi, Phi, Pi):
-    """(S3): rho, j_r, S^r_r, S^theta_theta and S of T_ab = d_a Phi d_b Phi - (1/2) g_ab (dPhi)^2,
-    with Pi = n^a d_a Phi (chi form)."""
-    q = chi*D(Phi)**2/a
-    return {'rho': (Pi**2 + q)/2, 'jr': -Pi*D(Phi), 'Sa': (Pi**2 + q)/2, 'Sb': (Pi**2 - q)/2,
-            'S': sp.Rational(3, 2)*Pi**2 - q/2}
-
-
-def scalar_rhs(a, b, chi, K, alpha, beta, Phi, Pi):
-    """(S1)-(S2): d_t Phi and d_t Pi, Pi = n^a d_a Phi = (d_t Phi - beta Phi')/alpha."""
-    return {'Phi': beta*D(Phi) + alpha*Pi,
-            'Pi': beta*D(Pi) + alpha*K*Pi
-            + chi/a*(alpha*D(Phi, 2) + D(Phi)*(D(alpha) + alpha*(2/r + D(b)/b - D(a)/(2*a)
-                                                                 - D(chi)/(2*chi))))}
-
-
-def matter_terms(a, alpha, src):
-    """(S4)-(S6): the stress-energy's terms in d_t K (Z4c: d_t K-hat), d_t A_a, d_t Delta^r and
-    d_t Theta (Z4c), and in H and M_r (each constraint minus its source vanishes)."""
-    return {'K': 4*sp.pi*alpha*(src['rho'] + src['S']),
-            'Aa': -8*sp.pi*alpha*(src['Sa'] - src['S']/3),
-            'L': -16*sp.pi*alpha*src['jr']/a,
-            'Theta': -8*sp.pi*alpha*src['rho'],
-            'H': -16*sp.pi*src['rho'], 'M': -8*sp.pi*src['jr']}
 
 
 fPhi, fPi = [sp.Function(n)(r) for n in ['Phi', 'Pi']]

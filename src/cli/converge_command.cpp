@@ -20,9 +20,9 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <set>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>

@@ -158,7 +158,7 @@ int evolve(const Params& given, bool print_config) {
   write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
   if (hAH_content)
     write_file_atomically(dir / std::string(prescribed_horizon_copy), *hAH_content);
-  Output out(dir, config + sim.run_facts(), sim.config().rhs.formulation);
+  Output out(dir, config + sim.run_facts(), sim.state().fields());
   sim.checkpoint_config = config + copy_hash_line(hAH_content);
   return run_and_report(sim, out, p);
 }

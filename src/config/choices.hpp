@@ -44,7 +44,8 @@ inline const Choices<RadialGrid> grid_choices{
 inline const Choices<InitialDataKind> id_choices{
     {"wormhole", InitialDataKind::wormhole},
     {"maximal-trumpet", InitialDataKind::maximal_trumpet},
-    {"1log-trumpet", InitialDataKind::onelog_trumpet}};
+    {"1log-trumpet", InitialDataKind::onelog_trumpet},
+    {"flat", InitialDataKind::flat}};
 inline const Choices<InitialLapse> lapse0_choices{{"one", InitialLapse::one},
                                                   {"precollapsed", InitialLapse::precollapsed}};
 inline const Choices<ShiftProfile> profile_choices{{"auto", ShiftProfile::automatic},
@@ -62,6 +63,7 @@ inline const Choices<mesh::TimeInterpolation> time_interp_choices{
     {"quadratic", mesh::TimeInterpolation::quadratic}};
 inline const Choices<Formulation> formulation_choices{{"bssn", Formulation::bssn},
                                                       {"z4c", Formulation::z4c}};
+inline const Choices<Matter> matter_choices{{"none", Matter::none}, {"scalar", Matter::scalar}};
 inline const Choices<Volume> volume_choices{{"lagrangian", Volume::lagrangian},
                                             {"eulerian", Volume::eulerian}};
 inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
@@ -145,6 +147,7 @@ using TimeInterpChoice = Choice<mesh::TimeInterpolation, time_interp_choices>;
 using UpwindChoice = Choice<fd::Upwind, upwind_choices>;
 using FormulationChoice = Choice<Formulation, formulation_choices>;
 using VolumeChoice = Choice<Volume, volume_choices>;
+using MatterChoice = Choice<Matter, matter_choices>;
 using StencilChoice = Choice<AdvectionStencil, stencil_choices>;
 using DriverStencilChoice = Choice<AdvectionStencil, driver_stencil_choices>;
 using VariantChoice = Choice<ShiftVariant, variant_choices>;

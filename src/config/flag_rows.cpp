@@ -42,10 +42,24 @@ std::vector<ParamSpec> grid_and_data_specs() {
        "innermost cell width of the sinh grid at N = 400; it fixes the map r(x), so at N "
        "cells every spacing is 400/N times that grid's (doubling --N halves every spacing)",
        Acts::on_sinh, above(0.0)},
-      {"id", &Params::id, "Initial data", "wormhole | maximal-trumpet | 1log-trumpet"},
+      {"id", &Params::id, "Initial data",
+       "wormhole | maximal-trumpet | 1log-trumpet | flat (Minkowski space; with --matter scalar "
+       "the pulse alone)"},
       {"M", &Params::M, "Initial data", "black-hole mass", Acts::always, above(0.0)},
       {"lapse0", &Params::lapse0, "Initial data",
        "initial lapse of the wormhole: one | precollapsed", Acts::with_wormhole},
+      {"matter", &Params::matter, "Matter",
+       "none | scalar (a massless scalar field, G_ab = 8 pi T_ab: Phi and Pi = n^a d_a Phi "
+       "evolved; docs/gbssn1d-equations.md Sec. 19); with --id flat or wormhole, --fd-order 4, "
+       "--upwind lopsided"},
+      {"scalar-amp", &Params::scalar_amp, "Matter",
+       "A of the time-symmetric pulse Phi = A exp(-((r - r0)/w)^2), Pi = 0 (the conformal factor "
+       "from the Hamiltonian constraint)",
+       Acts::with_scalar, finite()},
+      {"scalar-r0", &Params::scalar_r0, "Matter", "r0 of the pulse", Acts::with_scalar,
+       at_least(0.0)},
+      {"scalar-width", &Params::scalar_width, "Matter", "w of the pulse", Acts::with_scalar,
+       above(0.0)},
   };
 }
 
@@ -115,9 +129,8 @@ std::vector<ParamSpec> evolution_specs() {
   };
 }
 
-/// The norm windows, the horizon-adjusting shift (its profile, stencils, searches and study
-/// variants), and the output folder.
-std::vector<ParamSpec> diagnostics_and_shift_specs() {
+/// The norm windows.
+std::vector<ParamSpec> diagnostics_specs() {
   return {
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms",
        Acts::always, at_least(0.0)},
@@ -131,6 +144,13 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
       {"norm-Rint", &Params::norm_Rint, "Diagnostics",
        "interior window of H_L2_int: areal radius R <= norm-Rint M, inside the horizon",
        Acts::always, above(0.0)},
+  };
+}
+
+/// The horizon-adjusting shift (its profile, stencils, searches and study variants), and the
+/// output folder.
+std::vector<ParamSpec> horizon_shift_specs() {
+  return {
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)",
        Acts::always,
        at_least(0.0, "beta_H = f A (h_AH - h) s^r with A < 0 drives the horizon away from --rah0, "
@@ -212,7 +232,8 @@ std::vector<ParamSpec> diagnostics_and_shift_specs() {
 const std::vector<ParamSpec>& param_specs() {
   static const std::vector<ParamSpec> specs = [] {
     std::vector<ParamSpec> all;
-    for (auto group : {grid_and_data_specs, evolution_specs, diagnostics_and_shift_specs}) {
+    for (auto group :
+         {grid_and_data_specs, evolution_specs, diagnostics_specs, horizon_shift_specs}) {
       const std::vector<ParamSpec> specs = group();
       all.insert(all.end(), specs.begin(), specs.end());
     }

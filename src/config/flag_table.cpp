@@ -42,6 +42,8 @@ bool acts(Acts where, const ResolvedParams& p) {
     return p.id == InitialDataKind::wormhole;
   case Acts::with_z4c:
     return z4c_on(p);
+  case Acts::with_scalar:
+    return scalar_on(p);
   case Acts::with_z4c_damping:
     return damped_z4c(p);
   case Acts::with_searches:
@@ -86,6 +88,9 @@ std::pair<std::string, std::string> idle_because(Acts where, const ResolvedParam
             "only the sinh grid has an innermost width to set, and only boxes have boxes"};
   case Acts::with_wormhole:
     return {"with --id " + p.id.name(), "the trumpets' data fix their own lapse"};
+  case Acts::with_scalar:
+    return {"with --matter " + p.matter.name(),
+            "the pulse is the scalar field's (give --matter scalar)"};
   case Acts::with_z4c_damping:
     if (z4c_on(p))
       return {"with --kappa1 0 --kappa1-hole 0",

@@ -41,6 +41,7 @@ enum class Acts {
   on_sinh,            ///< --grid sinh
   with_wormhole,      ///< --id wormhole
   with_z4c,           ///< --formulation z4c
+  with_scalar,        ///< --matter scalar: scalar_on()
   with_z4c_damping,   ///< --formulation z4c with its damping on (kappa1 > 0): damped_z4c()
   with_searches,      ///< horizon searches steer the shift: shift_on(), no --rah-hAH-file
   /// --grid boxes with a fine box reaching beyond --box-taper-from (the level-1 box, rmax/2):
@@ -92,7 +93,7 @@ struct ParamSpec {
                LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
                ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
                StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*,
-               FormulationChoice Params::*, VolumeChoice Params::*>
+               FormulationChoice Params::*, VolumeChoice Params::*, MatterChoice Params::*>
       member;
   const char* group;
   const char* help;

@@ -102,6 +102,7 @@ InitialDataParams initial_data_params(const Params& p) {
   id.M = p.M;
   id.kind = p.id.value();
   id.lapse0 = p.lapse0.value();
+  id.scalar = {p.scalar_amp, p.scalar_r0, p.scalar_width};
   return id;
 }
 
@@ -111,6 +112,7 @@ RhsParams rhs_params(const ResolvedParams& p) {
   r.formulation = p.formulation == Formulation::bssn && p.gbssn_volume == Volume::eulerian
                       ? Formulation::bssn_eulerian
                       : p.formulation.value();
+  r.matter = p.matter.value();
   r.z4c.kappa1 = p.kappa1();
   r.z4c.kappa2 = p.kappa2;
   r.z4c.kappa1_hole = p.kappa1_hole();

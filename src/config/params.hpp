@@ -45,7 +45,8 @@ struct Params {
   /// innermost cell width of the sinh grid at N = sinh_reference_N (M)
   double dr_inner = evolution_defaults().grid.dr_inner;
   // initial data
-  InitialDataChoice id = InitialDataKind::wormhole; ///< wormhole | maximal-trumpet | 1log-trumpet
+  /// wormhole | maximal-trumpet | 1log-trumpet | flat
+  InitialDataChoice id = InitialDataKind::wormhole;
   double M = evolution_defaults().initial_data.M;
   LapseChoice lapse0 = InitialLapse::precollapsed; ///< one | precollapsed (wormhole)
   // formulation (Sec. 17): Z4c's constraint damping kappa1 (1/length) and kappa2
@@ -58,6 +59,11 @@ struct Params {
   /// 1/M with Z4c (kappa1_hole_rule), left unset with BSSN; 0: kappa1 everywhere
   std::optional<double> kappa1_hole;
   bool z4c_lapse_adm = false; ///< Z4c: the lapse driven by the ADM K instead of K-hat (study)
+  // matter (Sec. 19): a massless scalar field, its time-symmetric Gaussian pulse
+  MatterChoice matter = Matter::none; ///< none | scalar
+  double scalar_amp = evolution_defaults().initial_data.scalar.amplitude;
+  double scalar_r0 = evolution_defaults().initial_data.scalar.r0;
+  double scalar_width = evolution_defaults().initial_data.scalar.width;
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve())
   std::optional<double> eta;
@@ -165,6 +171,11 @@ private:
 /// The Z4c equations: --kappa1 and --kappa2 act only then.
 inline bool z4c_on(const Params& p) {
   return p.formulation == Formulation::z4c;
+}
+
+/// The scalar field is evolved: the --scalar-* flags act only then.
+inline bool scalar_on(const Params& p) {
+  return p.matter == Matter::scalar;
 }
 
 /// The horizon-adjusting shift is on: a strength A != 0. The --rah-* flags act only then.

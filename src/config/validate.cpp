@@ -1,6 +1,7 @@
 #include "config/flag_table.hpp"
 #include "config/params.hpp"
 #include "config/validate_steps.hpp"
+#include "initial_data/scalar_pulse.hpp"
 #include "mesh/layout.hpp"
 
 #include "config/param_rules.hpp"
@@ -17,6 +18,7 @@
 #include <new>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -167,6 +169,59 @@ void validate_formulation(const ResolvedParams& p) {
   }
 }
 
+/// The pulse has time-symmetric data: the conformal factor the Hamiltonian constraint gives stays
+/// positive (a strong pulse drives it through 0, where no such data exist).
+void validate_scalar_data(const ResolvedParams& p) {
+  const ScalarPulse pulse{p.scalar_amp, p.scalar_r0, p.scalar_width};
+  const double puncture = p.id == InitialDataKind::wormhole ? p.M : 0.0;
+  const ScalarPulseData data(pulse, puncture);
+  std::vector<double> radii;
+  const double reach = p.scalar_r0 + 10.0 * p.scalar_width;
+  for (int k = 1; k <= 400; ++k)
+    radii.push_back(reach * k / 400.0);
+  const std::vector<double> psi = data.psi(radii);
+  for (std::size_t k = 0; k < radii.size(); ++k)
+    if (!(psi[k] > 0.0 && std::isfinite(psi[k])))
+      throw ParamError("--scalar-amp", num(p.scalar_amp),
+                       fmt::format("gives no time-symmetric data: the conformal factor the "
+                                   "Hamiltonian constraint gives reaches {:.3g} at r = {:.4g} (a "
+                                   "smaller amplitude, or a wider pulse)",
+                                   psi[k], radii[k]));
+}
+
+/// The matter: the scalar field where its loop is built (4th order, the lopsided pair, no study
+/// variant) and its data are (flat, or a puncture's); flat data without a horizon to move.
+void validate_matter(const ResolvedParams& p) {
+  if (scalar_on(p) && (p.fd_order != 4 || p.upwind != fd::Upwind::lopsided))
+    throw ParamError("--matter", p.matter.name(),
+                     fmt::format("is offered with --fd-order 4 and --upwind lopsided only (given "
+                                 "{} and {})",
+                                 p.fd_order, p.upwind.name()));
+  if (scalar_on(p) && p.id != InitialDataKind::flat && p.id != InitialDataKind::wormhole)
+    throw ParamError(
+        "--matter", p.matter.name(),
+        fmt::format("needs --id flat or wormhole (its pulse's data), not {}", p.id.name()));
+  if (scalar_on(p) && shift_on(p) && p.rah_variant != ShiftVariant::consistent
+      && p.rah_variant != ShiftVariant::midstep_update
+      && p.rah_variant != ShiftVariant::box_substage)
+    throw ParamError("--rah-variant", p.rah_variant.name(),
+                     "is a study variant of vacuum BSSN: not with --matter scalar");
+  if (scalar_on(p)) {
+    if (!(p.scalar_r0 < p.rmax))
+      throw ParamError(
+          "--scalar-r0", num(p.scalar_r0),
+          fmt::format("must lie below --rmax = {}: the pulse on the grid", num(p.rmax)));
+    if (!(p.scalar_width < p.rmax))
+      throw ParamError("--scalar-width", num(p.scalar_width),
+                       fmt::format("must lie below --rmax = {}", num(p.rmax)));
+    validate_scalar_data(p);
+  }
+  if (p.id == InitialDataKind::flat && shift_on(p))
+    throw ParamError("--rahA", num(p.rahA),
+                     "moves a horizon, and --id flat has none (leave --rahA out, or give --id "
+                     "wormhole)");
+}
+
 /// The horizon shift's study variants where they are built (BSSN, the lopsided pair, 4th
 /// order), and the finder's tolerance.
 void validate_study_variants(const ResolvedParams& p) {
@@ -235,6 +290,7 @@ void validate(const ResolvedParams& p) {
   validate_evolution_numbers(p);
   validate_horizon_shift(p);
   validate_formulation(p);
+  validate_matter(p);
   validate_study_variants(p);
   validate_search_schedule(p);
   validate_grid_and_steps(p);

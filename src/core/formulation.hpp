@@ -16,4 +16,8 @@ enum class Formulation { bssn, z4c, bssn_eulerian };
 /// (1/(3a)) (Dbar.beta)'; the Eulerian choice leaves them out (gbssn/equations.hpp).
 enum class Volume { eulerian, lagrangian };
 
+/// The matter a run evolves besides the geometry: none (vacuum), or a massless scalar field
+/// (equations document, Sec. 19; --matter scalar).
+enum class Matter { none, scalar };
+
 } // namespace gbssn1d

@@ -5,7 +5,9 @@
 // wave family and fall-off for the Sommerfeld outer boundary (Sec. 8); the family's speed comes
 // from the gauge (Gauge::speed, gbssn/rhs_params.hpp). Ghost zones, point data, boundary
 // conditions and output columns are all driven from this table. A formulation evolves the first
-// n_evolved(f) rows: BSSN all but Theta, Z4c all (with K-hat = K - 2 Theta in K's row, Sec. 17).
+// n_evolved(f) rows: BSSN all but Theta, Z4c Theta too (with K-hat = K - 2 Theta in K's row,
+// Sec. 17); matter adds its own rows after them (the scalar field's Phi and Pi, Sec. 19). A
+// state's rows, and where each lies, are its Fields'.
 #pragma once
 
 #include "core/formulation.hpp"
@@ -19,10 +21,10 @@
 
 namespace gbssn1d {
 
-enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r, Theta };
+enum class Var : std::size_t { alpha, beta, B, chi, a, b, K, A_a, Delta_r, Theta, Phi, Pi };
 
-/// Every variable any formulation evolves; a state holds the first n_evolved() of them.
-inline constexpr std::size_t n_vars = 10;
+/// Every variable any formulation or matter evolves; a state holds its Fields' rows of them.
+inline constexpr std::size_t n_vars = 12;
 
 struct VarInfo {
   Var var;
@@ -47,6 +49,9 @@ inline constexpr std::array<VarInfo, n_vars> registry{{
     {Var::Delta_r, "Delta_r", -1, 0.0, Wave::shift, 1.0},
     // Z4c only (Sec. 17): the constraint Theta propagates at the speed of light
     {Var::Theta, "Theta", +1, 0.0, Wave::light, 1.0},
+    // the scalar field (Sec. 19): Phi and Pi = n^a d_a Phi, even, leaving at the speed of light
+    {Var::Phi, "Phi", +1, 0.0, Wave::light, 1.0},
+    {Var::Pi, "Pi", +1, 0.0, Wave::light, 1.0},
 }};
 
 constexpr std::size_t index(Var v) {
@@ -80,15 +85,17 @@ struct FormulationTraits {
 inline constexpr std::array<std::string_view, 3> z4c_extra_series{"G_L2_R", "Theta_L2_ext",
                                                                   "Theta_L2_R"};
 
-/// One row per Formulation, in enum order: BSSN (Sec. 2-3), all rows but Theta; Z4c (Sec. 17),
-/// all ten, with K-hat in K's row; BSSN with the Eulerian volume choice (Sec. 18), BSSN's rows.
+/// One row per Formulation, in enum order: BSSN (Sec. 2-3), the nine rows before Theta; Z4c
+/// (Sec. 17), ten, with K-hat in K's row; BSSN with the Eulerian volume choice (Sec. 18),
+/// BSSN's rows.
+inline constexpr std::size_t n_bssn_rows = index(Var::Theta);
 inline constexpr std::array<FormulationTraits, 3> formulations{{
-    {Formulation::bssn, n_vars - 1, 0.0, {}, ""},
-    {Formulation::z4c, n_vars, 2.0, z4c_extra_series,
+    {Formulation::bssn, n_bssn_rows, 0.0, {}, ""},
+    {Formulation::z4c, n_bssn_rows + 1, 2.0, z4c_extra_series,
      "Z4c: K is the ADM K = K-hat + 2 Theta (profiles.dat); G_L2_R and Theta_L2_R are the norms "
      "of G^r = Delta^r - Delta_gamma^r and of Theta in the areal window, Theta_L2_ext in the "
      "coordinate one\n"},
-    {Formulation::bssn_eulerian, n_vars - 1, 0.0, {}, ""},
+    {Formulation::bssn_eulerian, n_bssn_rows, 0.0, {}, ""},
 }};
 
 constexpr const FormulationTraits& traits(Formulation f) {
@@ -109,6 +116,91 @@ constexpr std::span<const VarInfo> evolved(Formulation f) {
 constexpr double adm_K(const FormulationTraits& f, double K_row, double Theta) {
   return f.K_is_adm() ? K_row : K_row + f.adm_K_theta * Theta;
 }
+
+/// What a matter model declares: the registry rows it evolves after its formulation's.
+struct MatterTraits {
+  Matter matter;
+  std::span<const Var> rows;
+};
+
+inline constexpr std::array<Var, 2> scalar_field_rows{Var::Phi, Var::Pi};
+
+/// One row per Matter, in enum order: vacuum, none; the scalar field (Sec. 19), Phi and Pi.
+inline constexpr std::array<MatterTraits, 2> matters{{
+    {Matter::none, {}},
+    {Matter::scalar, scalar_field_rows},
+}};
+
+constexpr const MatterTraits& traits(Matter m) {
+  return matters[static_cast<std::size_t>(m)];
+}
+
+namespace detail {
+
+/// The rows of a formulation with a matter model, in a state's order, and each variable's slot.
+struct FieldsLayout {
+  std::array<VarInfo, n_vars> rows{};
+  std::size_t n = 0;
+  std::array<std::size_t, n_vars> slot{}; ///< n_vars: not held
+};
+
+constexpr FieldsLayout layout_of(Formulation f, Matter m) {
+  FieldsLayout l;
+  for (auto& s : l.slot)
+    s = n_vars;
+  for (std::size_t k = 0; k < formulations[static_cast<std::size_t>(f)].n_fields; ++k)
+    l.rows[l.n++] = registry[k];
+  for (const Var v : matters[static_cast<std::size_t>(m)].rows)
+    l.rows[l.n++] = registry[index(v)];
+  for (std::size_t k = 0; k < l.n; ++k)
+    l.slot[index(l.rows[k].var)] = k;
+  return l;
+}
+
+inline constexpr std::size_t n_matters = matters.size();
+
+/// Every formulation with every matter model: formulation-major.
+inline constexpr std::array<FieldsLayout, formulations.size() * n_matters> field_layouts{
+    layout_of(Formulation::bssn, Matter::none),
+    layout_of(Formulation::bssn, Matter::scalar),
+    layout_of(Formulation::z4c, Matter::none),
+    layout_of(Formulation::z4c, Matter::scalar),
+    layout_of(Formulation::bssn_eulerian, Matter::none),
+    layout_of(Formulation::bssn_eulerian, Matter::scalar)};
+
+} // namespace detail
+
+/// The rows a state holds, declared: its formulation's, then its matter's. A state, a right-hand
+/// side and a file of values carry it as a tag; where a variable's row lies in a state is its
+/// slot (the registry's index for the formulation's rows; after them for the matter's).
+struct Fields {
+  constexpr Fields() = default;
+  /// The formulation in vacuum (implicit: a formulation alone is its vacuum fields).
+  constexpr Fields(Formulation f, Matter m = Matter::none) : formulation(f), matter(m) {}
+
+  /// The registry rows, in the order a state holds them.
+  constexpr std::span<const VarInfo> rows() const { return {layout().rows.data(), layout().n}; }
+  constexpr std::size_t size() const { return layout().n; }
+  /// Whether a state of these fields holds v.
+  constexpr bool holds(Var v) const { return layout().slot[index(v)] < n_vars; }
+  /// The position of v's row (n_vars for a variable not held).
+  constexpr std::size_t slot(Var v) const { return layout().slot[index(v)]; }
+  friend constexpr bool operator==(const Fields&, const Fields&) = default;
+
+  Formulation formulation = Formulation::bssn;
+  Matter matter = Matter::none;
+
+private:
+  constexpr const detail::FieldsLayout& layout() const {
+    return detail::field_layouts[static_cast<std::size_t>(formulation) * detail::n_matters
+                                 + static_cast<std::size_t>(matter)];
+  }
+};
+
+// The vacuum fields of a formulation are its registry prefix: their slots are the registry's.
+static_assert(Fields(Formulation::z4c).slot(Var::Theta) == index(Var::Theta)
+              && Fields(Formulation::bssn, Matter::scalar).slot(Var::Phi) == n_bssn_rows
+              && !Fields(Formulation::bssn).holds(Var::Phi));
 
 /// One number per evolved variable, indexed by the registry: values[index(v)] is v's.
 struct PerVar {

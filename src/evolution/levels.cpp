@@ -48,10 +48,10 @@ std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::
 }
 
 std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id,
-                                  Formulation formulation) {
+                                  Fields fields) {
   std::vector<State> u;
   for (std::size_t l = 0; l < layout.levels(); ++l)
-    u.push_back(initial_data(layout.grid(l), id, formulation));
+    u.push_back(initial_data(layout.grid(l), id, fields));
   return u;
 }
 

@@ -36,7 +36,7 @@ std::vector<GbssnRhs> make_level_rhs(const EvolutionConfig& config, const mesh::
                                      const LevelHorizonSource& source);
 /// The initial data on every level.
 std::vector<State> initial_levels(const mesh::MeshLayout& layout, const InitialDataParams& id,
-                                  Formulation formulation);
+                                  Fields fields);
 /// The stepper's view of each level's RHS (which must outlive it).
 std::vector<mesh::LevelRhs> level_functors(std::vector<GbssnRhs>& rhs);
 

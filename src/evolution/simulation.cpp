@@ -28,7 +28,8 @@ Simulation::Simulation(const EvolutionConfig& config)
                             return tracker_->at_evaluation(l, u, g, t, evaluation, held);
                           })),
       diagnostics_(config_, layout_),
-      levels_u_(initial_levels(layout_, config.initial_data, config.rhs.formulation)),
+      levels_u_(initial_levels(layout_, config.initial_data,
+                               Fields(config.rhs.formulation, config.rhs.matter))),
       tracker_(make_horizon_tracker(config_, layout_, levels_u_, rhs_)),
       schedule_(make_schedule(config, mesh::hierarchy_dt(layout_, config.stepping))),
       stepper_(layout_, level_functors(rhs_), config.stepping), clock_(config_, schedule_.dt),

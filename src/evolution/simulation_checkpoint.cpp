@@ -18,10 +18,10 @@ void Simulation::restore(const Checkpoint& checkpoint) {
   const Checkpoint c =
       resumable_checkpoint(checkpoint, {config_, layout_, sizes, schedule_.dt, schedule_.n_steps,
                                         initial_evaluations_[0]});
-  // the file's values in this run's formulation (their count checked above)
-  const Formulation formulation = config_.rhs.formulation;
+  // the file's values in this run's fields (their count checked above)
+  const Fields fields(config_.rhs.formulation, config_.rhs.matter);
   const auto state = [&](const StateValues& values, std::size_t l) {
-    return State(formulation, values, layout_.grid(l).n_total());
+    return State(fields, values, layout_.grid(l).n_total());
   };
   levels_u_[0] = state(c.u, 0);
   for (std::size_t l = 1; l < n_levels; ++l)

@@ -13,10 +13,10 @@ namespace gbssn1d {
 /// The Eulerian choice as a policy of the point loop, beside Bssn (the Lagrangian one).
 struct BssnEulerian {
   static constexpr Formulation formulation = Formulation::bssn_eulerian;
-  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
+  template <class M = Vacuum>
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
                                  const Shift& gauge_shift) const {
-    return gbssn_rhs<Volume::eulerian>(p, gauge, gauge_shift);
+    return gbssn_rhs<Volume::eulerian, M>(p, gauge, gauge_shift);
   }
   // (no rhs_Delta_r for a given shift: only the Lagrangian choice's study variants take it)
 };

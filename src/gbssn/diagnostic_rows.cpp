@@ -18,10 +18,9 @@ namespace {
 
 /// with_constraints = false: the areal radius and expansion alone (the horizon finder's), whose
 /// loop leaves out the derivatives only the constraints take.
-template <int p, Formulation formulation, bool with_constraints>
+template <int p, Formulation formulation, Matter matter, bool with_constraints>
 void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& out,
                         std::size_t k_begin, std::size_t k_end) {
-  constexpr std::size_t n_fields = n_evolved(formulation);
   const point_loop::Rows rows(u, grid);
   const double inv_dx = 1.0 / grid.dx();
   const double *const r = grid.r().data(), *const inv_r = grid.inv_r().data(),
@@ -33,11 +32,11 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = first + k;
     point_loop::Differences ko; // unused here
-    PointData pd = point_loop::gather<p, fd::Upwind::lopsided, n_fields>(
+    PointData pd = point_loop::gather<p, fd::Upwind::lopsided, Fields(formulation, matter)>(
         rows, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], ko);
     pd = diagnosed<formulation>(pd);
     if constexpr (with_constraints) {
-      const Constraints c = constraints(pd);
+      const Constraints c = constraints<MatterPolicy<matter>>(pd);
       out.H[k] = c.H;
       out.M_r[k] = c.M_r;
       out.G_r[k] = c.G_r;
@@ -48,13 +47,13 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
   }
 }
 
-template <int p, Formulation formulation>
+template <int p, Formulation formulation, Matter matter>
 void diagnostic_rows_as(const State& u, const Grid& grid, const DiagnosticRows& out,
                         std::size_t k_begin, std::size_t k_end) {
   if (out.H)
-    diagnostic_rows_at<p, formulation, true>(u, grid, out, k_begin, k_end);
+    diagnostic_rows_at<p, formulation, matter, true>(u, grid, out, k_begin, k_end);
   else
-    diagnostic_rows_at<p, formulation, false>(u, grid, out, k_begin, k_end);
+    diagnostic_rows_at<p, formulation, matter, false>(u, grid, out, k_begin, k_end);
 }
 
 } // namespace
@@ -69,7 +68,16 @@ void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out
                                 "constraints with the Misner-Sharp mass or none of them");
   with_order(grid.fd_order(), [&]<int p>() {
     with_formulation(u.formulation(), [&]<Formulation f>() {
-      diagnostic_rows_as<p, f>(u, grid, out, k_begin, k_end);
+      // matter only at the order it is offered with (validate()), so that the other orders
+      // compile no matter loop
+      if constexpr (p == 4)
+        with_matter(u.matter(),
+                    [&]<Matter m>() { diagnostic_rows_as<p, f, m>(u, grid, out, k_begin, k_end); });
+      else if (u.matter() != Matter::none)
+        throw std::logic_error("diagnostics of matter at an --fd-order other than 4 (rejected "
+                               "by validate)");
+      else
+        diagnostic_rows_as<p, f, Matter::none>(u, grid, out, k_begin, k_end);
     });
   });
 }

@@ -32,6 +32,14 @@ decltype(auto) with_upwind(fd::Upwind upwind, Fn&& fn) {
   return fn.template operator()<fd::Upwind::lopsided>();
 }
 
+/// fn<matter>() for each matter model of core/formulation.hpp.
+template <class Fn>
+decltype(auto) with_matter(Matter matter, Fn&& fn) {
+  if (matter == Matter::scalar)
+    return fn.template operator()<Matter::scalar>();
+  return fn.template operator()<Matter::none>();
+}
+
 /// fn<formulation>() for each formulation of core/formulation.hpp.
 template <class Fn>
 decltype(auto) with_formulation(Formulation formulation, Fn&& fn) {

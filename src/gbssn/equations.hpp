@@ -9,6 +9,7 @@
 #pragma once
 
 #include "gbssn/gauge.hpp"
+#include "gbssn/matter.hpp"
 #include "gbssn/point_data.hpp"
 
 #include <cmath>
@@ -161,11 +162,12 @@ template <Volume volume = Volume::lagrangian>
 }
 
 /// The complete right-hand side at one point: fields (C1), (E2)-(E6) with the full shift,
-/// gauge (G1)-(G3). `gauge_shift` is the part of the shift whose d_t Delta^r drives B (Sec. 14,
-/// (H2)); pass full_shift(p) for the plain Gamma-driver. Always inlined: a call in the point
-/// loop stops its vectorisation (GCC left it out of line in the biased pair's instances, which
-/// then ran 8 times slower).
-template <Volume volume = Volume::lagrangian>
+/// gauge (G1)-(G3), and the matter M's rows with its stress-energy's terms (S1)-(S4) (Vacuum:
+/// none). `gauge_shift` is the part of the shift whose d_t Delta^r drives B (Sec. 14, (H2));
+/// pass full_shift(p) for the plain Gamma-driver. Always inlined: a call in the point loop stops
+/// its vectorisation (GCC left it out of line in the biased pair's instances, which then ran 8
+/// times slower).
+template <Volume volume = Volume::lagrangian, class M = Vacuum>
 [[gnu::always_inline]] inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge,
                                             const Shift& gauge_shift) {
   using enum Var;
@@ -177,7 +179,18 @@ template <Volume volume = Volume::lagrangian>
   rhs[Delta_r] = rhs_Delta_r<volume>(p, m, shift);
 
   // (G1)-(G3), gbssn/gauge.hpp; B is driven by d_t Delta^r of the gauge part of the shift.
-  MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift, rhs);
+  if constexpr (M::matter == Matter::none) {
+    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift, rhs);
+  } else {
+    // (S1)-(S4): the matter's rows, its terms in K, A_a and both d_t Delta^r
+    const StressEnergy s = M::stress_energy(p, m.inv_a);
+    add_stress_energy(p, s, rhs);
+    const double matter_Delta_r = stress_energy_Delta_r(p, m.inv_a, s);
+    rhs[Delta_r] += matter_Delta_r;
+    M::rhs(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, p.f[K], rhs);
+    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift) + matter_Delta_r,
+                             gauge_shift, rhs);
+  }
   return rhs;
 }
 
@@ -188,11 +201,12 @@ inline Rhs gbssn_rhs(const PointData& p, const Gauge& gauge) {
 
 /// Constraints and geometric diagnostics at one point (Sec. 5, Sec. 6).
 struct Constraints {
-  double H;   ///< (H) Hamiltonian constraint, R from a, b, chi (R4)
-  double M_r; ///< (M) radial momentum constraint, chi form
+  double H;   ///< (H) Hamiltonian constraint, R from a, b, chi (R4); with matter (S6) - 16 pi rho
+  double M_r; ///< (M) radial momentum constraint, chi form; with matter (S6) - 8 pi j_r
   double G_r; ///< (G) Gamma constraint Delta^r - Delta_gamma^r
 };
 
+template <class M = Vacuum>
 inline Constraints constraints(const PointData& p) {
   using enum Var;
   const MetricPieces m = metric_pieces(p);
@@ -200,6 +214,11 @@ inline Constraints constraints(const PointData& p) {
   c.H = ricci_scalar_metric(p, m) - 1.5 * p.f[A_a] * p.f[A_a] + (2.0 / 3.0) * p.f[K] * p.f[K];
   c.M_r = p.d[A_a] - (2.0 / 3.0) * p.d[K] + 1.5 * p.f[A_a] * (2.0 * p.inv_r + m.db_b - m.dchi_chi);
   c.G_r = p.f[Delta_r] - delta_gamma(p, m);
+  if constexpr (M::matter != Matter::none) { // (S6)
+    const StressEnergy s = M::stress_energy(p, m.inv_a);
+    c.H -= 16.0 * std::numbers::pi * s.rho;
+    c.M_r -= 8.0 * std::numbers::pi * s.j_r;
+  }
   return c;
 }
 
@@ -211,10 +230,11 @@ inline Constraints constraints(const PointData& p) {
 /// "A formulation").
 struct Bssn {
   static constexpr Formulation formulation = Formulation::bssn;
-  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
+  /// With the matter M (gbssn/matter.hpp), whose rows follow the formulation's.
+  template <class M = Vacuum>
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
                                  const Shift& gauge_shift) const {
-    return gbssn_rhs(p, gauge, gauge_shift);
+    return gbssn_rhs<Volume::lagrangian, M>(p, gauge, gauge_shift);
   }
 };
 

@@ -21,8 +21,8 @@ PointData point_data_as(const State& u, const Grid& grid, std::size_t i, bool ad
   const point_loop::Rows rows(u, grid);
   const double r = grid.r()[i], inv_r = grid.inv_r()[i], inv_dx = 1.0 / grid.dx(),
                inv_rx = grid.inv_dr_dx()[i], d2_fx = grid.d2_fx_coeff()[i];
-  constexpr std::size_t n = n_evolved(f);
-  PointData pd = point_loop::gather<p, upwind, n>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
+  PointData pd =
+      point_loop::gather<p, upwind, Fields(f)>(rows, i, r, inv_r, inv_dx, inv_rx, d2_fx, ko);
   if constexpr (!traits(f).evolves(Var::Theta))
     pd.f[Var::Theta] = pd.d[Var::Theta] = pd.dd[Var::Theta] = pd.adv[Var::Theta] = 0.0;
   return adm ? diagnosed<f>(pd) : pd;
@@ -85,9 +85,10 @@ void GbssnRhs::outer_boundary(const State& u, State& dudt) const {
   const Grid& g = *grid_;
   const std::size_t nt = g.n_total();
   const double inv_dx = 1.0 / g.dx();
-  for (const auto& entry : u.vars()) {
-    const double* f = u.data() + index(entry.var) * nt;
-    double* out = dudt.data() + index(entry.var) * nt;
+  for (std::size_t k = 0; k < u.vars().size(); ++k) {
+    const VarInfo& entry = u.vars()[k];
+    const double* f = u.data() + k * nt;
+    double* out = dudt.data() + k * nt;
     const double speed = params_.gauge.speed(entry.wave);
     for (std::size_t i = g.end_interior(); i < nt; ++i) {
       const double d_r_f = fd::d1_backward(f + i) * inv_dx * g.inv_dr_dx()[i];

@@ -100,10 +100,11 @@ public:
   std::size_t first_cell() const { return first_cell_; }
 
 private:
-  /// The point loop; the formulation (a policy type such as Bssn), the differencing order, the
-  /// upwind pair and the horizon shift are template parameters, so that each instance is
-  /// branch-free and vectorises (a run-time switch inside the loop stops it).
-  template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift>
+  /// The point loop; the formulation (a policy type such as Bssn), the matter (Vacuum or
+  /// ScalarField, gbssn/matter.hpp), the differencing order, the upwind pair and the horizon
+  /// shift are template parameters, so that each instance is branch-free and vectorises (a
+  /// run-time switch inside the loop stops it).
+  template <class Equations, class M, int order, fd::Upwind upwind, bool with_horizon_shift>
   void interior(const Equations& equations, const State& u, State& dudt) const;
   /// The horizon shift's study variants (--rah-variant no-shift-derivatives, ...): BSSN's loop
   /// at 4th order with the lopsided pair, its equations wrapped (gbssn/rhs_study.cpp, the only

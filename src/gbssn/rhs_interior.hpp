@@ -4,6 +4,7 @@
 // everything else sees the declaration in gbssn/rhs.hpp.
 #pragma once
 
+#include "gbssn/matter.hpp"
 #include "gbssn/rhs_loop.hpp" // IWYU pragma: keep (GbssnRhs::interior, the point loop)
 
 #include <stdexcept>
@@ -29,10 +30,25 @@ void GbssnRhs::interior_offered(const State& u, State& dudt) const {
   const Equations equations = PointEquations<f>::make(params_);
   const HorizonShiftParams& hs = params_.horizon_shift;
   using V = HorizonShiftParams::Variant;
-  if (!hs.active()) {
-    interior<Equations, p, upwind, false>(equations, u, dudt);
+  if (params_.matter == Matter::scalar) {
+    // the scalar field at the default stencil (4th order, the lopsided pair), with or without
+    // the horizon shift, no study variant (validate() refuses the rest)
+    if constexpr (p == 4 && upwind == fd::Upwind::lopsided) {
+      if (!hs.active())
+        interior<Equations, ScalarField, p, upwind, false>(equations, u, dudt);
+      else if (hs.variant == V::consistent)
+        interior<Equations, ScalarField, p, upwind, true>(equations, u, dudt);
+      else
+        throw std::logic_error("a study --rah-variant with --matter scalar (rejected by "
+                               "validate)");
+    } else {
+      throw std::logic_error("--matter scalar at an --fd-order or --upwind other than 4 and "
+                             "lopsided (rejected by validate)");
+    }
+  } else if (!hs.active()) {
+    interior<Equations, Vacuum, p, upwind, false>(equations, u, dudt);
   } else if (hs.variant == V::consistent) {
-    interior<Equations, p, upwind, true>(equations, u, dudt);
+    interior<Equations, Vacuum, p, upwind, true>(equations, u, dudt);
   } else if constexpr (PointEquations<f>::study_variants && upwind == fd::Upwind::lopsided
                        && p == 4) {
     // the published study's formulation, order and stencil only (validate() rejects the rest)

@@ -62,10 +62,10 @@ struct Rows {
 /// stencils (fd::advect_from) and the dissipation.
 using Differences = PerVar;
 
-/// All of point_data at order p with the upwind pair `upwind` for the registry's first n_fields
-/// variables (a formulation's), with the per-point grid factors passed in (the hot loop); `ko`
-/// receives the (p+2)-th differences.
-template <int p, fd::Upwind upwind, std::size_t n_fields>
+/// All of point_data at order p with the upwind pair `upwind` for the rows of `fields` (a
+/// formulation's, with its matter's), with the per-point grid factors passed in (the hot loop);
+/// `ko` receives the (p+2)-th differences.
+template <int p, fd::Upwind upwind, Fields fields>
 [[gnu::always_inline]] inline PointData gather(const Rows u, std::size_t i, double r, double inv_r,
                                                double inv_dx, double inv_rx, double d2_fx,
                                                Differences& ko) {
@@ -79,9 +79,10 @@ template <int p, fd::Upwind upwind, std::size_t n_fields>
   // is that of the shift in x as well. Each upwind stencil is the pair's sum and the (p+2)-th
   // difference.
   const double beta_r = u[Var::beta][i] * d1_scale;
+  constexpr std::size_t n_fields = fields.size();
 #pragma GCC unroll 16 // unrolled, so that the point loop around it vectorises
   for (std::size_t k = 0; k < n_fields; ++k) {
-    const Var v = registry[k].var;
+    const Var v = fields.rows()[k].var;
     const double* f = u[v] + i;
     pd.f[v] = f[0];
     // f_r = f_x / r_x;  f_rr = f_xx / r_x^2 - f_x r_xx / r_x^3
@@ -109,8 +110,8 @@ void GbssnRhs::evaluate(const State& u, State& dudt, double t) {
       h_AH_ = source_(u, *grid_, t, evaluations_, h_AH_);
     shift_amplitude_ = shift_amplitude(t);
   }
-  if (u.formulation() != params_.formulation)
-    throw std::logic_error("a right-hand side given a state of another formulation");
+  if (u.fields() != Fields(params_.formulation, params_.matter))
+    throw std::logic_error("a right-hand side given a state of other fields");
   // compiled in the formulation's own source file (gbssn/rhs_interior.hpp)
   with_formulation(params_.formulation,
                    [&]<Formulation f>() { interior_of<f, p, upwind>(u, dudt); });
@@ -146,19 +147,24 @@ struct FullShift {
   const double *profile, *chi, *a;
   double amplitude, chi_smooth;
 };
-template <std::size_t R, std::size_t B, std::size_t n_fields, bool with_beta_GD>
+template <std::size_t R, std::size_t B, Fields fields, bool with_beta_GD>
 [[gnu::always_inline]] inline Block stage_block(const Rows& in_full, const FullShift& shift,
                                                 double* buf, std::size_t i0, std::size_t n,
                                                 const double* grid) {
   constexpr std::size_t W = B + 2 * R; // block with the halo
+  constexpr std::size_t n_fields = fields.size();
   Block b{in_full, buf + n_fields * W + R, grid, grid + B, grid + 2 * B, grid + 3 * B};
   constexpr std::size_t beta = index(Var::beta);
-  for (std::size_t v = 0; v < n_fields; ++v)
+  static_assert(fields.slot(Var::beta) == beta);
+  // the rows at their slots in buf
+  for (std::size_t k = 0; k < n_fields; ++k) {
+    const std::size_t v = index(fields.rows()[k].var);
     if (!with_beta_GD || v != beta)
-      std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + v * W);
+      std::copy(in_full.row[v] + i0 - R, in_full.row[v] + i0 + n + R, buf + k * W);
+  }
 #pragma GCC unroll 16 // compile-time offsets from buf, one base register in the point loop
-  for (std::size_t v = 0; v < n_fields; ++v)
-    b.in.row[v] = buf + v * W + R;
+  for (std::size_t k = 0; k < n_fields; ++k)
+    b.in.row[index(fields.rows()[k].var)] = buf + k * W + R;
   if constexpr (with_beta_GD) { // the horizon shift's evolved part; otherwise beta itself
     const std::size_t from = i0 - R, count = n + 2 * R;
     std::copy(in_full.row[beta] + from, in_full.row[beta] + from + count, buf + n_fields * W);
@@ -189,7 +195,7 @@ advect_Delta(PointData& p, Shift& gd, const double* Delta, double ko_Delta, doub
 
 } // namespace point_loop
 
-template <class Equations, int order, fd::Upwind upwind, bool with_horizon_shift>
+template <class Equations, class M, int order, fd::Upwind upwind, bool with_horizon_shift>
 void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt) const {
   using namespace point_loop;
   const Grid& g = *grid_;
@@ -211,7 +217,8 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   static_assert(R <= Grid::n_ghost, "the stencils reach beyond the ghosts");
   // blocks of B points, each with the stencils' halo: W points of each input row (stage_block)
   constexpr std::size_t B = block_size, W = B + 2 * R;
-  constexpr std::size_t n_fields = Equations::n, rows_in = n_fields + 1, rows_grid = 4;
+  constexpr Fields fields(Equations::formulation, M::matter);
+  constexpr std::size_t n_fields = fields.size(), rows_in = n_fields + 1, rows_grid = 4;
   thread_local std::vector<double> scratch(rows_in * W); // one per thread
   double* const buf = scratch.data();
   // Cells below the first cell (under a child box, set_first_cell): d_t u = 0. The first block
@@ -228,12 +235,12 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   for (std::size_t i0 = g.first_interior() + first_cell_, n = 0; i0 < g.end_interior(); i0 += n) {
     const std::size_t k = i0 - g.first_interior(), offset = k % B; // 0 but in the first block
     n = std::min(B - offset, g.end_interior() - i0);
-    const Block blk = stage_block<R, B, n_fields, with_horizon_shift>(
+    const Block blk = stage_block<R, B, fields, with_horizon_shift>(
         in_full, full_shift_rows, buf, i0, n, grid_blocks_.data() + k / B * rows_grid * B + offset);
     const Rows in = blk.in;
     const double *const beta_GD = blk.beta_GD, *const r = blk.r, *const inv_r = blk.inv_r,
                         *const inv_rx = blk.inv_rx, *const d2_fx = blk.d2_fx;
-    double* const out0 = dudt.data() + i0; // variable v's output row: out0 + index(v) nt
+    double* const out0 = dudt.data() + i0; // the output row of slot k: out0 + k nt
     const std::size_t begin = 0, end = n;
     // The output never aliases the input, which `ivdep` asserts: the loop vectorises across
     // points.
@@ -241,7 +248,7 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
     for (std::size_t i = begin; i < end; ++i) {
       Differences k6;
       PointData p =
-          gather<order, upwind, n_fields>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
+          gather<order, upwind, fields>(in, i, r[i], inv_r[i], inv_dx, inv_rx[i], d2_fx[i], k6);
       const double d1_scale = inv_dx * inv_rx[i];
       // The shift whose d_t Delta^r drives B: the full shift for the plain Gamma-driver,
       // beta_GD alone with the horizon shift (H2).
@@ -261,11 +268,13 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
         p.adv[Var::beta] = fd::advect_from<order, upwind>(
             p.f[Var::beta] * d1_scale, fd::upwind_sum<order, upwind>(f), k6[Var::beta]);
       }
-      const Rhs rhs = equations.rhs(p, gauge, gd);
+      const Rhs rhs = equations.template rhs<M>(p, gauge, gd);
       const double ko = ko_scale * inv_rx[i];
 #pragma GCC unroll 16
-      for (std::size_t v = 0; v < n_fields; ++v)
-        out0[v * nt + i] = rhs.values[v] + ko * k6.values[v];
+      for (std::size_t k = 0; k < n_fields; ++k) {
+        const std::size_t v = index(fields.rows()[k].var);
+        out0[k * nt + i] = rhs.values[v] + ko * k6.values[v];
+      }
     }
   }
 }

@@ -93,7 +93,8 @@ struct Z4cParams {
 
 struct RhsParams {
   Formulation formulation = Formulation::bssn;
-  Z4cParams z4c; ///< Z4c only
+  Matter matter = Matter::none; ///< the matter evolved besides (Sec. 19)
+  Z4cParams z4c;                ///< Z4c only
   Gauge gauge;
   double ko_sigma = 0.1; ///< Kreiss-Oliger strength (0 switches dissipation off)
   AdvectionParams advection;

@@ -20,8 +20,9 @@ using Variant = HorizonShiftParams::Variant;
 template <Variant variant>
 struct BssnStudyVariant {
   static constexpr Formulation formulation = Formulation::bssn;
-  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
+  template <class M>
   [[gnu::always_inline]] Rhs rhs(PointData p, const Gauge& gauge, Shift gd) const {
+    static_assert(M::matter == Matter::none, "the study's variants are of vacuum BSSN");
     if constexpr (variant == Variant::no_shift_derivatives) {
       p.d[Var::beta] = gd.d_beta; // the full shift's value, but beta_GD's derivatives
       p.dd[Var::beta] = gd.dd_beta;
@@ -43,15 +44,17 @@ void GbssnRhs::interior_study_variant(const State& u, State& dudt) const {
   constexpr fd::Upwind lopsided = fd::Upwind::lopsided;
   switch (params_.horizon_shift.variant) { // dispatched once per call, not per point
   case Variant::no_shift_derivatives:
-    return interior<BssnStudyVariant<Variant::no_shift_derivatives>, 4, lopsided, true>({}, u,
-                                                                                        dudt);
-  case Variant::no_shift_second_derivatives:
-    return interior<BssnStudyVariant<Variant::no_shift_second_derivatives>, 4, lopsided, true>(
+    return interior<BssnStudyVariant<Variant::no_shift_derivatives>, Vacuum, 4, lopsided, true>(
         {}, u, dudt);
+  case Variant::no_shift_second_derivatives:
+    return interior<BssnStudyVariant<Variant::no_shift_second_derivatives>, Vacuum, 4, lopsided,
+                    true>({}, u, dudt);
   case Variant::delta_rhs_from_gd:
-    return interior<BssnStudyVariant<Variant::delta_rhs_from_gd>, 4, lopsided, true>({}, u, dudt);
+    return interior<BssnStudyVariant<Variant::delta_rhs_from_gd>, Vacuum, 4, lopsided, true>({}, u,
+                                                                                             dudt);
   case Variant::driver_full_shift:
-    return interior<BssnStudyVariant<Variant::driver_full_shift>, 4, lopsided, true>({}, u, dudt);
+    return interior<BssnStudyVariant<Variant::driver_full_shift>, Vacuum, 4, lopsided, true>({}, u,
+                                                                                             dudt);
   case Variant::consistent:
     break;
   }

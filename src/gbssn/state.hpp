@@ -1,8 +1,8 @@
-// The evolved state: the registry variables its formulation evolves (core/registry.hpp:
-// evolved()) on all points (ghosts included), variable-major, so that each field is one
-// contiguous array: u[index(v) * n_total + i]. The state carries its formulation as a tag, set
-// where it is made (make_state) and passed on with its shape (fit): nothing infers it from a
-// size.
+// The evolved state: the registry variables of its Fields (core/registry.hpp: its formulation's
+// rows, then its matter's) on all points (ghosts included), variable-major, so that each field
+// is one contiguous array: u[fields.slot(v) * n_total + i]. The state carries its Fields as a
+// tag, set where it is made (make_state) and passed on with its shape (fit): nothing infers
+// them from a size.
 #pragma once
 
 #include "core/registry.hpp"
@@ -22,24 +22,26 @@ public:
   using const_iterator = std::vector<double>::const_iterator;
 
   State() = default;
-  /// n_evolved(formulation) rows of n_total points each, all `value`.
-  State(Formulation formulation, std::size_t n_total, double value = 0.0)
-      : formulation_(formulation), values_(n_evolved(formulation) * n_total, value) {}
+  /// fields.size() rows of n_total points each, all `value`.
+  State(Fields fields, std::size_t n_total, double value = 0.0)
+      : fields_(fields), values_(fields.size() * n_total, value) {}
   /// The values as they are laid out (a checkpoint's): their count must be whole rows.
-  State(Formulation formulation, std::vector<double> values, std::size_t n_total)
-      : formulation_(formulation), values_(std::move(values)) {
-    if (values_.size() != n_evolved(formulation) * n_total)
-      throw std::invalid_argument("a state's values are not its formulation's rows");
+  State(Fields fields, std::vector<double> values, std::size_t n_total)
+      : fields_(fields), values_(std::move(values)) {
+    if (values_.size() != fields.size() * n_total)
+      throw std::invalid_argument("a state's values are not its fields' rows");
   }
 
-  Formulation formulation() const { return formulation_; }
+  Fields fields() const { return fields_; }
+  Formulation formulation() const { return fields_.formulation; }
+  Matter matter() const { return fields_.matter; }
   /// The registry rows this state holds, in order.
-  std::span<const VarInfo> vars() const { return evolved(formulation_); }
+  std::span<const VarInfo> vars() const { return fields_.rows(); }
 
-  /// The formulation and size of `other`, values kept where the sizes agree (as
+  /// The fields and size of `other`, values kept where the sizes agree (as
   /// std::vector::resize): the stepper's stages and scratch take their state's shape.
   void fit(const State& other) {
-    formulation_ = other.formulation_;
+    fields_ = other.fields_;
     values_.resize(other.values_.size());
   }
 
@@ -58,19 +60,20 @@ public:
   friend bool operator==(const State&, const State&) = default;
 
 private:
-  Formulation formulation_ = Formulation::bssn;
+  Fields fields_;
   std::vector<double> values_;
 };
 
-inline State make_state(const Grid& grid, Formulation formulation) {
-  return State(formulation, grid.n_total());
+inline State make_state(const Grid& grid, Fields fields) {
+  return State(fields, grid.n_total());
 }
 
+/// v's row of `u` (a variable the state holds).
 inline std::span<double> field(State& u, const Grid& grid, Var v) {
-  return {u.data() + index(v) * grid.n_total(), grid.n_total()};
+  return {u.data() + u.fields().slot(v) * grid.n_total(), grid.n_total()};
 }
 inline std::span<const double> field(const State& u, const Grid& grid, Var v) {
-  return {u.data() + index(v) * grid.n_total(), grid.n_total()};
+  return {u.data() + u.fields().slot(v) * grid.n_total(), grid.n_total()};
 }
 
 /// Fill the ghost cells at the origin from their interior mirrors by each variable's parity.

@@ -47,7 +47,6 @@ PointData diagnosed(PointData p) {
 /// Z4c as a policy of the point loop, beside Bssn (gbssn/equations.hpp), with its damping.
 struct Z4c {
   static constexpr Formulation formulation = Formulation::z4c;
-  static constexpr std::size_t n = n_evolved(formulation); ///< registry rows evolved
   Z4cParams params;
   /// 2 where the lapse is driven by the ADM K = K-hat + 2 Theta, 0 for K-hat: a weight, not a
   /// switch, so that the point loop vectorises (a bool tested in the loop stopped it: 5 times
@@ -75,6 +74,8 @@ struct Z4c {
     return gbssn1d::rhs_Delta_r(p, m, s) - (2.0 / 3.0) * p.f[alpha] * m.inv_a * p.d[Theta]
            - 2.0 * p.f[alpha] * kappa1 * G_r;
   }
+  /// With the matter M (gbssn/matter.hpp): its rows, and its terms (S4)-(S5).
+  template <class M = Vacuum>
   [[gnu::always_inline]] Rhs rhs(const PointData& p, const Gauge& gauge,
                                  const Shift& gauge_shift) const {
     using enum Var;
@@ -98,8 +99,20 @@ struct Z4c {
     rhs[Delta_r] = rhs_Delta_r(p, m, shift, kappa1);
     // (G1)-(G3): the lapse is driven by K-hat (p.f[K]), or by the ADM K (a 0 or 2 weight, so that
     // the loop stays branch-free); B by Z4c's d_t Delta^r of the gauge shift
-    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1), gauge_shift,
-                             lapse_theta * theta, rhs);
+    if constexpr (M::matter == Matter::none) {
+      MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1), gauge_shift,
+                               lapse_theta * theta, rhs);
+    } else {
+      // (S1)-(S5): the matter's rows (K the ADM K), its terms in K-hat, A_a, Delta^r and Theta
+      const StressEnergy s = M::stress_energy(p, m.inv_a);
+      add_stress_energy(p, s, rhs);
+      rhs[Theta] += -8.0 * std::numbers::pi * p.f[alpha] * s.rho;
+      const double matter_Delta_r = stress_energy_Delta_r(p, m.inv_a, s);
+      rhs[Delta_r] += matter_Delta_r;
+      M::rhs(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, K_adm, rhs);
+      MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1) + matter_Delta_r,
+                               gauge_shift, lapse_theta * theta, rhs);
+    }
     return rhs;
   }
 };

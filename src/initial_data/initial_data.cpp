@@ -1,8 +1,12 @@
 #include "initial_data/initial_data.hpp"
 
+#include "initial_data/scalar_pulse.hpp"
 #include "initial_data/trumpet_solutions.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <stdexcept>
 #include <vector>
 
 namespace gbssn1d {
@@ -63,15 +67,54 @@ SliceValues onelog_trumpet(const TrumpetSample& t, double C) {
   return s;
 }
 
-} // namespace
-
-State initial_data(const Grid& grid, const InitialDataParams& params, Formulation formulation) {
-  // Z4c: Theta = 0 (its value at infinity, flat()), so that K-hat = K (Sec. 17)
-  State u = make_state(grid, formulation);
+/// Time-symmetric data of the scalar field's pulse (Sec. 19) on flat space or a puncture: chi
+/// from the conformal factor the Hamiltonian constraint gives, Phi, Pi = 0; the lapse as the
+/// wormhole's (psi^-2 precollapsed, with the whole psi), 1 on flat data.
+void scalar_pulse(State& u, const Grid& grid, const InitialDataParams& params) {
+  const bool puncture = params.kind == InitialDataKind::wormhole;
+  if (!puncture && params.kind != InitialDataKind::flat)
+    throw std::invalid_argument("the scalar field's data are flat or a puncture's");
+  const ScalarPulseData data(params.scalar, puncture ? params.M : 0.0);
   const auto& r = grid.r();
   const std::size_t n = grid.n_total();
+  std::vector<std::size_t> order(n); // the points by |r|: the ghosts at the origin mirror
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return std::abs(r[i]) < std::abs(r[j]); });
+  std::vector<double> radii(n);
+  for (std::size_t k = 0; k < n; ++k)
+    radii[k] = std::abs(r[order[k]]);
+  const std::vector<double> psi = data.psi(radii);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    SliceValues s = flat();
+    const double psi2 = psi[k] * psi[k];
+    s[Var::chi] = 1.0 / (psi2 * psi2);
+    if (puncture && params.lapse0 == InitialLapse::precollapsed)
+      s[Var::alpha] = 1.0 / psi2;
+    s[Var::Phi] = data.Phi(radii[k]);
+    s[Var::Pi] = 0.0;
+    store(u, grid, i, s, r[i] < 0 ? -1.0 : 1.0);
+  }
+}
+
+} // namespace
+
+State initial_data(const Grid& grid, const InitialDataParams& params, Fields fields) {
+  // Z4c: Theta = 0 (its value at infinity, flat()), so that K-hat = K (Sec. 17)
+  State u = make_state(grid, fields);
+  const auto& r = grid.r();
+  const std::size_t n = grid.n_total();
+  if (fields.matter == Matter::scalar) {
+    scalar_pulse(u, grid, params);
+    return u;
+  }
 
   switch (params.kind) {
+  case InitialDataKind::flat:
+    for (std::size_t i = 0; i < n; ++i)
+      store(u, grid, i, flat(), r[i] < 0 ? -1.0 : 1.0);
+    break;
   case InitialDataKind::wormhole:
     for (std::size_t i = 0; i < n; ++i)
       store(u, grid, i, wormhole(std::abs(r[i]), params), r[i] < 0 ? -1.0 : 1.0);

@@ -12,7 +12,10 @@ namespace gbssn1d {
 ///                   K = A_a = Delta^r = beta = B = 0, alpha = 1 or psi^-2;
 ///  maximal-trumpet: Baumgarte-Naculich analytic trumpet with its lapse and shift (Sec. 9.5);
 ///  1log-trumpet:    stationary 1+log trumpet with its lapse and shift, B = 0 (Sec. 13);
-/// with the variables of `formulation` (Z4c: Theta = 0, K-hat = K).
-State initial_data(const Grid& grid, const InitialDataParams& params, Formulation formulation);
+///  flat:            Minkowski space, alpha = 1, every other field at its value at infinity;
+/// with the variables of `fields` (Z4c: Theta = 0, K-hat = K). With the scalar field (flat or
+/// wormhole data): its time-symmetric pulse, params.scalar, with the conformal factor the
+/// Hamiltonian constraint gives (initial_data/scalar_pulse.hpp).
+State initial_data(const Grid& grid, const InitialDataParams& params, Fields fields);
 
 } // namespace gbssn1d

@@ -30,9 +30,9 @@ std::vector<std::string> series_columns(Formulation formulation) {
   return cols;
 }
 
-std::vector<std::string> profile_columns(Formulation formulation) {
+std::vector<std::string> profile_columns(Fields fields) {
   std::vector<std::string> cols{"r"};
-  for (const auto& entry : evolved(formulation))
+  for (const auto& entry : fields.rows())
     cols.emplace_back(entry.name);
   for (const char* name :
        {"H", "M_r", "G_r", "R_areal", "Theta_plus", "m_ms", "beta_GD", "beta_H", "level"})
@@ -65,21 +65,20 @@ const char* const horizon_legend =
 
 } // namespace
 
-Output::Output(const std::filesystem::path& dir, const std::string& parameter_header,
-               Formulation formulation)
-    : dir_(dir), formulation_(formulation),
-      series_(dir / "timeseries.dat", parameter_header + legend(formulation),
-              series_columns(formulation)),
-      profiles_(dir / "profiles.dat", parameter_header, profile_columns(formulation)),
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields)
+    : dir_(dir), fields_(fields),
+      series_(dir / "timeseries.dat", parameter_header + legend(fields.formulation),
+              series_columns(fields.formulation)),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields)),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
 
-Output::Output(const std::filesystem::path& dir, const std::string& parameter_header,
-               Formulation formulation, const OutputMarks& m)
-    : dir_(dir), formulation_(formulation),
-      series_(dir / "timeseries.dat", parameter_header + legend(formulation),
-              series_columns(formulation), m.series_header, m.series),
-      profiles_(dir / "profiles.dat", parameter_header, profile_columns(formulation),
-                m.profiles_header, m.profiles),
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
+               const OutputMarks& m)
+    : dir_(dir), fields_(fields),
+      series_(dir / "timeseries.dat", parameter_header + legend(fields.formulation),
+              series_columns(fields.formulation), m.series_header, m.series),
+      profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields), m.profiles_header,
+                m.profiles),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns(),
                 m.horizons_header, m.horizons),
       first_block_(m.profiles <= m.profiles_header) {}
@@ -144,7 +143,7 @@ void Output::write_series(const SeriesRow& row) {
     line.push_back(' ');
     append_scientific(line, v);
   }
-  for (const std::string_view column : traits(formulation_).extra_series) {
+  for (const std::string_view column : traits(fields_.formulation).extra_series) {
     line.push_back(' ');
     append_scientific(line, row.extra(column));
   }
@@ -185,14 +184,14 @@ void Output::write_profiles(double t, const State& u, const Grid& grid, const De
     profiles_.print("\n\n");
   first_block_ = false;
   profiles_.print("# t = {}\n", time_text(t));
-  const FormulationTraits& f = traits(formulation_);
+  const FormulationTraits& f = traits(fields_.formulation);
   fmt::memory_buffer line;
   for (std::size_t k = 0; k < grid.n_interior(); ++k) {
     const std::size_t i = grid.first_interior() + k;
     line.clear();
     append_scientific(line, grid.r()[i]);
     const double beta_GD = field(u, grid, Var::beta)[i];
-    for (const auto& entry : f.rows()) {
+    for (const auto& entry : fields_.rows()) {
       double v = field(u, grid, entry.var)[i];
       if (entry.var == Var::beta)
         v = beta_GD + beta_H[i];

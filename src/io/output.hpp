@@ -42,7 +42,7 @@ struct SeriesRow {
 /// Column names, in order: a Z4c run's series has G_L2_R, Theta_L2_ext and Theta_L2_R besides,
 /// its profiles Theta (and K is the ADM K = K-hat + 2 Theta in both).
 std::vector<std::string> series_columns(Formulation formulation);
-std::vector<std::string> profile_columns(Formulation formulation);
+std::vector<std::string> profile_columns(Fields fields);
 std::vector<std::string> horizon_columns();
 
 /// Where each output file stood at a checkpoint (bytes), its header's length, and the FNV-1a
@@ -58,11 +58,10 @@ class Output {
 public:
   /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
   /// one "key = value" per line; `formulation` the run's (its columns).
-  Output(const std::filesystem::path& dir, const std::string& parameter_header,
-         Formulation formulation);
+  Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields);
   /// A resumed run: the files of `dir` cut back to `marks`, with the new header.
-  Output(const std::filesystem::path& dir, const std::string& parameter_header,
-         Formulation formulation, const OutputMarks& marks);
+  Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
+         const OutputMarks& marks);
 
   /// Throws OutputError unless every file of `dir` is there, at least as long as its mark, and
   /// (marks.hashed) its rows up to the mark are the bytes the run wrote: what the resuming
@@ -87,7 +86,7 @@ public:
 
 private:
   std::filesystem::path dir_;
-  Formulation formulation_;
+  Fields fields_;
   DataFile series_;
   DataFile profiles_;
   DataFile horizons_;

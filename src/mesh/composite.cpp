@@ -67,7 +67,7 @@ Composite::gather_interior(const std::vector<std::span<const double>>& per_level
 
 void Composite::gather_state(const std::vector<State>& u, State& out) const {
   const auto vars = u.front().vars();
-  out = make_state(grid_, u.front().formulation());
+  out = make_state(grid_, u.front().fields());
   for (const auto& entry : vars) {
     std::vector<std::span<const double>> arrays;
     for (std::size_t l = 0; l < layout_->levels(); ++l)

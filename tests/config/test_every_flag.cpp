@@ -118,6 +118,7 @@ const std::string trumpet = "--id 1log-trumpet --grid uniform --N 32 --rmax 16" 
 const std::string shifted = trumpet + " --rahA 0.5 --rah0 1";
 const std::string boxes = "--id 1log-trumpet --grid boxes --N 32 --rmax 16" + rows;
 const std::string z4c = trumpet + " --formulation z4c";
+const std::string pulse = "--id flat --matter scalar --grid uniform --N 32 --rmax 16" + rows;
 
 /// A row of A: `flag value` (value "" for a switch) acts on `base`, which does not give it.
 struct Acting {
@@ -171,6 +172,10 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
       {"kappa1-hole", z4c, "0"},
       {"kappa2", z4c, "0.5"},
       {"z4c-lapse-adm", z4c, ""},
+      {"matter", "--id flat --grid uniform --N 32 --rmax 16" + rows, "scalar"},
+      {"scalar-amp", pulse, "0.02"},
+      {"scalar-r0", pulse, "8"},
+      {"scalar-width", pulse, "1.5"},
       // gauge and numerics
       {"eta", trumpet, "1"},
       {"advective-shift", trumpet, ""},
@@ -407,6 +412,8 @@ const std::map<std::string, std::string>& no_numeric_limit() {
   static const std::map<std::string, std::string> flags{
       {"--time-interp", "a choice, refused without two or more boxes: no number"},
       {"--no-subcycling", "a switch, refused without two or more boxes: no number"},
+      {"--matter", "a choice, refused with other orders, stencils, data or study variants: no "
+                   "number"},
       {"--upwind", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--formulation", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--gbssn-volume", "a choice, refused as eulerian with --formulation z4c: no number"},
@@ -497,6 +504,13 @@ TEST_CASE("every flag's bound: each limit validate() enforces is refused just be
       {"--rah-rcut", uniform, "rah-rcut", "0", text(tiny), "must be > 0"},
       {"--rah-chi-smooth", uniform, "rah-chi-smooth", "0", text(tiny), "must be > 0"},
       {"--rah-ramp", uniform, "rah-ramp", text(-tiny), "0", "must be >= 0"},
+      // the scalar field's pulse: on the grid, and with time-symmetric data
+      {"--scalar-amp", pulse, "scalar-amp", "0.3", "0.1", "gives no time-symmetric data"},
+      {"--scalar-r0", pulse, "scalar-r0", text(-tiny), "0", "must be >= 0"},
+      {"--scalar-r0", pulse, "scalar-r0", "16", text(down(16.0)), "must lie below --rmax"},
+      {"--scalar-width", pulse, "scalar-width", "0", "", "must be > 0",
+       "a width just above 0 is a pulse no grid holds: accepted, not run here"},
+      {"--scalar-width", pulse, "scalar-width", "16", text(down(16.0)), "must lie below --rmax"},
       // Z4c's damping
       {"--kappa1", z4c_uniform, "kappa1", text(-tiny), "0", "must be >= 0"},
       {"--kappa1-hole", z4c_uniform + " --kappa1 0.5", "kappa1-hole", text(down(0.5)), "0.5",

@@ -349,7 +349,10 @@ TEST_CASE("parities: the registry matches the tensor types (Sec. 7)") {
                                                          {Var::K, +1},
                                                          {Var::A_a, +1},
                                                          {Var::Delta_r, -1},
-                                                         {Var::Theta, +1}}};
+                                                         {Var::Theta, +1},
+                                                         // scalars: Phi, Pi = n^a d_a Phi
+                                                         {Var::Phi, +1},
+                                                         {Var::Pi, +1}}};
   for (const auto& [var, parity] : by_type)
     CHECK(info(var).parity == parity);
 }

@@ -386,8 +386,10 @@ TEST_CASE("MaximalTrumpet near the puncture: alpha, R and the initial data's fie
       // the initial data's fields at a cell on rho M (Sec. 9 item 5): a grid of 4 cells whose
       // second cell's centre is r = 1.5 dr
       const gbssn1d::Grid grid(gbssn1d::RadialMap::uniform(rho * M / 1.5 * 4.0), 4);
-      const gbssn1d::State u0 = gbssn1d::initial_data(
-          grid, {gbssn1d::InitialDataKind::maximal_trumpet, M}, gbssn1d::Formulation::bssn);
+      gbssn1d::InitialDataParams id;
+      id.kind = gbssn1d::InitialDataKind::maximal_trumpet;
+      id.M = M;
+      const gbssn1d::State u0 = gbssn1d::initial_data(grid, id, gbssn1d::Formulation::bssn);
       const std::size_t i = grid.first_interior() + 1;
       const long double r = grid.r()[i], RM = M * R, R3 = RM * RM * RM;
       REQUIRE(rel_diff(grid.r()[i], rho * M) < 1e-15);

@@ -160,3 +160,34 @@ eulerian_outputs.update({
 assert list(eulerian_outputs) == list(outputs)
 write_table('pointwise_reference_eulerian.dat', 'BSSN, Eulerian choice sigma = 0', fields, {'eta': eta},
             eulerian_outputs)
+
+# The massless scalar field (Sec. 19) in BSSN and in Z4c: the same profiles with Phi and Pi;
+# (S1)-(S2) for their rows, (S4)-(S5) added to K (K-hat), A_a, Delta^r (also in B's driver) and
+# Theta, and the constraints minus their sources (S6). Pi's K is the ADM trace.
+scalar_fields = {'Phi': sp.Rational(1, 5) * sp.exp(-(r - 2)**2 / 3) + r / 40,
+                 'Pi': sp.Rational(3, 20) * sp.sin(r) * sp.exp(-r / 4) - sp.Rational(1, 30)}
+Phi_, Pi_ = scalar_fields['Phi'], scalar_fields['Pi']
+
+
+def with_scalar(fields_in, outputs_in, rates, K_trace, gauge_K, theta=False):
+    src = ns['scalar_sources'](a, chi, Phi_, Pi_)
+    mt = ns['matter_terms'](a, alpha, src)
+    sr = ns['scalar_rhs'](a, b, chi, K_trace, alpha, beta, Phi_, Pi_)
+    L_m = rates['L'] + mt['L']
+    g_a = ns['gauge_rhs'](gauge_K, alpha, beta, Bv, L, L_m, eta, advect=True)
+    g_n = ns['gauge_rhs'](gauge_K, alpha, beta, Bv, L, L_m, eta, advect=False)
+    out = dict(outputs_in)
+    out.update({'rhs_B': g_n['B'], 'rhs_B_advective': g_a['B'],
+                'rhs_K': rates['K'] + mt['K'], 'rhs_A_a': rates['Aa'] + mt['Aa'],
+                'rhs_Delta_r': L_m, 'rhs_Phi': sr['Phi'], 'rhs_Pi': sr['Pi'],
+                'H': outputs_in['H'] + mt['H'], 'M_r': outputs_in['M_r'] + mt['M']})
+    if theta:
+        out['rhs_Theta'] = rates['Theta'] + mt['Theta']
+    return dict(fields_in, **scalar_fields), out
+
+
+sf, so = with_scalar(fields, outputs, rhs, K, K)
+write_table('pointwise_reference_scalar.dat', 'BSSN with the scalar field', sf, {'eta': eta}, so)
+zsf, zso = with_scalar(z4c_fields, z4c_outputs, z, K_adm, Kh, theta=True)
+write_table('pointwise_reference_z4c_scalar.dat', 'Z4c with the scalar field', zsf,
+            {'eta': eta, 'kappa1': kappa1, 'kappa2': kappa2}, zso)

@@ -1,0 +1,107 @@
+// The massless scalar field (docs/gbssn1d-equations.md Sec. 19) against solutions nobody here
+// wrote: a weak pulse on flat space is the flat spherical wave, r Phi = (u0(r - t) + u0(r + t))/2
+// with u0(x) = x A exp(-((|x| - r0)/w)^2) (d'Alembert, Pi = 0 at t = 0); the conformal factor of
+// time-symmetric data solves the Hamiltonian constraint, so H at t = 0 converges at the
+// differences' order.
+
+#include "../simulation_support.hpp"
+
+#include "config/params.hpp"
+#include "diagnostics/constraints.hpp"
+#include "evolution/simulation.hpp"
+#include "gbssn/state.hpp"
+
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+using namespace gbssn1d;
+
+namespace {
+
+/// The flat spherical wave of a Gaussian pulse of amplitude A at r0 with width w, time-symmetric.
+double flat_wave(double r, double t, double A, double r0, double w) {
+  const auto u0 = [&](double x) {
+    const double q = (std::abs(x) - r0) / w;
+    return x * A * std::exp(-q * q);
+  };
+  return 0.5 * (u0(r - t) + u0(r + t)) / r;
+}
+
+/// The flags of the pulse on flat space, uniform rmax 40, N cells, BSSN or Z4c.
+Params flat_pulse(int N, double amplitude, Formulation formulation) {
+  Params p;
+  p.id = InitialDataKind::flat;
+  p.matter = Matter::scalar;
+  p.formulation = formulation;
+  p.scalar_amp = amplitude;
+  p.scalar_r0 = 10.0;
+  p.scalar_width = 2.0;
+  p.grid = RadialGrid::uniform;
+  p.rmax = 40.0;
+  p.N = N;
+  p.tmax = 8.0;
+  return p;
+}
+
+/// The largest |Phi - flat_wave| / A over the interior at t = 8.
+double wave_error(int N, double amplitude, Formulation formulation) {
+  Simulation sim = gbssn1d::testing::simulation(flat_pulse(N, amplitude, formulation));
+  sim.run(nullptr);
+  REQUIRE(sim.time() == doctest::Approx(8.0));
+  const Grid& g = sim.grid();
+  const auto Phi = field(sim.state(), g, Var::Phi);
+  double worst = 0.0;
+  for (std::size_t i = g.first_interior(); i < g.end_interior(); ++i)
+    worst = std::max(worst, std::abs(Phi[i] - flat_wave(g.r()[i], 8.0, amplitude, 10.0, 2.0)));
+  return worst / amplitude;
+}
+
+} // namespace
+
+TEST_CASE("the scalar field on flat space: a weak pulse is the flat spherical wave at t = 8, "
+          "within 1e-3 A at N = 800 and converging at order 3.5 or more, in BSSN and Z4c") {
+  for (const Formulation f : {Formulation::bssn, Formulation::z4c}) {
+    std::vector<double> e;
+    for (const int N : {200, 400, 800})
+      e.push_back(wave_error(N, 1e-6, f));
+    const double order_1 = std::log2(e[0] / e[1]), order_2 = std::log2(e[1] / e[2]);
+    INFO(fmt::format("formulation {}: max |Phi - exact|/A at N = 200, 400, 800: {:.3e} {:.3e} "
+                     "{:.3e}, orders {:.2f} {:.2f}",
+                     static_cast<int>(f), e[0], e[1], e[2], order_1, order_2));
+    CHECK(e[2] < 1e-3);
+    CHECK(order_1 >= 3.5);
+    CHECK(order_2 >= 3.5);
+  }
+}
+
+TEST_CASE("the scalar field's data: the Hamiltonian constraint with its source converges at 4th "
+          "order at t = 0 (the conformal factor from the constraint), far below 16 pi rho") {
+  // A = 0.1: rho and the conformal factor's departure from 1 are far above round-off
+  std::vector<double> h;
+  for (const int N : {200, 400, 800}) {
+    const Simulation sim = gbssn1d::testing::simulation(flat_pulse(N, 0.1, Formulation::bssn));
+    const DerivedProfiles d = derived_profiles(sim.state(), sim.grid());
+    double worst = 0.0;
+    for (const double v : d.H)
+      worst = std::max(worst, std::abs(v));
+    h.push_back(worst);
+  }
+  INFO(fmt::format("max |H| at t = 0, N = 200, 400, 800: {:.3e} {:.3e} {:.3e}", h[0], h[1], h[2]));
+  CHECK(std::log2(h[0] / h[1]) >= 3.5);
+  CHECK(std::log2(h[1] / h[2]) >= 3.5);
+  // without its source H would be R alone, the pulse's 16 pi rho: far from small
+  const Simulation sim = gbssn1d::testing::simulation(flat_pulse(800, 0.1, Formulation::bssn));
+  const Grid& g = sim.grid();
+  const auto Phi = field(sim.state(), g, Var::Phi);
+  double rho_max = 0.0;
+  for (std::size_t i = g.first_interior() + 1; i + 1 < g.end_interior(); ++i) {
+    const double dPhi = (Phi[i + 1] - Phi[i - 1]) / (g.r()[i + 1] - g.r()[i - 1]);
+    rho_max = std::max(rho_max, 0.5 * dPhi * dPhi); // chi/a ~ 1
+  }
+  CHECK(16.0 * std::numbers::pi * rho_max > 1e4 * h[2]);
+}
