@@ -26,15 +26,12 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 
 namespace {
 
 Params trumpet(int n, double rmax, double tmax) {
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.N = n;
-  p.rmax = rmax;
+  Params p = small_trumpet_params(n, rmax);
   p.tmax = tmax;
   p.dt_series = 1.0;
   return p;
