@@ -7,6 +7,17 @@
 
 namespace gbssn1d::testing {
 
+/// A small, fast 1+log trumpet: `n` cells of a uniform grid out to r = `rmax` (M = 1; every
+/// other parameter its default, tmax and dt_series among them). A test sets what else it needs.
+inline Params small_trumpet_params(int n, double rmax) {
+  Params p;
+  p.id = InitialDataKind::onelog_trumpet;
+  p.grid = RadialGrid::uniform;
+  p.N = n;
+  p.rmax = rmax;
+  return p;
+}
+
 /// `p` with its defaults resolved; throws ParamError as the command line would.
 inline ResolvedParams validated(const Params& p) {
   ResolvedParams r = resolve(p);

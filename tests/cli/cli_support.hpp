@@ -1,5 +1,5 @@
-// Helpers of the command-line tests: the real executable run with arguments, and what a refusal
-// must look like.
+// Helpers of the command-line tests: the real executable run with arguments (to its end, or
+// stopped by a signal), and what a refusal must look like.
 #pragma once
 
 #include "../test_support.hpp"
@@ -48,6 +48,32 @@ inline Result run(const std::string& args) {
   std::filesystem::remove(err);
   std::filesystem::remove(out);
   return r;
+}
+
+/// When run_signalled stops its run: once each of `files` exists and is not empty (looked for
+/// every `poll` seconds, and no longer once the run has ended), `settle` seconds later (0: at
+/// once), by SIG`signal`. The run's stderr goes to `err`.
+struct SignalWhen {
+  std::vector<std::filesystem::path> files;
+  std::string signal; ///< TERM, INT, KILL, ...
+  double poll;
+  double settle = 0.0;
+  std::string err = "/dev/null";
+};
+
+/// The executable run in the background by sh with `args` (a shell command line after the
+/// program's name) and sent a signal as `when` says; std::system's status, whose WEXITSTATUS is
+/// the run's (128 + n when it died of signal n).
+inline int run_signalled(const std::string& args, const SignalWhen& when) {
+  std::ostringstream cmd;
+  cmd << "sh -c '" << GBSSN1D_EXECUTABLE << " " << args << " 2>" << when.err << " & p=$!;";
+  for (const std::filesystem::path& file : when.files)
+    cmd << " while [ ! -s " << file.string() << " ] && kill -0 $p 2>/dev/null; do sleep "
+        << when.poll << "; done;";
+  if (when.settle > 0.0)
+    cmd << " sleep " << when.settle << ";";
+  cmd << " kill -" << when.signal << " $p; wait $p; exit $?'";
+  return std::system(cmd.str().c_str());
 }
 
 inline int count_lines(const std::string& s) {

@@ -57,14 +57,11 @@ TEST_CASE("timeseries.dat ends with how the run ended: completed or stopped") {
 
 TEST_CASE("SIGTERM: the run finishes its step, keeps complete files, says so, exits 143") {
   const fs::path out = scratch("sigterm");
-  const std::string cmd =
-      "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-      + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
-        " --tmax 2000 --dt-profiles 1 --out "
-      + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
-      + "/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.1; done; sleep 0.5; kill -TERM $p; "
-        "wait $p; exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw =
+      run_signalled("evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+                    " --tmax 2000 --dt-profiles 1 --out "
+                        + out.string(),
+                    {.files = {out / "horizon.dat"}, .signal = "TERM", .poll = 0.1, .settle = 0.5});
   REQUIRE(WIFEXITED(raw));
   CHECK(WEXITSTATUS(raw) == 143);
   const std::string text = slurp(out / "timeseries.dat");
@@ -164,14 +161,11 @@ TEST_CASE("SIGHUP, SIGUSR1 and SIGUSR2 stop a run resumably, as SIGTERM does") {
   for (const auto& [name, status] :
        {std::pair{"HUP", 129}, std::pair{"USR1", 138}, std::pair{"USR2", 140}}) {
     const fs::path out = scratch(std::string("signal_") + name);
-    const std::string cmd =
-        "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-        + " evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
-          " --tmax 2000 --out "
-        + out.string() + " 2>/dev/null & p=$!; while [ ! -s " + out.string()
-        + "/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.05; done; sleep 0.2; kill -" + name
-        + " $p; wait $p; exit $?'";
-    const int raw = std::system(cmd.c_str());
+    const int raw = run_signalled(
+        "evolve --id 1log-trumpet --grid uniform --N 3200 --rmax 200"
+        " --tmax 2000 --out "
+            + out.string(),
+        {.files = {out / "horizon.dat"}, .signal = name, .poll = 0.05, .settle = 0.2});
     INFO(name);
     REQUIRE(WIFEXITED(raw));
     CHECK(WEXITSTATUS(raw) == status);

@@ -126,15 +126,14 @@ TEST_CASE("converge: a member's saved samples with a flipped byte are not reused
 
 TEST_CASE("converge interrupted: exit 130, and its files and message say they are partial") {
   const fs::path out = scratch("converge_sigint");
-  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-                          + " converge --N 800,1000,1200 -j 3 --grid uniform --rmax 100"
-                            " --id 1log-trumpet --tmax 200 --out "
-                          + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
-                          + out.string()
-                          + "/N1200/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.05; done; "
-                            "sleep 0.3; kill -INT $p;"
-                            " wait $p; exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw = run_signalled("converge --N 800,1000,1200 -j 3 --grid uniform --rmax 100"
+                                " --id 1log-trumpet --tmax 200 --out "
+                                    + out.string(),
+                                {.files = {out / "N1200" / "horizon.dat"},
+                                 .signal = "INT",
+                                 .poll = 0.05,
+                                 .settle = 0.3,
+                                 .err = out.string() + ".err"});
   REQUIRE(WIFEXITED(raw));
   CHECK(WEXITSTATUS(raw) == 130);
   const std::string err = slurp(out.string() + ".err");
@@ -347,12 +346,11 @@ TEST_CASE("converge killed (SIGKILL, no chance to write) continues when the same
   // before the members start). Each member's file is waited for: the members run in parallel,
   // and on a busy machine (CI, 2 cores, the tests run 3 at a time) N400 had none yet when
   // N600 had one.
-  const std::string cmd =
-      "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
-      + " 2>/dev/null & p=$!; for m in N400 N500 N600; do while [ ! -s " + out.string()
-      + "/$m/checkpoint.bin ] && kill -0 $p 2>/dev/null; do sleep 0.02; done; done; kill -KILL $p;"
-        " wait $p; exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw = run_signalled(
+      args.substr(1), {.files = {out / "N400" / "checkpoint.bin", out / "N500" / "checkpoint.bin",
+                                 out / "N600" / "checkpoint.bin"},
+                       .signal = "KILL",
+                       .poll = 0.02});
   REQUIRE(WIFEXITED(raw));
   REQUIRE(WEXITSTATUS(raw) == 128 + 9);
   CHECK(fs::exists(out / "config.toml"));
@@ -390,15 +388,12 @@ TEST_CASE("converge: a member's failed write (file-size limit) exits 1, a write 
 TEST_CASE("converge interrupted with members still to run: no new member starts, and the running "
           "one says it stopped (a checkpoint kept), not that it failed") {
   const fs::path out = scratch("converge_sigint_j1");
-  const std::string cmd = "sh -c '" + std::string(GBSSN1D_EXECUTABLE)
-                          + " converge --N 400,500,600 -j 1 --grid uniform --rmax 50 --tmax 60 "
-                            "--out "
-                          + out.string() + " 2>" + out.string() + ".err & p=$!; while [ ! -s "
-                          + out.string()
-                          + "/N400/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.01; done; "
-                            "kill -INT $p; wait $p; "
-                            "exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw = run_signalled(
+      "converge --N 400,500,600 -j 1 --grid uniform --rmax 50 --tmax 60 --out " + out.string(),
+      {.files = {out / "N400" / "horizon.dat"},
+       .signal = "INT",
+       .poll = 0.01,
+       .err = out.string() + ".err"});
   REQUIRE(WIFEXITED(raw));
   const std::string err = slurp(out.string() + ".err");
   INFO(err);

@@ -73,12 +73,11 @@ TEST_CASE("converge: each member keeps --rah-hAH-file as the study read it and r
                            "0.5 --rah-hAH-file "
                            + file.string() + " --out " + out.string();
   // stopped (SIGTERM) once every member has written a checkpoint
-  const std::string cmd =
-      "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + args
-      + " 2>/dev/null & p=$!; for m in N200 N250 N300; do while [ ! -s " + out.string()
-      + "/$m/checkpoint.bin ] && kill -0 $p 2>/dev/null; do sleep 0.02; done; done; kill -TERM $p;"
-        " wait $p; exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw = run_signalled(
+      args.substr(1), {.files = {out / "N200" / "checkpoint.bin", out / "N250" / "checkpoint.bin",
+                                 out / "N300" / "checkpoint.bin"},
+                       .signal = "TERM",
+                       .poll = 0.02});
   REQUIRE(WIFEXITED(raw));
   REQUIRE(WEXITSTATUS(raw) == 128 + 15);
   const std::string read = slurp(file);

@@ -8,6 +8,7 @@
 #include <string>
 
 using namespace gbssn1d;
+using gbssn1d::testing::small_trumpet_params;
 using gbssn1d::testing::validated;
 
 // Each flag gets a value that is neither its default nor another flag's, so that a flag
@@ -143,11 +144,7 @@ TEST_CASE("--upwind biased warns where it measured worse: a throat coarser than 
       n += w.find(text) != std::string::npos;
     return n;
   };
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.rmax = 128.0;
-  p.N = 1024; // M/8
+  Params p = small_trumpet_params(1024, 128.0); // M/8
   p.upwind = fd::Upwind::biased;
   CHECK(warned(p, "spacing of 0.125 M at r = M") == 1);
   p.N = 1536; // M/12: where biased is better

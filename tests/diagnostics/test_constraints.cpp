@@ -17,6 +17,7 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 
 TEST_CASE("central_value is exact for even quadratics, on uniform and sinh grids") {
   for (const Grid& g :
@@ -85,11 +86,7 @@ TEST_CASE("the areal norm weights an end cell by its one-sided dR, an interior c
 TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("horizon_dat", true);
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.N = 400;
-  p.rmax = 20.0;
+  Params p = small_trumpet_params(400, 20.0);
   p.tmax = 1.0;
   p.dt_series = 0.5;
   Simulation sim = simulation(p);

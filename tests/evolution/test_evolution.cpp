@@ -36,6 +36,7 @@
 using namespace gbssn1d;
 using gbssn1d::testing::fit_order;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 using gbssn1d::testing::validated;
 
 namespace {
@@ -59,11 +60,8 @@ double rms_change(const Grid& g, std::span<const double> before, std::span<const
 TEST_CASE("1+log trumpet evolved to t = 10 M stays stationary at 4th order") {
   std::vector<double> h, d_alpha, d_chi, d_K, H_ext;
   for (int n : {600, 1200, 2400}) {
-    Params p;
-    p.id = InitialDataKind::onelog_trumpet;
-    p.grid = RadialGrid::uniform;
-    p.N = n;
-    p.rmax = 30.0; // the outer boundary cannot reach r <= 10 before t = 10
+    // rmax = 30: the outer boundary cannot reach r <= 10 before t = 10
+    Params p = small_trumpet_params(n, 30.0);
     p.tmax = 10.0;
     p.norm_rmin = 1.0;
     p.norm_rmax = 10.0;

@@ -20,6 +20,7 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 
 namespace {
 
@@ -177,11 +178,7 @@ TEST_CASE("the start's pilot: h_AH between the pilot's radii is the cubic throug
 // in time, not in steps.
 TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past each multiple "
           "of T and held in between, for any step") {
-  Params p;
-  p.grid = RadialGrid::uniform;
-  p.rmax = 8.0;
-  p.N = 64;
-  p.id = InitialDataKind::onelog_trumpet;
+  Params p = small_trumpet_params(64, 8.0);
   p.rahA = 0.5;
   p.rah0 = 1.0;
   p.ah_interval = 1.0;
@@ -227,11 +224,7 @@ TEST_CASE("--ah-interval: h_AH is searched for after the first step at or past e
 TEST_CASE("--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only") {
   for (const int every : {1, 2}) {
     CAPTURE(every);
-    Params p;
-    p.id = InitialDataKind::onelog_trumpet;
-    p.grid = RadialGrid::uniform;
-    p.N = 64;
-    p.rmax = 16.0;
+    Params p = small_trumpet_params(64, 16.0);
     p.rahA = 0.5;
     p.rah0 = 1.0;
     p.ah_every = AhEvery::parse(std::to_string(every));

@@ -15,15 +15,12 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 
 namespace {
 
 Params trumpet_run(int n, double tmax) {
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.N = n;
-  p.rmax = 20.0;
+  Params p = small_trumpet_params(n, 20.0);
   p.tmax = tmax;
   p.dt_series = 1.0;
   return p;

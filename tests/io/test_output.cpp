@@ -26,6 +26,7 @@
 
 using namespace gbssn1d;
 using gbssn1d::testing::simulation;
+using gbssn1d::testing::small_trumpet_params;
 
 TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields, norms)") {
   namespace fs = std::filesystem;
@@ -79,11 +80,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
 TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)") {
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("decimal_times", true);
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.N = 60;
-  p.rmax = 20.0;
+  Params p = small_trumpet_params(60, 20.0);
   p.tmax = 3.05; // the last row at tmax, not a multiple of the cadence
   p.dt_series = 0.1;
   p.dt_profiles = 0.7;
@@ -183,11 +180,7 @@ TEST_CASE("profiles.dat: beta is beta_GD + beta_H, beta_GD the evolved shift, wi
           "shift on") {
   namespace fs = std::filesystem;
   const fs::path dir = gbssn1d::testing::scratch("beta_columns", true);
-  Params p;
-  p.id = InitialDataKind::onelog_trumpet;
-  p.grid = RadialGrid::uniform;
-  p.N = 64;
-  p.rmax = 16.0;
+  Params p = small_trumpet_params(64, 16.0);
   p.tmax = 0.0;
   p.rahA = 0.5;
   p.rah0 = 1.2;

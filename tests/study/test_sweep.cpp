@@ -1,5 +1,6 @@
 // `sweep` as users run it: failing members, cluster task lines, reruns, signals, progress,
 // same runs and spikes; --config passed on by sweep and converge alike.
+#include "../cli/cli_support.hpp"
 #include "config/config_file.hpp"
 #include "config/params.hpp"
 #include "io/output.hpp"
@@ -29,6 +30,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using gbssn1d::testing::completed;
+using gbssn1d::testing::run_signalled;
 using gbssn1d::testing::run_study;
 using gbssn1d::testing::scratch;
 using gbssn1d::testing::slurp;
@@ -310,15 +312,11 @@ TEST_CASE("sweep: flags tied on one axis, crossed with resolutions, give fitted 
 
 TEST_CASE("sweep: SIGTERM reaches the running members, which stop with a checkpoint") {
   const fs::path out = scratch("sweep_sigterm");
-  const std::string cmd =
-      "sh -c '" + std::string(GBSSN1D_EXECUTABLE) + " sweep -j 2 --out " + out.string()
-      + " --sweep N=3200,3300,3400 --id 1log-trumpet --grid uniform"
-        " --rmax 200 --tmax 2000 --dt-profiles 100 2>/dev/null & p=$!;"
-        " while [ ! -s "
-      + out.string()
-      + "/N=3300/horizon.dat ] && kill -0 $p 2>/dev/null; do sleep 0.1; done; sleep 0.5;"
-        " kill -TERM $p; wait $p; exit $?'";
-  const int raw = std::system(cmd.c_str());
+  const int raw = run_signalled(
+      "sweep -j 2 --out " + out.string()
+          + " --sweep N=3200,3300,3400 --id 1log-trumpet --grid uniform"
+            " --rmax 200 --tmax 2000 --dt-profiles 100",
+      {.files = {out / "N=3300" / "horizon.dat"}, .signal = "TERM", .poll = 0.1, .settle = 0.5});
   REQUIRE(WIFEXITED(raw));
   CHECK(WEXITSTATUS(raw) == 143);
   const auto rows = summary_rows(out / "summary.dat");
