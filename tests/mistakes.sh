@@ -207,6 +207,9 @@ mistakes=(
   "the optional number flags' bounds skipped (NaN --eta accepted)|src/config/flag_table.cpp|            if (p.*member)\n              check(*(p.*member), num(*(p.*member)));|            if (false)\n              check(*(p.*member), num(*(p.*member)));|every bounded real flag refuses NaN given through the library, naming itself"
   "choice flags' names not checked by their rows|src/config/flag_table.cpp|              require_choice(flag, p.*member);|              (void)flag;|every choice flag refuses a name none of its choices has, listing them"
   "a given --kappa1 replaced by its rule when resolved|src/config/params.cpp|  r.kappa1_ = p.kappa1.value_or(kappa1_rule(p));|  r.kappa1_ = kappa1_rule(p);|every flag's bound: each limit validate() enforces is refused just beyond and accepted just inside"
+  "the conformal factor's source twice the Hamiltonian constraint's|src/initial_data/scalar_pulse.cpp|- std::numbers::pi * dphi * dphi|- 2.0 * std::numbers::pi * dphi * dphi|the scalar field's data: the Hamiltonian constraint with its source converges at 4th order at t = 0 (the conformal factor from the constraint), far below 16 pi rho"
+  "the scalar field's K Pi term with the wrong sign|src/gbssn/matter.hpp|    rhs[Pi] = p.adv[Pi] + p.f[alpha] * trace_K * p.f[Pi]|    rhs[Pi] = p.adv[Pi] - p.f[alpha] * trace_K * p.f[Pi]|the scalar field: point-wise RHS of BSSN and Z4c with matter agree with the symbolic reference (Sec. 19, V10)"
+  "B driven without the stress-energy's Delta^r term|src/gbssn/equations.hpp|rhs_Delta_r<volume>(p, m, gauge_shift) + matter_Delta_r,|rhs_Delta_r<volume>(p, m, gauge_shift),|the scalar field: point-wise RHS of BSSN and Z4c with matter agree with the symbolic reference (Sec. 19, V10)"
 )
 
 # Every test of the build, one a line: its number for `ctest -I`, the build target it needs
@@ -281,6 +284,8 @@ problem() {
 # at 419a0cb took 1820 s, its mistakes stage 1435 s of it, these eight rows about 300 s of
 # compiler time (measured per object file, 2026-12-07).
 whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
+               "the scalar field's K Pi term with the wrong sign"
+               "B driven without the stress-energy's Delta^r term"
                "the published driver stencil as the default again"
                "--force keeps the earlier run's checkpoint"
                "Z4c's ADM-K lapse driven by K-hat + Theta"

@@ -4,6 +4,7 @@
 // time-symmetric data solves the Hamiltonian constraint, so H at t = 0 converges at the
 // differences' order.
 
+#include "../cli/cli_support.hpp"
 #include "../simulation_support.hpp"
 
 #include "config/params.hpp"
@@ -16,7 +17,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
+#include <string>
 #include <vector>
 
 using namespace gbssn1d;
@@ -104,4 +107,63 @@ TEST_CASE("the scalar field's data: the Hamiltonian constraint with its source c
     rho_max = std::max(rho_max, 0.5 * dPhi * dPhi); // chi/a ~ 1
   }
   CHECK(16.0 * std::numbers::pi * rho_max > 1e4 * h[2]);
+}
+
+namespace {
+
+/// A hole of M = 1 (wormhole data, the default sinh grid at N = 400) with a shell of the scalar
+/// field, A = 0.04 at r0 = 10 with w = 2, to t = 80; `rahA` != 0: the horizon held at 1.0 M.
+struct Accreted {
+  double M_AH_start = 0.0, M_AH_end = 0.0, r_AH_end = 0.0;
+};
+Accreted accretion(double rahA) {
+  Params p;
+  p.id = InitialDataKind::wormhole;
+  p.matter = Matter::scalar;
+  p.scalar_amp = 0.04;
+  p.N = 400;
+  p.tmax = 80.0;
+  p.dt_series = 10.0;
+  p.rahA = rahA;
+  p.rah0 = 1.0;
+  Simulation sim = gbssn1d::testing::simulation(p);
+  Accreted a;
+  const auto start = sim.horizons().horizon();
+  REQUIRE(start);
+  a.M_AH_start = start->mass;
+  sim.run(nullptr);
+  const auto end = sim.horizons().horizon();
+  REQUIRE(end);
+  a.M_AH_end = end->mass;
+  a.r_AH_end = end->r;
+  return a;
+}
+
+} // namespace
+
+TEST_CASE("the scalar field's shell falls into the hole: M_AH grows by more than 10% by t = 80, "
+          "and with the horizon-adjusting shift r_AH ends at 1.0 +- 0.02 with the same M_AH") {
+  const Accreted left = accretion(0.0), held = accretion(0.5);
+  INFO(fmt::format("M_AH {:.9f} -> {:.9f}; held at h = 1: r_AH {:.5f}, M_AH {:.9f}",
+                   left.M_AH_start, left.M_AH_end, held.r_AH_end, held.M_AH_end));
+  CHECK(left.M_AH_end > 1.1 * left.M_AH_start);
+  CHECK(left.r_AH_end > 2.0); // left to grow, the horizon moves out
+  CHECK(std::abs(held.r_AH_end - 1.0) < 0.02);
+  CHECK(std::abs(held.M_AH_end - left.M_AH_end) < 2e-3 * left.M_AH_end);
+}
+
+TEST_CASE("converge: the scalar pulse at A = 0.01 on flat space converges at N = 200, 300, 400 to "
+          "t = 20 (exit 0), in BSSN and in Z4c") {
+  for (const std::string f : {"bssn", "z4c"}) {
+    const auto out = gbssn1d::testing::scratch("scalar_converge_" + f, true);
+    std::filesystem::remove_all(out);
+    const auto r = gbssn1d::testing::run(
+        "converge --N 200,300,400 --id flat --matter scalar --scalar-amp 0.01 --grid uniform "
+        "--rmax 40 --tmax 20 --formulation "
+        + f + " --out " + out.string());
+    INFO(f << ": " << r.err);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("converges: H converges") != std::string::npos);
+    std::filesystem::remove_all(out);
+  }
 }
