@@ -175,6 +175,16 @@ template <std::size_t R, std::size_t B, Fields fields, bool with_beta_GD>
   return b;
 }
 
+/// d_t u = 0 on the first `cells` interior cells of each of the n_fields rows from `out` (a
+/// multiple of `vector` cells: whole 64-byte stores; the count and the row in locals, which a
+/// store through double* would otherwise make the loop reload after every store).
+template <std::size_t n_fields, std::size_t vector>
+inline void zero_below(double* const out, const std::size_t nt, const std::size_t cells) {
+  for (std::size_t v = 0; v < n_fields; ++v)
+    for (std::size_t i = 0; i < cells; i += vector)
+      std::memset(out + v * nt + i, 0, vector * sizeof(double));
+}
+
 /// The two beta d_r Delta^r terms, each with its stencil (AdvectionParams): (E6)'s into
 /// p.adv[Delta_r], and B's driver term gd.adv_Delta_r, with the `matched` stencil (E6)'s own
 /// term minus beta_H d_r Delta^r centred, so that B - Delta^r sees no lopsided stencil
@@ -225,13 +235,7 @@ void GbssnRhs::interior(const Equations& equations, const State& u, State& dudt)
   // starts at the first cell, inside its block of grid factors, so that the loop itself starts
   // at 0 (a loop from a run-time start held 3.6 times the spilled registers: 8% slower on a
   // single grid, which never skips).
-  // (a multiple of 8 cells: whole 64-byte stores; the count and the row in locals, which a
-  // store through double* would otherwise make the loop reload after every store)
-  const std::size_t first_cell = first_cell_;
-  double* const skipped = dudt.data() + g.first_interior();
-  for (std::size_t v = 0; v < n_fields; ++v)
-    for (std::size_t i = 0; i < first_cell; i += vector_points)
-      std::memset(skipped + v * nt + i, 0, vector_points * sizeof(double));
+  zero_below<n_fields, vector_points>(dudt.data() + g.first_interior(), nt, first_cell_);
   for (std::size_t i0 = g.first_interior() + first_cell_, n = 0; i0 < g.end_interior(); i0 += n) {
     const std::size_t k = i0 - g.first_interior(), offset = k % B; // 0 but in the first block
     n = std::min(B - offset, g.end_interior() - i0);
