@@ -177,7 +177,7 @@ mistakes=(
   "s^r through the divider again (sqrt(chi / a))|src/gbssn/horizon_shift.cpp|    const double beta_H = f[i] * amplitude * shift_normal(normal, chi[i], a[i], chi_smooth);|    const double beta_H = f[i] * amplitude * std::sqrt(std::max(chi[i], 0.0) / a[i]);|every instance of the point loop and of beta_H's loop is vectorised"
   "the finder's Newton-form interpolant with a first-level denominator at level 3|src/grid/interpolation.hpp|    c3 = (c3 - c2) / (x3 - x0);|    c3 = (c3 - c2) / (x3 - x2);|Lagrange6Newton: quintics exactly, and lagrange6's values to round-off"
   "boxes' extrapolated h_AH with first-level divided differences throughout|src/evolution/horizon_extrapolated.cpp| / (h[j][0] - h[j - level][0]);| / (h[j][0] - h[j - 1][0]);|boxes' extrapolated h_AH: the cubic through the last four radii found, exact for a horizon moving as a cubic in t"
-  "diagnostic rows: the constraints never computed (the finder's instance for every call)|src/gbssn/diagnostic_rows.cpp|diagnostic_rows_at<p, formulation, true>(|diagnostic_rows_at<p, formulation, false>(|diagnostic rows agree with the constraints and expansion computed point by point, and the finder's rows without the constraints with them"
+  "diagnostic rows: the constraints never computed (the finder's instance for every call)|src/gbssn/diagnostic_rows.cpp|diagnostic_rows_at<p, formulation, matter, true>(|diagnostic_rows_at<p, formulation, matter, false>(|diagnostic rows agree with the constraints and expansion computed point by point, and the finder's rows without the constraints with them"
   "an unused include copied into a study file|src/study/verdict.cpp|#include \"study/orders.hpp\"\n|#include \"study/orders.hpp\"\n#include \"evolution/simulation.hpp\"\n|include rules: down the floors, parameter headers without the equations, no unused include"
   "Z4c's ADM-K lapse driven by K-hat + Theta|src/gbssn/z4c.hpp|lapse_theta(p.lapse_adm_K ? 2.0 : 0.0)|lapse_theta(p.lapse_adm_K ? 1.0 : 0.0)|Z4c: --z4c-lapse-adm drives the lapse by K-hat + 2 Theta, without it by K-hat"
   "--z4c-lapse-adm's table row: idle without damping|src/config/flag_rows.cpp|\"slicing) instead of K-hat\",\n       Acts::with_z4c},|\"slicing) instead of K-hat\",\n       Acts::with_z4c_damping},|--z4c-lapse-adm acts in Z4c without damping: its own run key, config line and numbers, idle in BSSN alone"
@@ -193,7 +193,7 @@ mistakes=(
   "the areal norm's interior cells weighted by their neighbours' whole distance|src/diagnostics/constraints.cpp|    const double dR = std::abs(R_areal[hi] - R_areal[lo]) / static_cast<double>(hi - lo);|    const double dR = std::abs(R_areal[hi] - R_areal[lo]);|the areal norm weights an end cell by its one-sided dR, an interior cell by half its neighbours' distance"
   "beta_GD's second derivative with the map's term of the wrong sign|src/gbssn/rhs_loop.hpp|                     + fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|                     - fd::d1_centred<order>(f) * inv_dx * d2_fx[i];|the horizon shift on with h_AH held at h is the run without it, on the uniform and the sinh grid"
   "dissipation at sigma/dx, not the cell's sigma/dr|src/gbssn/rhs_loop.hpp|      const double ko = ko_scale * inv_rx[i];|      const double ko = ko_scale;|Kreiss-Oliger dissipation damps the highest grid mode of each field at sigma/dr, that field alone, every order, both formulations, uniform and sinh grids"
-  "--gbssn-volume eulerian evolving the Lagrangian equations|src/gbssn/bssn_eulerian.hpp|    return gbssn_rhs<Volume::eulerian>(p, gauge, gauge_shift);|    return gbssn_rhs<Volume::lagrangian>(p, gauge, gauge_shift);|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
+  "--gbssn-volume eulerian evolving the Lagrangian equations|src/gbssn/bssn_eulerian.hpp|    return gbssn_rhs<Volume::eulerian, M>(p, gauge, gauge_shift);|    return gbssn_rhs<Volume::lagrangian, M>(p, gauge, gauge_shift);|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
   "the Eulerian (E3e) with the sign of alpha b A_a flipped|src/gbssn/equations.hpp|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r + p.f[alpha] * p.f[b] * p.f[A_a];|    rhs[b] = p.adv[b] + 2.0 * p.f[b] * p.f[beta] * p.inv_r - p.f[alpha] * p.f[b] * p.f[A_a];|the Eulerian volume choice: point-wise RHS agrees with the symbolic reference"
   "midstep-update searching on the 3rd RK substage|src/evolution/horizon_tracker.cpp|% static_cast<std::uint64_t>(4 * s.every_steps) == 1|% static_cast<std::uint64_t>(4 * s.every_steps) == 2|--rah-variant midstep-update searches on the 2nd RK substage of every n-th step only"
   "resume refusing --tmax equal to its checkpoint's time|src/cli/resume_command.cpp|  if (p.tmax < c.t)|  if (p.tmax <= c.t)|resume --tmax equal to the checkpoint's time is not before it"
@@ -282,8 +282,11 @@ problem() {
 # recompiles all 38 point-loop instances, about 35 s of compiler time; each verified caught when
 # added) and in core/decimal.hpp (55 s), so that CI stays under 25 minutes: CI on a fresh clone
 # at 419a0cb took 1820 s, its mistakes stage 1435 s of it, these eight rows about 300 s of
-# compiler time (measured per object file, 2026-12-07).
+# compiler time (measured per object file, 2026-12-07). The row in config/param_rules.hpp (eta
+# dt's limit), which eight config files include since the flag table's rows carry bounds: 73 s
+# (CI on a fresh clone of a1fd425, caught there).
 whole_library=("K boundary speed sqrt(2) -> 1" "Delta^r parity flipped"
+               "eta dt stability limit x100"
                "the scalar field's K Pi term with the wrong sign"
                "B driven without the stress-energy's Delta^r term"
                "the published driver stencil as the default again"
