@@ -2,8 +2,8 @@
 
 #include "core/text.hpp"
 
+#include "cli/command_flags.hpp"
 #include "cli/command_rules.hpp"
-#include "cli/commands.hpp"
 
 #include "config/config_file.hpp"
 #include "config/params.hpp"
@@ -162,30 +162,24 @@ int run_command_line(int argc, char** argv) {
   app.require_subcommand(1);
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 
-  EvolveArgs evolve_args;
-  ConvergeArgs converge_args;
-  SweepArgs sweep_args;
-  ResumeArgs resume_args;
-  add_evolve(app, evolve_args);
-  add_converge(app, converge_args);
-  add_sweep(app, sweep_args);
-  add_resume(app, resume_args);
+  CommandArgs args;
+  CommandFlags commands(app, args);
   ConfigOrigins origins;
   try {
-    std::vector<std::string> args(argv + 1, argv + argc);
+    std::vector<std::string> words(argv + 1, argv + argc);
     const std::set<std::string> subcommands{"evolve", "resume", "converge", "sweep"};
-    if (!args.empty() && args.front().rfind("-", 0) != 0 && !subcommands.count(args.front()))
+    if (!words.empty() && words.front().rfind("-", 0) != 0 && !subcommands.count(words.front()))
       throw ParamError("subcommand", fmt::format("'{}' is not a subcommand: use evolve, resume, "
                                                  "converge or sweep (gbssn1d --help)",
-                                                 printable(args.front())));
-    refuse_empty_values(args);
-    refuse_repeated_flags(args);
+                                                 printable(words.front())));
+    refuse_empty_values(words);
+    refuse_repeated_flags(words);
     // evolve reads --config here; converge and sweep pass it on to their members, whose own
     // flags may then override the file's values once
-    if (!args.empty() && args.front() == "evolve")
-      args = expand_config(args, &origins.file_of);
-    std::reverse(args.begin(), args.end()); // CLI11 takes a reversed vector of arguments
-    app.parse(args);
+    if (!words.empty() && words.front() == "evolve")
+      words = expand_config(words, &origins.file_of);
+    std::reverse(words.begin(), words.end()); // CLI11 takes a reversed vector of arguments
+    app.parse(words);
   } catch (const CLI::CallForHelp& e) {
     return help_or_version(app, e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -206,14 +200,18 @@ int run_command_line(int argc, char** argv) {
   }
 
   try {
-    if (evolve_args.cmd->parsed())
-      return run_evolve_command(evolve_args);
-    if (resume_args.cmd->parsed())
-      return run_resume_command(resume_args);
-    if (converge_args.cmd->parsed())
-      return run_converge_command(converge_args);
-    if (sweep_args.cmd->parsed())
-      return run_sweep_command(sweep_args);
+    switch (commands.finish()) {
+    case Subcommand::evolve:
+      return run_evolve_command(args.evolve);
+    case Subcommand::resume:
+      return run_resume_command(args.resume);
+    case Subcommand::converge:
+      return run_converge_command(args.converge);
+    case Subcommand::sweep:
+      return run_sweep_command(args.sweep);
+    case Subcommand::none:
+      break;
+    }
   } catch (const ParamError& e) {
     say("gbssn1d: error: {}{}\n", e.what(), origins.note(e.flag()));
     return 2;

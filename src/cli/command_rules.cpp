@@ -47,8 +47,8 @@ void refuse_empty_values(const std::vector<std::string>& args) {
   }
 }
 
-std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std::string>& own) {
-  std::vector<std::string> extras = cmd.remaining();
+std::vector<std::string> pass_through(const std::vector<std::string>& extras,
+                                      const std::vector<std::string>& own) {
   for (const auto& a : extras)
     for (const auto& flag : own)
       if (a == "--" + flag || a.rfind("--" + flag + "=", 0) == 0)

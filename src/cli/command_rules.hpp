@@ -2,8 +2,6 @@
 // command line; the studies the others).
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
@@ -18,7 +16,9 @@ void refuse_repeated_flags(const std::vector<std::string>& args);
 /// Refuses empty values: `--flag=` (which a parser would complete with the next argument, so
 /// that the next flag became the value and was lost) and an empty argument (`--flag ''`).
 void refuse_empty_values(const std::vector<std::string>& args);
-/// The evolve flags given to converge/sweep; refuses those the study sets itself.
-std::vector<std::string> pass_through(const CLI::App& cmd, const std::vector<std::string>& own);
+/// The evolve flags given to converge/sweep (`extras`: the flags not the study's own); refuses
+/// those the study sets itself (`own`).
+std::vector<std::string> pass_through(const std::vector<std::string>& extras,
+                                      const std::vector<std::string>& own);
 
 } // namespace gbssn1d

@@ -15,7 +15,6 @@
 #include "study/converge.hpp"
 #include "study/verdict.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -29,81 +28,6 @@
 #include <vector>
 
 namespace gbssn1d {
-
-/// `converge`: its own flags; the rest are passed to every member.
-void add_converge(CLI::App& app, ConvergeArgs& a) {
-  a.cmd = app.add_subcommand(
-      "converge", "run one configuration (any evolve flags) at three or more resolutions");
-  a.cmd->add_option("--N", a.N_list, "resolutions, e.g. 320,480,640, or a base N")->required();
-  a.cmd->add_option("--factors", a.factors, "with a base N: N_k = N * factor, e.g. 1,1.5,2");
-  add_number_option(*a.cmd, "-j,--jobs", a.options.jobs, "members run at once");
-  a.cmd->add_option("--out", a.options.out, "output directory")->required();
-  a.cmd->add_flag("--force", a.options.force, "write into a non-empty --out");
-  std::string field_names;
-  for (const auto& entry : registry)
-    field_names += (field_names.empty() ? "" : ", ") + std::string(entry.name);
-  a.cmd
-      ->add_option("--fields", a.fields,
-                   "fields whose differences give orders, comma separated, from: " + field_names)
-      ->capture_default_str();
-  a.cmd->add_option("--scaled-times", a.scaled_times,
-                    "times of the Richardson-scaled H profiles (default: tmax)");
-  add_number_option(*a.cmd, "--order", a.options.order, "order used to scale the profiles");
-  a.expect_order_opt = add_number_option(
-      *a.cmd, "--expect-order", a.expect_order,
-      "the order the verdict expects (a study converges when its orders reach this minus 1.5); "
-      "recorded in convergence.dat");
-  a.expect_order_opt->default_str("--fd-order");
-  a.cmd->allow_extras();
-  a.cmd->footer(
-      "Every other flag is an evolve flag (see `gbssn1d evolve --help`). Every member lives on "
-      "the same map (uniform, or sinh fixed by --dr-inner).\nVerdict: for each constraint norm "
-      "(H, M_r, G^r on the coordinate window; H, M_r on the areal window; with --formulation "
-      "z4c also G^r and Theta on the areal window) at each pair of "
-      "neighbouring members and each --fields difference at each triple, the times where the "
-      "finer value (the finer norm, or |f_b - f_c|) is above 10 times the round-off floor of "
-      "the finest member involved are judged: the floor is eps_machine (M/dr)^2 of the "
-      "quantity's scale (1/M^2 for H and M_r, 1/M for G^r, the field's RMS for a field), the "
-      "round-off of a second difference at dr, the member's smallest cell whose round-off can "
-      "have reached where the quantity is taken (its window's cells at t = 0, then every cell "
-      "within 2 t of the window; after a few M the innermost cell, dr-min in its headers; "
-      "measured on the stationary trumpet's H_L2_R, default sinh grid: 3-8e-11 at N = 3200, "
-      "dr_min = M/400, and 1.2-2.4e-10 at N = 6400, M/800; the estimate gives 3.5e-11 and "
-      "1.4e-10). Over the judged times, the order of each RMS over time, and for the norms "
-      "of the RMS over each tenth of those times, decides (single times are reported, not "
-      "judged; nor is H_L2_int; 10 or fewer judged times are too short to judge: not judged), in "
-      "five classes, the verdict's first words (then H's class, then the worst quantity's): "
-      "`converges` "
-      "(every such order at least --expect-order - 1.5); `converges until the round-off floor` "
-      "(so, and some pair's or triple's finer member lay at the floor at some times, not "
-      "judged: the verdict names the members, quantities and floor estimates); `not judged` (a "
-      "quantity without a value at any time, such as a norm whose window holds no point; or "
-      "nothing judged at all, every value within its round-off floor estimate: no pass); "
-      "`pre-asymptotic` (the errors fall with N: every order of an RMS over time at least 1 and "
-      "no tenth of the run with an RMS order below 0, but some order is below --expect-order - "
-      "1.5); `does not converge` (some order of an RMS over time below 1, or a tenth of the "
-      "run where the finer member is worse). The verdict is written into convergence.dat's "
-      "header (a `verdict:` line and an `order` line per quantity and resolutions) and onto "
-      "stderr, naming the quantity, the resolutions, the first time below and the lowest "
-      "order.\nExit status: 0 completed and converges (or converges until the round-off "
-      "floor); 1 a failed write; 2 invalid input (nothing run); 3 a member stopped (non-finite "
-      "value, chi or alpha out of range, horizon finder failure; the verdict says: does not "
-      "converge: member N = ... failed); 4 completed, but does not converge (the verdict); 5 "
-      "completed, pre-asymptotic (the verdict); 6 completed, but not judged (a judged quantity "
-      "without a value at any time: a norm whose window held no point, NaN in timeseries.dat; "
-      "10 or fewer judged times; or every value within its round-off floor estimate); "
-      "128 + n interrupted by signal n (rerun "
-      "the command to resume).\nOutput in --out: N<n>/ (each member's evolve output: "
-      "config.toml, timeseries.dat, profiles.dat, horizon.dat); config.toml (the study); "
-      "convergence.dat (columns: t, each norm per member as <norm>_N<n> for H_L2_ext, "
-      "M_L2_ext, G_L2_ext, H_L2_R, M_L2_R, H_L2_int (z4c: also G_L2_R, Theta_L2_R), then the "
-      "pairwise orders p_<H|M|G|H_R|M_R|H_int|G_R|Theta_R>_<n1>_<n2> and the --fields orders "
-      "p3_<field>_<n1>_<n2>_<n3>; its header holds the "
-      "verdict and an order line per "
-      "quantity); scaled_H.dat (a block per --scaled-times, opened by '# t = <t>': columns r, "
-      "H_N<coarsest>, H_N<n>_scaled = H scaled by (n/coarsest)^--order, on the coarsest "
-      "member's r).");
-}
 
 namespace {
 
@@ -269,7 +193,7 @@ int converge(const ConvergeOptions& options_in, const std::string& N_list,
 } // namespace
 
 int run_converge_command(ConvergeArgs& a) {
-  if (a.expect_order_opt->count() > 0) {
+  if (a.expect_order_given) {
     // the threshold, --expect-order - kOrderTolerance, must stay positive: at or below 0 a
     // study whose errors do not fall would meet it
     if (!std::isfinite(a.expect_order) || a.expect_order <= kOrderTolerance
@@ -281,7 +205,7 @@ int run_converge_command(ConvergeArgs& a) {
     a.options.expect_order = a.expect_order;
   }
   return converge(a.options, a.N_list, a.factors, a.fields, a.scaled_times,
-                  pass_through(*a.cmd, {"N", "out", "force"}));
+                  pass_through(a.extras, {"N", "out", "force"}));
 }
 
 } // namespace gbssn1d

@@ -15,7 +15,6 @@
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -30,39 +29,6 @@
 #include <vector>
 
 namespace gbssn1d {
-
-/// `evolve`: the evolve flags (config/config_file.cpp), --config and --print-config.
-void add_evolve(CLI::App& app, EvolveArgs& a) {
-  a.cmd = app.add_subcommand(
-      "evolve",
-      "evolve one black hole and write ASCII output.\nMost runs need only: --id (wormhole | "
-      "1log-trumpet | maximal-trumpet), --tmax, --out, --rahA A --rah0 h (move the horizon to "
-      "h), and for resolution --N (or --grid uniform|sinh|boxes with --N, --rmax). Example: "
-      "gbssn1d evolve --id 1log-trumpet --rahA 0.5 --rah0 1.2 --tmax 100 --out out/stretch");
-  add_options(*a.cmd, a.params);
-  a.cmd->footer(
-      "Lengths and times are in the units of --M (geometric units; with the default M = 1 "
-      "they are multiples of M); the areal windows --norm-R* are multiples of M.\n"
-      "Output in --out DIR: config.toml (repeats the run with --config), timeseries.dat (a row "
-      "per --dt-series; its last line says how the run ended), profiles.dat (a block per "
-      "--dt-profiles), horizon.dat, checkpoint.bin (with --checkpoint-every or after a "
-      "signal; `gbssn1d resume DIR` continues), rah-hAH-file.dat (with --rah-hAH-file: the "
-      "file as read at the start, which a resume uses).\nExit status: 0 completed; 1 a failed "
-      "write; 2 "
-      "invalid input (nothing written); 3 stopped (non-finite value, chi or alpha out of range, "
-      "horizon finder failure); 128 + n interrupted by signal n: SIGTERM, SIGINT, SIGHUP, "
-      "SIGUSR1 and SIGUSR2 (what batch schedulers send ahead of a time limit) finish the step, "
-      "write a checkpoint and the end line; `gbssn1d resume DIR` continues.");
-  a.cmd
-      ->add_option("--config", a.config_file,
-                   "read parameters from a TOML/INI file of `key = value` lines (as "
-                   "written to OUT/config.toml); flags given too override it")
-      ->group("Configuration");
-  a.cmd
-      ->add_flag("--print-config", a.print_config,
-                 "print the effective configuration (a valid --config file) and exit")
-      ->group("Configuration");
-}
 
 namespace {
 

@@ -15,7 +15,6 @@
 #include "evolution/simulation.hpp"
 #include "io/output.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -31,17 +30,6 @@
 #include <vector>
 
 namespace gbssn1d {
-
-/// `resume`: the run's folder DIR and a new --tmax.
-void add_resume(CLI::App& app, ResumeArgs& a) {
-  a.cmd = app.add_subcommand(
-      "resume", "continue a run in DIR from DIR/checkpoint.bin, bit for bit as if uninterrupted");
-  a.cmd->add_option("DIR", a.dir, "output directory of the run")->required();
-  a.tmax_opt =
-      add_number_option(*a.cmd, "--tmax", a.tmax, "new final time (M); default: the run's own");
-  a.tmax_opt->default_str("the run's own");
-  a.cmd->footer("The output files are cut back to the checkpoint and continued.");
-}
 
 namespace {
 
@@ -257,7 +245,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
 } // namespace
 
 int run_resume_command(const ResumeArgs& a) {
-  return resume(a.dir, a.tmax_opt->count() > 0 ? std::optional(a.tmax) : std::nullopt);
+  return resume(a.dir, a.tmax_given ? std::optional(a.tmax) : std::nullopt);
 }
 
 } // namespace gbssn1d
