@@ -78,6 +78,7 @@ fi
 mistakes=(
   "K boundary speed sqrt(2) -> 1|src/core/registry.hpp|{Var::K, \"K\", +1, 0.0, Wave::slicing, 1.0}|{Var::K, \"K\", +1, 0.0, Wave::light, 1.0}|outer boundary: K and alpha leave at the gauge speed sqrt(2), the rest at 1"
   "Delta^r parity flipped|src/core/registry.hpp|{Var::Delta_r, \"Delta_r\", -1,|{Var::Delta_r, \"Delta_r\", +1,|parities: the registry matches the tensor types (Sec. 7)"
+  "timeseries.dat's Phi_center read from Pi's row|src/evolution/observe.cpp|centre_grid, Var::Phi), centre_grid) : nan;|centre_grid, Var::Pi), centre_grid) : nan;|timeseries.dat's Phi_center follows the flat wave at the centre, A (f(t) + t f'(t)) for the time-symmetric pulse f, within 1e-3 A at N = 400, and vacuum runs have no such column"
   "H and M_r columns swapped in profiles.dat|src/io/output.cpp|{d.H[k], d.M_r[k],|{d.M_r[k], d.H[k],|output columns: each named column holds that quantity (H, M_r, fields, norms)"
   "eta dt stability limit x100|src/config/param_rules.hpp|inline constexpr double eta_dt_max = 2.78;|inline constexpr double eta_dt_max = 278.0;|the Gamma-driver damping limit: eta dt = 2.7 runs, 2.8 is refused as unstable"
   "driver-full-shift a no-op|src/gbssn/rhs_study.cpp|      gd = full_shift(p);|      ;|driver-full-shift changes B's driver where beta_H is non-zero, and only B"

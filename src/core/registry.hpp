@@ -117,18 +117,24 @@ constexpr double adm_K(const FormulationTraits& f, double K_row, double Theta) {
   return f.K_is_adm() ? K_row : K_row + f.adm_K_theta * Theta;
 }
 
-/// What a matter model declares: the registry rows it evolves after its formulation's.
+/// What a matter model declares: the registry rows it evolves after its formulation's, and
+/// its own series columns (after the formulation's) with their legend line.
 struct MatterTraits {
   Matter matter;
   std::span<const Var> rows;
+  std::span<const std::string_view> extra_series;
+  std::string_view series_legend;
 };
 
 inline constexpr std::array<Var, 2> scalar_field_rows{Var::Phi, Var::Pi};
+inline constexpr std::array<std::string_view, 2> scalar_field_series{"Phi_center", "Pi_center"};
 
 /// One row per Matter, in enum order: vacuum, none; the scalar field (Sec. 19), Phi and Pi.
 inline constexpr std::array<MatterTraits, 2> matters{{
-    {Matter::none, {}},
-    {Matter::scalar, scalar_field_rows},
+    {Matter::none, {}, {}, ""},
+    {Matter::scalar, scalar_field_rows, scalar_field_series,
+     "the scalar field: Phi_center and Pi_center are Phi and Pi at r = 0 (as alpha_center: "
+     "extrapolated from the two innermost cells in r^2, on the finest box)\n"},
 }};
 
 constexpr const MatterTraits& traits(Matter m) {

@@ -166,6 +166,12 @@ SeriesRow SeriesDiagnostics::row(const std::vector<State>& levels, double t,
   row.G_L2_R = z4c ? l2_norm_areal(d.G_r, d.R_areal, w.Rmin, w.Rmax) : nan;
   row.Theta_L2_ext = z4c ? l2_norm(d.Theta, g, w.rmin, w.rmax) : nan;
   row.Theta_L2_R = z4c ? l2_norm_areal(d.Theta, d.R_areal, w.Rmin, w.Rmax) : nan;
+  // the scalar field's own (Sec. 19): Phi and Pi at the centre, as alpha_center
+  const State& centre = levels[finest];
+  const Grid& centre_grid = layout_.grid(finest);
+  const bool scalar = centre.fields().holds(Var::Phi);
+  row.Phi_center = scalar ? central_value(field(centre, centre_grid, Var::Phi), centre_grid) : nan;
+  row.Pi_center = scalar ? central_value(field(centre, centre_grid, Var::Pi), centre_grid) : nan;
   // d_t alpha on every level with the h_AH the evolution would use now
   std::vector<std::span<const double>> dt_alpha_levels;
   for (std::size_t l = 0; l < layout_.levels(); ++l) {

@@ -14,18 +14,22 @@ namespace gbssn1d {
 double SeriesRow::extra(std::string_view column) const {
   for (const auto& [name, value] : {std::pair<std::string_view, double>{"G_L2_R", G_L2_R},
                                     {"Theta_L2_ext", Theta_L2_ext},
-                                    {"Theta_L2_R", Theta_L2_R}})
+                                    {"Theta_L2_R", Theta_L2_R},
+                                    {"Phi_center", Phi_center},
+                                    {"Pi_center", Pi_center}})
     if (name == column)
       return value;
   throw std::invalid_argument("no series column " + std::string(column));
 }
 
-std::vector<std::string> series_columns(Formulation formulation) {
+std::vector<std::string> series_columns(Fields fields) {
   std::vector<std::string> cols{
       "t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
       "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
       "M_ah",     "H_L2_R",       "M_L2_R",   "H_L2_int",        "M_ah_err"};
-  for (const std::string_view name : traits(formulation).extra_series)
+  for (const std::string_view name : traits(fields.formulation).extra_series)
+    cols.emplace_back(name);
+  for (const std::string_view name : traits(fields.matter).extra_series)
     cols.emplace_back(name);
   return cols;
 }
@@ -54,8 +58,9 @@ const char* const series_legend =
     "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
     "R = norm-Rint M, weighted by cell width; a norm (and dtalpha_max_ext) is NaN while its "
     "window holds no point; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - M\n";
-std::string legend(Formulation formulation) {
-  return std::string(series_legend) + std::string(traits(formulation).series_legend);
+std::string legend(Fields fields) {
+  return std::string(series_legend) + std::string(traits(fields.formulation).series_legend)
+         + std::string(traits(fields.matter).series_legend);
 }
 const char* const horizon_legend =
     "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
@@ -67,16 +72,14 @@ const char* const horizon_legend =
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields)
     : dir_(dir), fields_(fields),
-      series_(dir / "timeseries.dat", parameter_header + legend(fields.formulation),
-              series_columns(fields.formulation)),
+      series_(dir / "timeseries.dat", parameter_header + legend(fields), series_columns(fields)),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields)),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
                const OutputMarks& m)
-    : dir_(dir), fields_(fields),
-      series_(dir / "timeseries.dat", parameter_header + legend(fields.formulation),
-              series_columns(fields.formulation), m.series_header, m.series),
+    : dir_(dir), fields_(fields), series_(dir / "timeseries.dat", parameter_header + legend(fields),
+                                          series_columns(fields), m.series_header, m.series),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields), m.profiles_header,
                 m.profiles),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns(),
@@ -143,10 +146,12 @@ void Output::write_series(const SeriesRow& row) {
     line.push_back(' ');
     append_scientific(line, v);
   }
-  for (const std::string_view column : traits(fields_.formulation).extra_series) {
-    line.push_back(' ');
-    append_scientific(line, row.extra(column));
-  }
+  for (const auto& own :
+       {traits(fields_.formulation).extra_series, traits(fields_.matter).extra_series})
+    for (const std::string_view column : own) {
+      line.push_back(' ');
+      append_scientific(line, row.extra(column));
+    }
   line.push_back('\n');
   series_.write(line.data(), line.size());
   series_.flush();

@@ -33,15 +33,19 @@ struct SeriesRow {
   double M_ah_err;        ///< M_ah - M
   /// Z4c's own (Sec. 17): G^r in the areal window, Theta in the exterior and areal windows
   double G_L2_R, Theta_L2_ext, Theta_L2_R;
+  /// the scalar field's own (Sec. 19): Phi and Pi at the centre
+  double Phi_center, Pi_center;
 
-  /// The value of one of a formulation's own columns (FormulationTraits::extra_series), by
-  /// name; throws std::invalid_argument for a name that is none of them.
+  /// The value of one of a formulation's or matter model's own columns
+  /// (FormulationTraits::extra_series, MatterTraits::extra_series), by name; throws
+  /// std::invalid_argument for a name that is none of them.
   double extra(std::string_view column) const;
 };
 
 /// Column names, in order: a Z4c run's series has G_L2_R, Theta_L2_ext and Theta_L2_R besides,
-/// its profiles Theta (and K is the ADM K = K-hat + 2 Theta in both).
-std::vector<std::string> series_columns(Formulation formulation);
+/// its profiles Theta (and K is the ADM K = K-hat + 2 Theta in both); the scalar field's series
+/// has Phi_center and Pi_center after those, its profiles Phi and Pi.
+std::vector<std::string> series_columns(Fields fields);
 std::vector<std::string> profile_columns(Fields fields);
 std::vector<std::string> horizon_columns();
 
