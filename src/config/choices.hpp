@@ -66,6 +66,10 @@ inline const Choices<Formulation> formulation_choices{{"bssn", Formulation::bssn
 inline const Choices<Matter> matter_choices{{"none", Matter::none}, {"scalar", Matter::scalar}};
 inline const Choices<Volume> volume_choices{{"lagrangian", Volume::lagrangian},
                                             {"eulerian", Volume::eulerian}};
+/// --shift: the Gamma-driver, or none (beta = 0 for all time).
+enum class ShiftCondition { gamma_driver, zero };
+inline const Choices<ShiftCondition> shift_choices{{"gamma-driver", ShiftCondition::gamma_driver},
+                                                   {"zero", ShiftCondition::zero}};
 inline const Choices<fd::Upwind> upwind_choices{{"lopsided", fd::Upwind::lopsided},
                                                 {"biased", fd::Upwind::biased}};
 inline const Choices<AdvectionStencil> stencil_choices{
@@ -145,6 +149,7 @@ using TaperChoice = Choice<Taper, taper_choices>;
 using NormalChoice = Choice<ShiftNormal, normal_choices>;
 using TimeInterpChoice = Choice<mesh::TimeInterpolation, time_interp_choices>;
 using UpwindChoice = Choice<fd::Upwind, upwind_choices>;
+using ShiftChoice = Choice<ShiftCondition, shift_choices>;
 using FormulationChoice = Choice<Formulation, formulation_choices>;
 using VolumeChoice = Choice<Volume, volume_choices>;
 using MatterChoice = Choice<Matter, matter_choices>;

@@ -99,6 +99,10 @@ std::vector<ParamSpec> evolution_specs() {
        "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
       {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
        "1+log without advection: d_t alpha = -2 alpha K"},
+      {"shift", &Params::shift, "Gauge",
+       "the shift: gamma-driver ((G2)/(G3)) | zero (beta = 0 for all time: (G2) with xi = 0, B "
+       "still driven but never reaching beta; with data of zero shift, --id flat or wormhole, "
+       "and without --rahA)"},
       {"cfl", &Params::cfl, "Numerics",
        "dt = cfl * smallest spacing, in (0, 1] (measured: errors unchanged from 0.25 on every "
        "grid, boxes included; unstable from 0.8)"},

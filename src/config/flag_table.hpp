@@ -93,7 +93,8 @@ struct ParamSpec {
                LapseChoice Params::*, UpwindChoice Params::*, std::optional<TaperChoice> Params::*,
                ProfileChoice Params::*, NormalChoice Params::*, DriverStencilChoice Params::*,
                StencilChoice Params::*, AhEvery Params::*, VariantChoice Params::*,
-               FormulationChoice Params::*, VolumeChoice Params::*, MatterChoice Params::*>
+               FormulationChoice Params::*, VolumeChoice Params::*, MatterChoice Params::*,
+               ShiftChoice Params::*>
       member;
   const char* group;
   const char* help;

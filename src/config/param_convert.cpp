@@ -120,6 +120,8 @@ RhsParams rhs_params(const ResolvedParams& p) {
   r.z4c.lapse_adm_K = p.z4c_lapse_adm;
   r.gauge.shift.eta = p.eta();
   r.gauge.shift.advective = p.advective_shift;
+  if (p.shift == ShiftCondition::zero)
+    r.gauge.shift.xi = 0.0; // (G2): d_t beta = 0, and beta = 0 in the data (validate())
   r.gauge.slicing.advective = !p.non_advective_lapse;
   r.ko_sigma = p.ko_sigma;
   r.horizon_shift.A = p.rahA;

@@ -69,6 +69,8 @@ struct Params {
   std::optional<double> eta;
   bool advective_shift = false;
   bool non_advective_lapse = false;
+  /// gamma-driver | zero (beta = 0 for all time: (G2) with xi = 0)
+  ShiftChoice shift = ShiftCondition::gamma_driver;
   // numerics
   /// dt = cfl x smallest spacing, on every grid (docs/horizon-shift-study.md Sec. 11; boxes
   /// stepped at 0.25 until their errors were measured the same at 0.5)

@@ -133,8 +133,19 @@ void validate_evolution_numbers(const ResolvedParams& p) {
     throw ParamError("--norm-Rmax", num(p.norm_Rmax), "must be > --norm-Rmin");
 }
 
-/// The horizon-adjusting shift and its horizon searches.
+/// The shift: a zero shift where the data have none; the horizon-adjusting shift and its horizon
+/// searches.
 void validate_horizon_shift(const ResolvedParams& p) {
+  // a zero shift keeps the data's: they must have none, and no horizon shift is added
+  if (p.shift == ShiftCondition::zero && shift_on(p))
+    throw ParamError("--shift", p.shift.name(),
+                     "keeps beta = 0 for all time: not with --rahA (the horizon-adjusting shift)");
+  if (p.shift == ShiftCondition::zero && p.id != InitialDataKind::flat
+      && p.id != InitialDataKind::wormhole)
+    throw ParamError("--shift", p.shift.name(),
+                     fmt::format("needs data without a shift (--id flat or wormhole): {} carries "
+                                 "one, which a zero shift would freeze",
+                                 p.id.name()));
   if (shift_on(p) && !(p.rah0 < p.rmax))
     throw ParamError("--rah0", num(p.rah0),
                      fmt::format("must be below --rmax = {}: the horizon is moved to a radius on "

@@ -183,12 +183,8 @@ template <Volume volume = Volume::lagrangian, class M = Vacuum>
     MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift), gauge_shift, rhs);
   } else {
     // (S1)-(S4): the matter's rows, its terms in K, A_a and both d_t Delta^r
-    const StressEnergy s = M::stress_energy(p, m.inv_a);
-    add_stress_energy(p, s, rhs);
-    const double matter_Delta_r = stress_energy_Delta_r(p, m.inv_a, s);
-    rhs[Delta_r] += matter_Delta_r;
-    M::rhs(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, p.f[K], rhs);
-    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift) + matter_Delta_r,
+    const MatterTerms matter = add_matter<M>(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, p.f[K], rhs);
+    MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r<volume>(p, m, gauge_shift) + matter.Delta_r,
                              gauge_shift, rhs);
   }
   return rhs;

@@ -69,4 +69,26 @@ using MatterPolicy = std::conditional_t<matter == Matter::scalar, ScalarField, V
   return -16.0 * std::numbers::pi * p.f[Var::alpha] * s.j_r * inv_a;
 }
 
+/// What the matter adds that a formulation or its gauge reads further: its stress-energy and
+/// the term of d_t Delta^r, which B's driver also takes.
+struct MatterTerms {
+  StressEnergy s;
+  double Delta_r;
+};
+
+/// The matter M's part of a formulation's right-hand side, the same in every formulation:
+/// (S1)-(S2), its rows (with `trace_K` the ADM K), and (S4), its terms in d_t K (Z4c: K-hat),
+/// A_a and Delta^r. A formulation adds its own terms on top (Z4c's Theta, (S5)).
+template <class M>
+[[gnu::always_inline]] inline MatterTerms add_matter(const PointData& p, double inv_a, double da_a,
+                                                     double db_b, double dchi_chi, double trace_K,
+                                                     Rhs& rhs) {
+  const StressEnergy s = M::stress_energy(p, inv_a);
+  add_stress_energy(p, s, rhs);
+  const double Delta_r = stress_energy_Delta_r(p, inv_a, s);
+  rhs[Var::Delta_r] += Delta_r;
+  M::rhs(p, inv_a, da_a, db_b, dchi_chi, trace_K, rhs);
+  return {s, Delta_r};
+}
+
 } // namespace gbssn1d

@@ -104,13 +104,9 @@ struct Z4c {
                                lapse_theta * theta, rhs);
     } else {
       // (S1)-(S5): the matter's rows (K the ADM K), its terms in K-hat, A_a, Delta^r and Theta
-      const StressEnergy s = M::stress_energy(p, m.inv_a);
-      add_stress_energy(p, s, rhs);
-      rhs[Theta] += -8.0 * std::numbers::pi * p.f[alpha] * s.rho;
-      const double matter_Delta_r = stress_energy_Delta_r(p, m.inv_a, s);
-      rhs[Delta_r] += matter_Delta_r;
-      M::rhs(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, K_adm, rhs);
-      MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1) + matter_Delta_r,
+      const MatterTerms matter = add_matter<M>(p, m.inv_a, m.da_a, m.db_b, m.dchi_chi, K_adm, rhs);
+      rhs[Theta] += -8.0 * std::numbers::pi * p.f[alpha] * matter.s.rho;
+      MovingPunctureGauge::rhs(gauge, p, rhs_Delta_r(p, m, gauge_shift, kappa1) + matter.Delta_r,
                                gauge_shift, lapse_theta * theta, rhs);
     }
     return rhs;

@@ -151,6 +151,7 @@ const std::map<std::string, std::string>& no_numeric_limit() {
       {"--matter", "a choice, refused with other orders, stencils, data or study variants: no "
                    "number"},
       {"--upwind", "a choice, refused with a study variant of --rah-variant: no number"},
+      {"--shift", "a choice, refused as zero with trumpet data or --rahA: no number"},
       {"--formulation", "a choice, refused with a study variant of --rah-variant: no number"},
       {"--gbssn-volume", "a choice, refused as eulerian with --formulation z4c: no number"},
       {"--rah-variant", "a choice and its combinations (boxes, --ah-every): no number"},

@@ -175,6 +175,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
       {"eta", trumpet, "1"},
       {"advective-shift", trumpet, ""},
       {"non-advective-lapse", trumpet, ""},
+      {"shift", "--id wormhole --grid uniform --N 32 --rmax 16" + rows, "zero"},
       {"cfl", trumpet, "0.25"},
       {"ko-sigma", trumpet, "0.2"},
       {"fd-order", trumpet, "6"},

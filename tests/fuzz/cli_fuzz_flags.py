@@ -56,6 +56,7 @@ EVOLVE = {
     "--eta": Flag(FLOAT, ("0", "1", "2"), ("1e308", "-1e-300")),
     "--advective-shift": Flag(FLAG),
     "--non-advective-lapse": Flag(FLAG),
+    "--shift": Flag(TEXT, choices=("gamma-driver", "zero")),
     "--cfl": Flag(FLOAT, ("0.25", "0.5", "1"), ("1e-4", "9.9e-5", "1.0000001", "4.9e-324",
                                                  "1e-9")),
     "--ko-sigma": Flag(FLOAT, ("0", "0.1", "1"), ("1.0000001", "1.5")),

@@ -202,3 +202,32 @@ TEST_CASE("converge: the scalar pulse at A = 0.01 on flat space converges at N =
     std::filesystem::remove_all(out);
   }
 }
+
+TEST_CASE("--shift zero: beta stays exactly 0 through a collapse to a black hole (B is driven but "
+          "never reaches it), where the Gamma-driver's shift does not") {
+  const auto largest = [](ShiftCondition shift) {
+    Params p = flat_pulse(400, 0.4, Formulation::bssn);
+    p.scalar_r0 = 0.0;
+    p.scalar_width = 1.0;
+    p.rmax = 20.0;
+    p.tmax = 4.0;
+    p.dt_series = 0.5;
+    p.shift = shift;
+    Simulation sim = gbssn1d::testing::simulation(p);
+    sim.run(nullptr);
+    REQUIRE(sim.time() == doctest::Approx(4.0));
+    CHECK(sim.horizons().horizon()); // it collapsed
+    const Grid& g = sim.grid();
+    const auto beta = field(sim.state(), g, Var::beta), B = field(sim.state(), g, Var::B);
+    double beta_max = 0.0, B_max = 0.0;
+    for (std::size_t i = 0; i < g.n_total(); ++i) {
+      beta_max = std::max(beta_max, std::abs(beta[i]));
+      B_max = std::max(B_max, std::abs(B[i]));
+    }
+    INFO("max |beta| = " << beta_max << ", max |B| = " << B_max);
+    CHECK(B_max > 1e-3);
+    return beta_max;
+  };
+  CHECK(largest(ShiftCondition::zero) == 0.0);
+  CHECK(largest(ShiftCondition::gamma_driver) > 1e-3);
+}
