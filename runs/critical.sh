@@ -2,24 +2,31 @@
 # Critical collapse of the massless scalar field (docs/scalar-field.md, "Critical collapse"):
 # the time-symmetric Gaussian at the centre, Phi = A exp(-r^2) (--id flat --matter scalar
 # --scalar-r0 0 --scalar-width 1), BSSN with 1+log slicing and each shift Akbarian & Choptuik
-# ran (--shift gamma-driver and --shift zero), on a sinh grid whose innermost cells resolve the
-# echoes (settings below and why).
-#   1. Bisection in A between dispersal (no apparent horizon by t = tmax) and collapse (an
-#      apparent horizon after t = 0), as far as the resolution allows: it ends when the bracket
-#      is below 1e-10 of A, after 45 halvings, or at the first run that stops (exit 3, left the
-#      physical range) without a horizon, which is neither answer: that run is named.
-#   2. The mass-scaling exponent: runs at A = p* (1 + eps), eps = 10^(-k/4), k = 4 ... 32 (the
-#      ones above the bracket), M_AH at the end of each (t = tmax); gamma from the least
-#      squares of ln M_AH on ln(A - p*) over the eps in [EPS_LO, EPS_HI] (below), with its
-#      standard error, the range used and the points left out (no horizon, stopped).
-#   3. The echoing period: the extrema of Phi_center(t) of the dispersing run nearest the
-#      threshold, against the central proper time T = int alpha_center dt; T* and Delta fitted
-#      to ln(T* - T_k) = c - k Delta/2 (successive extrema are half a period apart: the critical
-#      solution changes Phi's sign every half period), with the fit's standard error.
+# ran (--shift gamma-driver and --shift zero), on nested boxes whose finest resolve the echoes
+# (settings below and why).
+#   1. Bisection in A from [0.30, 0.31] between dispersal (no apparent horizon by t = tmax) and
+#      collapse (an apparent horizon after t = 0), as far as the resolution allows: it ends when
+#      the bracket is below 1e-10 of A, after 45 halvings, or at the first run that stops (exit
+#      3, left the physical range) without a horizon, which is neither answer: that run is
+#      named. (A wider bracket is no use: from A ~ 0.32 to 0.35 the runs stop near the centre
+#      before a horizon is found, docs/scalar-field.md.) A shift whose bracket does not hold
+#      (A = 0.30 must disperse, 0.31 collapse) is reported and left out.
+#   2. The mass-scaling exponent: runs at A = p* (1 + eps), eps = 10^(-k/4), k = 8 ... 32 (the
+#      ones above the bracket); gamma from the least squares of ln M_AH on ln(A - p*) over the
+#      eps in [EPS_LO, EPS_HI] (below), with its standard error, the range used and the points
+#      left out, twice: with M_AH at the end of the runs that reached t = tmax, and with M_AH
+#      when a horizon was first found (every collapsed run, also those that stopped after it).
+#   3. The echoing period: the dispersing run nearest the threshold again to t = 8 with
+#      Phi_center every 0.0005 (the last echoes are 1e-3 apart in the central proper time T =
+#      int alpha_center dt); the extrema of Phi_center from the largest (the first at the
+#      critical solution's amplitude) through the last above 3/4 of it; T* and Delta fitted to
+#      ln(T* - T_k) = c - k Delta/2 (successive extrema are half a period apart: the critical
+#      solution changes Phi's sign every half period), its error the spread of the exact fits
+#      through each three consecutive extrema.
 # Writes OUT/critical.txt (the table and the results), OUT/scaling.dat, OUT/echoes.dat and the
 # figures OUT/mass-scaling.png and OUT/echoes.png (plots/critical.py). Kept in out/critical/
 # and redone only where a command or the binary changed; an interrupted run resumes. About
-# 25 minutes on 2 cores (the two shifts' runs side by side).
+# 15 minutes on 2 cores (the two shifts' runs side by side, 7 s each).
 #
 # Usage: bash runs/critical.sh [OUT]     GBSSN1D_JOBS: runs at once (default: the core count)
 set -euo pipefail
@@ -29,12 +36,15 @@ source runs/lib.sh
 lib_init runs/critical.sh "$here" out/critical "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 py=/usr/bin/python3
-# The grid: sinh, rmax 40 (the outer boundary 28 M beyond where the outgoing half of the pulse
-# is at t = 12), N = 1600 with --dr-inner 0.0016 (the map of N = 400's innermost cell 0.0016:
-# innermost cells of 4e-4 at N = 1600), so that a horizon of M_AH ~ 1e-3 spans a few cells.
-# The time: tmax 12 (collapse or dispersal is decided by t ~ 7), Phi_center every 0.005.
-family=(--id flat --matter scalar --scalar-r0 0 --scalar-width 1 --grid sinh --rmax 40
-        --N 1600 --dr-inner 0.0016 --tmax 12 --dt-series 0.005 --dt-profiles 12)
+# The grid: 13 nested boxes of 128 cells to rmax 32 (Berger-Oliger subcycling: each box steps
+# at its own spacing), spacings 0.25 M on the outermost down to 6.1e-5 on the finest (r <=
+# 0.0078): a horizon of M_AH = 2e-4 spans 6 of its cells, and each run takes 7 s where a sinh
+# grid of the same innermost cell takes minutes (every cell steps at the smallest cell's step).
+# The outer boundary lies 20 beyond where the outgoing half of the pulse is at t = 12. The time:
+# tmax 12 (collapse or dispersal is decided by t ~ 7), Phi_center every 0.005.
+grid=(--id flat --matter scalar --scalar-r0 0 --scalar-width 1 --grid boxes --rmax 32 --N 128
+      --levels 13)
+family=("${grid[@]}" --tmax 12 --dt-series 0.005 --dt-profiles 12)
 shifts=(gamma-driver zero)
 EPS_LO=1e-6
 EPS_HI=1e-2
@@ -67,21 +77,25 @@ narrow() { $py -c "import sys; print(int((float(sys.argv[2]) - float(sys.argv[1]
 # 1. the bracket's ends, then both shifts' halvings side by side
 declare -A lo hi state mid
 for s in "${shifts[@]}"; do
-  lo[$s]=0.25 hi[$s]=0.40 state[$s]=bisecting
+  lo[$s]=0.30 hi[$s]=0.31 state[$s]=bisecting
   run_A "$s" "${lo[$s]}"
   run_A "$s" "${hi[$s]}"
 done
 lib_wait
 lib_check
+studied=()
 for s in "${shifts[@]}"; do
   if [ "$(verdict "$s/A=${lo[$s]}")" != disperse ] || [ "$(verdict "$s/A=${hi[$s]}")" != collapse ]; then
-    echo "runs/critical.sh: --shift $s: A = ${lo[$s]} must disperse and A = ${hi[$s]} collapse; they do not (see $out/$s)" >&2
-    exit 1
+    state[$s]="no bracket: A = ${lo[$s]} $(verdict "$s/A=${lo[$s]}")s, A = ${hi[$s]} $(verdict "$s/A=${hi[$s]}")s"
+    echo "runs/critical.sh: --shift $s: A = ${lo[$s]} must disperse and A = ${hi[$s]} collapse; ${state[$s]} (see $out/$s): left out" >&2
+  else
+    studied+=("$s")
   fi
 done
+[ ${#studied[@]} -gt 0 ] || { echo "runs/critical.sh: no shift has a bracket" >&2; exit 1; }
 for step in $(seq 1 45); do
   active=()
-  for s in "${shifts[@]}"; do
+  for s in "${studied[@]}"; do
     [ "${state[$s]}" = bisecting ] || continue
     if [ "$(narrow "${lo[$s]}" "${hi[$s]}")" = 0 ]; then state[$s]="bracket below 1e-10"; continue; fi
     mid[$s]=$(half "${lo[$s]}" "${hi[$s]}")
@@ -99,17 +113,17 @@ for step in $(seq 1 45); do
     esac
   done
 done
-for s in "${shifts[@]}"; do
+for s in "${studied[@]}"; do
   [ "${state[$s]}" != bisecting ] || state[$s]="45 halvings"
 done
 
 # 2. the mass-scaling runs above each bracket
-for s in "${shifts[@]}"; do
+for s in "${studied[@]}"; do
   for A in $($py -c "
 import sys
 lo, hi = float(sys.argv[1]), float(sys.argv[2])
 p = (lo + hi) / 2
-for k in range(4, 33):
+for k in range(8, 33):
     A = p * (1 + 10 ** (-k / 4))
     if A > hi:
         print(repr(A))" "${lo[$s]}" "${hi[$s]}"); do
@@ -119,7 +133,19 @@ done
 lib_wait
 lib_check
 
-# 3. the tables, fits and figures
+# 3. the echoes: the dispersing run nearest the threshold, sampled finely
+for s in "${studied[@]}"; do
+  lib_run "$s-echo/A=${lo[$s]}" build/gbssn1d evolve "${grid[@]}" --tmax 8 --dt-series 0.0005 \
+    --dt-profiles 12 --shift "$s" --scalar-amp "${lo[$s]}" --out @OUT
+done
+lib_wait
+lib_check
+
+# 4. the tables, fits and figures
 args=()
-for s in "${shifts[@]}"; do args+=("$s" "${lo[$s]}" "${hi[$s]}" "${state[$s]}"); done
-$py plots/critical.py "$out" "$EPS_LO" "$EPS_HI" "${args[@]}" | tee "$out/critical.txt"
+for s in "${studied[@]}"; do args+=("$s" "${lo[$s]}" "${hi[$s]}" "${state[$s]}"); done
+: >"$out/critical.txt"
+for s in "${shifts[@]}"; do
+  [[ " ${studied[*]} " == *" $s "* ]] || echo "--shift $s: ${state[$s]}" | tee -a "$out/critical.txt"
+done
+$py plots/critical.py "$out" "$EPS_LO" "$EPS_HI" "${args[@]}" | tee -a "$out/critical.txt"

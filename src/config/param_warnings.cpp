@@ -22,8 +22,8 @@ namespace {
 /// pulse comes back from where the boxes end.
 void box_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   // Boxes: the horizon belongs on the finest box, well inside its edge, where the finder and
-  // the horizon shift see the finest spacing.
-  if (p.grid == RadialGrid::boxes && p.levels() > 1 && p.N > 0) {
+  // the horizon shift see the finest spacing (flat data have no horizon to place).
+  if (p.grid == RadialGrid::boxes && p.levels() > 1 && p.N > 0 && p.id != InitialDataKind::flat) {
     const double finest_extent = std::ldexp(p.rmax, -(p.levels() - 1));
     const double trusted = finest_extent * (1.0 - RefinementSettings::horizon_margin_cells / p.N);
     const double horizon = std::max(standard_horizon_radius * p.M, shift_on(p) ? p.rah0 : 0.0);

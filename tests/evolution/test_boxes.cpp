@@ -298,6 +298,8 @@ TEST_CASE("a horizon or rah0 outside the finest box's inner part is warned about
   CHECK(box_warnings(p) == 0);
   p.levels = 8; // finest box r <= 1 M: the standard horizon 0.83 M is beyond 0.625 M
   CHECK(box_warnings(p) == 1);
+  p.id = InitialDataKind::flat; // flat data: no horizon to place
+  CHECK(box_warnings(p) == 0);
   // the default number of boxes keeps the finest box out to 4 M
   Params q = boxes(7, 1024.0, 32);
   q.levels.reset();
