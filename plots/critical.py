@@ -201,6 +201,15 @@ def report(r):
           + ', '.join(f'{d:.3f}' for d in echo['triples']))
 
 
+def save(fig, ax, xlabel, ylabel, title, path):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+
+
 def figures(out, results):
     plt = gd.pyplot()
     fig, ax = plt.subplots()
@@ -217,12 +226,8 @@ def figures(out, results):
             c = np.mean(np.log(m) - gamma * np.log(x))
             ax.loglog(x, np.exp(c) * x ** gamma, '-', color=color,
                       label=f'gamma = {gamma:.3f} +- {err:.3f}')
-    ax.set_xlabel('A - p*')
-    ax.set_ylabel('M_AH')
-    ax.set_title(f'mass scaling (published gamma = {GAMMA})')
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, 'mass-scaling.png'))
+    save(fig, ax, 'A - p*', 'M_AH', f'mass scaling (published gamma = {GAMMA})',
+         os.path.join(out, 'mass-scaling.png'))
     fig, ax = plt.subplots()
     for color, r in zip(gd.qualitative_colors(len(results), 'shifts'), results):
         echo = r['echo']
@@ -235,12 +240,9 @@ def figures(out, results):
         for Tk in echo['Tk']:
             ax.axvline(math.log(echo['T_star'] - Tk), color=color, lw=0.6, ls=':')
     ax.invert_xaxis()
-    ax.set_xlabel('ln(T* - T), T the central proper time')
-    ax.set_ylabel('Phi at r = 0')
-    ax.set_title(f'echoes (dotted: the extrema fitted; published Delta = {DELTA})')
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, 'echoes.png'))
+    save(fig, ax, 'ln(T* - T), T the central proper time', 'Phi at r = 0',
+         f'echoes (dotted: the extrema fitted; published Delta = {DELTA})',
+         os.path.join(out, 'echoes.png'))
 
 
 def main(out, eps_lo, eps_hi, *specs):

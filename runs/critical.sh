@@ -49,24 +49,9 @@ shifts=(gamma-driver zero)
 EPS_LO=1e-6
 EPS_HI=1e-2
 
-# collapse | disperse | stopped: how the run in $out/NAME ended
+# collapse | disperse | stopped: how the run in $out/NAME ended (plots/critical.py's reading)
 verdict() {
-  $py - "$out/$1" <<'EOF'
-import math, sys
-d = sys.argv[1]
-found = False
-cols = None
-for line in open(f"{d}/horizon.dat"):
-    if line.startswith("# t "):
-        cols = line[2:].split()
-    elif not line.startswith("#") and line.strip():
-        v = line.split()
-        t, r = float(v[cols.index("t")]), float(v[cols.index("r_ah")])
-        found = found or (t > 0 and math.isfinite(r))
-end = [l for l in open(f"{d}/timeseries.dat") if l.startswith("# end:")]
-completed = bool(end) and end[-1].startswith("# end: completed")
-print("collapse" if found else ("disperse" if completed else "stopped"))
-EOF
+  $py -c 'import sys; sys.path.insert(0, "plots"); import critical; print(critical.run_result(sys.argv[1])[0])' "$out/$1"
 }
 run_A() { # SHIFT A: the run of amplitude A named by both
   lib_run "$1/A=$2" build/gbssn1d evolve "${family[@]}" --shift "$1" --scalar-amp "$2" --out @OUT
