@@ -4,6 +4,7 @@
 #include "config/flag_table.hpp"
 
 #include "config/param_rules.hpp"
+#include "evolution/evolution_config.hpp"
 
 namespace gbssn1d {
 
@@ -86,17 +87,22 @@ std::vector<ParamSpec> evolution_specs() {
        "Z4c: kappa2 > -1 weights Theta's damping in K-hat's equation (0: standard; it "
        "multiplies kappa1, so does nothing with --kappa1 0)",
        Acts::with_z4c_damping,
-       above(-1.0, "the damping of Theta in Z4c's constraint subsystem needs it")},
+       above(-1.0, "the damping of Theta in Z4c's constraint subsystem needs it"),
+       &at<&EvolutionConfig::rhs, &RhsParams::z4c, &Z4cParams::kappa2>},
       {"z4c-lapse-adm", &Params::z4c_lapse_adm, "Formulation",
        "Z4c, for the study: the 1+log lapse driven by the ADM K = K-hat + 2 Theta (BSSN's "
        "slicing) instead of K-hat",
-       Acts::with_z4c},
+       Acts::with_z4c, std::nullopt,
+       &at<&EvolutionConfig::rhs, &RhsParams::z4c, &Z4cParams::lapse_adm_K>},
       {"eta", &Params::eta, "Gauge",
        "Gamma-driver damping eta (1/M); default 2/M, 1/M for a shrink of wormhole data "
        "(--rahA != 0, --rah0 < 0.8304 M)",
        Acts::always, at_least(0.0)},
       {"advective-shift", &Params::advective_shift, "Gauge",
-       "add the advection brackets of (G2)/(G3) (moving-puncture shift)"},
+       "add the advection brackets of (G2)/(G3) (moving-puncture shift)", Acts::always,
+       std::nullopt,
+       &at<&EvolutionConfig::rhs, &RhsParams::gauge, &Gauge::shift,
+           &Gauge::GammaDriver::advective>},
       {"non-advective-lapse", &Params::non_advective_lapse, "Gauge",
        "1+log without advection: d_t alpha = -2 alpha K"},
       {"shift", &Params::shift, "Gauge",
@@ -107,7 +113,7 @@ std::vector<ParamSpec> evolution_specs() {
        "dt = cfl * smallest spacing, in (0, 1] (measured: errors unchanged from 0.25 on every "
        "grid, boxes included; unstable from 0.8)"},
       {"ko-sigma", &Params::ko_sigma, "Numerics", "Kreiss-Oliger dissipation strength, in [0, 1]",
-       Acts::always, within(0.0, 1.0)},
+       Acts::always, within(0.0, 1.0), &at<&EvolutionConfig::rhs, &RhsParams::ko_sigma>},
       {"fd-order", &Params::fd_order, "Numerics",
        "order of the finite differences: 2 | 4 | 6 | 8 (derivatives, upwind advection, and "
        "dissipation of the (order+2)-th difference; boxes: 2 | 4 | 6)"},
@@ -119,17 +125,17 @@ std::vector<ParamSpec> evolution_specs() {
       {"chi-floor", &Params::chi_floor, "Numerics",
        "after every RK4 step chi is raised to at least this (0: off); wormhole data otherwise "
        "cross chi = 0 at the innermost cell during the lapse collapse",
-       Acts::always, within_below(0.0, 1.0)},
+       Acts::always, within_below(0.0, 1.0), &at<&EvolutionConfig::chi_floor>},
       {"tmax", &Params::tmax, "Time", "final time; 0 writes the initial data only", Acts::always,
-       at_least(0.0)},
+       at_least(0.0), &at<&EvolutionConfig::tmax>},
       {"dt-series", &Params::dt_series, "Time", "time between rows of timeseries.dat", Acts::always,
-       above(0.0)},
+       above(0.0), &at<&EvolutionConfig::dt_series>},
       {"dt-profiles", &Params::dt_profiles, "Time", "time between blocks of profiles.dat",
-       Acts::always, above(0.0)},
+       Acts::always, above(0.0), &at<&EvolutionConfig::dt_profiles>},
       {"checkpoint-every", &Params::checkpoint_every, "Output",
        "simulated time between checkpoints in OUT/checkpoint.bin, for `gbssn1d resume OUT` "
        "(0: none; SIGTERM, SIGINT, SIGHUP, SIGUSR1 and SIGUSR2 always write one)",
-       Acts::always, at_least(0.0, "0: off")},
+       Acts::always, at_least(0.0, "0: off"), &at<&EvolutionConfig::checkpoint_every>},
   };
 }
 
@@ -137,7 +143,7 @@ std::vector<ParamSpec> evolution_specs() {
 std::vector<ParamSpec> diagnostics_specs() {
   return {
       {"norm-rmin", &Params::norm_rmin, "Diagnostics", "inner radius of the exterior norms",
-       Acts::always, at_least(0.0)},
+       Acts::always, at_least(0.0), &at<&EvolutionConfig::norms, &NormWindows::rmin>},
       {"norm-rmax", &Params::norm_rmax, "Diagnostics",
        "outer radius of the exterior norms; default min(10 M, rmax/2)", Acts::always, finite()},
       {"norm-Rmin", &Params::norm_Rmin, "Diagnostics",
@@ -158,7 +164,8 @@ std::vector<ParamSpec> horizon_shift_specs() {
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)",
        Acts::always,
        at_least(0.0, "beta_H = f A (h_AH - h) s^r with A < 0 drives the horizon away from --rah0, "
-                     "not towards it")},
+                     "not towards it"),
+       &at<&EvolutionConfig::rhs, &RhsParams::horizon_shift, &HorizonShiftParams::A>},
       {"rah0", &Params::rah0, "Horizon", "desired coordinate radius h of the horizon",
        Acts::with_shift, above(0.0)},
       {"rah-width", &Params::rah_width, "Horizon",
@@ -175,7 +182,8 @@ std::vector<ParamSpec> horizon_shift_specs() {
        Acts::with_shift},
       {"rah-ramp", &Params::rah_ramp, "Horizon",
        "T: the strength grows as rahA (1 - exp(-(t/T)^2)); 0: full strength from t = 0",
-       Acts::with_shift, at_least(0.0, "0: no ramp")},
+       Acts::with_shift, at_least(0.0, "0: no ramp"),
+       &at<&EvolutionConfig::rhs, &RhsParams::horizon_shift, &HorizonShiftParams::ramp>},
       {"rah-profile", &Params::rah_profile, "Horizon",
        "f(r), q = r/w: auto (rational with w = 3 max(rah0, M) to stretch, rah0 >= 0.8304 M; gauss "
        "with "
@@ -190,7 +198,8 @@ std::vector<ParamSpec> horizon_shift_specs() {
       {"rah-chi-smooth", &Params::rah_chi_smooth, "Horizon",
        "chi_s of --rah-normal smooth: the kink of sqrt(chi) at the puncture is rounded where "
        "chi ~ chi_s",
-       Acts::with_smooth_normal, above(0.0)},
+       Acts::with_smooth_normal, above(0.0),
+       &at<&EvolutionConfig::rhs, &RhsParams::horizon_shift, &HorizonShiftParams::chi_smooth>},
       {"rah-hAH-file", &Params::rah_hAH_file, "Horizon",
        "open loop: h_AH(t) from the t and r_ah columns of a horizon.dat (no searches)",
        Acts::with_shift},
@@ -214,12 +223,15 @@ std::vector<ParamSpec> horizon_shift_specs() {
        "a 3D code calls its finder; refused with --ah-every other than substage",
        Acts::with_searches, above(0.0)},
       {"ah-tmin", &Params::ah_tmin, "Horizon", "no horizon searches for the shift before this time",
-       Acts::with_searches, at_least(0.0)},
+       Acts::with_searches, at_least(0.0),
+       &at<&EvolutionConfig::horizon_search, &HorizonSearchSettings::t_min>},
       {"ah-tmax", &Params::ah_tmax, "Horizon", "no horizon searches for the shift after this time",
        Acts::with_searches, finite()},
       {"ah-tol", &Params::ah_tol, "Horizon",
        "root-finder tolerance of the horizon radius; at most 1e-3 x the smallest cell width",
-       Acts::always, above(0.0)},
+       Acts::always, above(0.0),
+       &at<&EvolutionConfig::horizon_search, &HorizonSearchSettings::finder,
+           &HorizonFinderParams::tolerance>},
       {"rah-variant", &Params::rah_variant, "Horizon",
        "consistent (the method); for the study only: no-shift-derivatives, "
        "no-shift-second-derivatives, delta-rhs-from-gd, driver-full-shift, midstep-update, "

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
 
 namespace gbssn1d {
@@ -202,6 +203,22 @@ void check_bounds(const Params& p) {
           }
         },
         spec.member);
+}
+
+void copy_into(const Params& p, EvolutionConfig& c) {
+  for (const auto& spec : param_specs())
+    std::visit(
+        [&](auto member, auto field) {
+          using T = std::decay_t<decltype(p.*member)>;
+          if constexpr (!std::is_same_v<decltype(field), std::monostate>) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(field(c))>, T>)
+              field(c) = p.*member;
+            else
+              throw std::logic_error("--" + std::string(spec.name)
+                                     + "'s row puts it into a field of another type");
+          }
+        },
+        spec.member, spec.into);
 }
 
 } // namespace gbssn1d

@@ -1,8 +1,8 @@
 // The table of evolve flags (internal to src/config): for each flag its name, where it lives in
 // Params, its --help group and text, where it acts and the values it accepts (its rows:
 // flag_rows.cpp). One row per flag: the CLI11 options, config files (config_file.cpp), the
-// effective configuration (same_run.cpp) and each flag's own refusals (check_bounds()) all
-// read it.
+// effective configuration (same_run.cpp), each flag's own refusals (check_bounds()) and, for a
+// flag copied as given, its place in the evolution's configuration (copy_into()) all read it.
 #pragma once
 
 #include "config/params.hpp"
@@ -17,6 +17,20 @@
 #include <vector>
 
 namespace gbssn1d {
+
+struct EvolutionConfig; // evolution/evolution_config.hpp
+
+/// A field of the evolution's configuration, reached through the members `path` from it
+/// (at<&EvolutionConfig::rhs, &RhsParams::ko_sigma>): where a flag copied there as given goes.
+template <auto... path>
+auto& at(EvolutionConfig& c) {
+  return (c.*....*path);
+}
+/// Where a flag's row puts its value in the evolution's configuration (evolution_config()), for
+/// a flag copied there unchanged: its row then is its whole conversion. None: param_convert.cpp
+/// converts it (a rule, a unit, or a value that others depend on).
+using Destination =
+    std::variant<std::monostate, double& (*)(EvolutionConfig&), bool& (*)(EvolutionConfig&)>;
 
 /// A choice flag's value (config/choices.hpp): read from its name, written as its name.
 template <class T>
@@ -100,6 +114,7 @@ struct ParamSpec {
   const char* help;
   Acts acts = Acts::always;
   std::optional<Bounds> bounds = std::nullopt; ///< none: checked by validate() itself
+  Destination into = {}; ///< the value's field in EvolutionConfig, for a flag copied as given
 };
 
 /// Every evolve parameter, in the order of --help and config.toml.
@@ -108,6 +123,9 @@ const std::vector<ParamSpec>& param_specs();
 /// The value as config-file text, or nothing for an unset optional (the file then leaves the
 /// key out, which reads back as unset).
 std::optional<std::string> value_text(const Params& p, const ParamSpec& spec);
+
+/// Copies every flag whose row names its field (ParamSpec::into) into `c`.
+void copy_into(const Params& p, EvolutionConfig& c);
 
 /// Throws ParamError for the first flag in table order whose value lies outside its row's
 /// bounds, or a choice flag's that names none of its choices (a rule's value as given).

@@ -1,5 +1,6 @@
 #include "config/params.hpp"
 
+#include "config/flag_table.hpp"
 #include "config/param_rules.hpp"
 #include "core/text.hpp"
 #include "evolution/levels.hpp"
@@ -43,6 +44,35 @@ HorizonSearchSettings::Schedule search_schedule(ShiftVariant v) {
                                            : S::standard;
 }
 
+/// The right-hand side's parameters, but those whose flag rows name their field (copy_into()).
+RhsParams rhs_params(const ResolvedParams& p) {
+  RhsParams r;
+  // the Eulerian volume choice is a formulation of its own (gbssn/bssn_eulerian.hpp)
+  r.formulation = p.formulation == Formulation::bssn && p.gbssn_volume == Volume::eulerian
+                      ? Formulation::bssn_eulerian
+                      : p.formulation.value();
+  r.matter = p.matter.value();
+  r.z4c.kappa1 = p.kappa1();
+  r.z4c.kappa1_hole = p.kappa1_hole();
+  r.z4c.hole_radius = Z4cParams{}.hole_radius * p.M;
+  r.gauge.shift.eta = p.eta();
+  if (p.shift == ShiftCondition::zero)
+    r.gauge.shift.xi = 0.0; // (G2): d_t beta = 0, and beta = 0 in the data (validate())
+  r.gauge.slicing.advective = !p.non_advective_lapse;
+  r.horizon_shift.h = p.rah0;
+  r.horizon_shift.width = p.rah_width;
+  r.horizon_shift.r_cut = p.rah_rcut();
+  r.horizon_shift.taper = p.rah_taper().value();
+  r.horizon_shift.profile = p.rah_profile.value();
+  r.horizon_shift.normal = p.rah_normal.value();
+  resolve_automatic_profile(r.horizon_shift, p.M);
+  r.advection.driver = p.driver_advection.value();
+  r.advection.delta = p.delta_advection.value();
+  r.upwind = p.upwind.value();
+  r.horizon_shift.variant = equations_variant(p.rah_variant.value());
+  return r;
+}
+
 } // namespace
 
 EvolutionConfig mesh_config(const ResolvedParams& p) {
@@ -75,12 +105,6 @@ EvolutionConfig evolution_config(const ResolvedParams& p) {
   EvolutionConfig c = mesh_config(p);
   c.initial_data = initial_data_params(p);
   c.rhs = rhs_params(p);
-  c.chi_floor = p.chi_floor;
-  c.tmax = p.tmax;
-  c.dt_series = p.dt_series;
-  c.dt_profiles = p.dt_profiles;
-  c.checkpoint_every = p.checkpoint_every;
-  c.norms.rmin = p.norm_rmin;
   c.norms.rmax = p.norm_rmax();
   c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
   c.norms.Rmax = p.norm_Rmax * p.M;
@@ -89,11 +113,10 @@ EvolutionConfig evolution_config(const ResolvedParams& p) {
   c.horizon_search.extrapolate = p.ah_every == SearchEvery::extrapolated;
   c.horizon_search.interval = p.ah_interval.value_or(0.0);
   c.horizon_search.schedule = search_schedule(p.rah_variant.value());
-  c.horizon_search.t_min = p.ah_tmin;
   c.horizon_search.t_max = p.ah_tmax.value_or(std::numeric_limits<double>::infinity());
-  c.horizon_search.finder.tolerance = p.ah_tol;
   if (uses_hAH_file(p))
     c.horizon_search.prescribed = load_prescribed_horizon(p.rah_hAH_file, p.tmax);
+  copy_into(p, c); // the flags whose rows name their field (config/flag_table.hpp)
   return c;
 }
 
@@ -104,41 +127,6 @@ InitialDataParams initial_data_params(const Params& p) {
   id.lapse0 = p.lapse0.value();
   id.scalar = {p.scalar_amp, p.scalar_r0, p.scalar_width};
   return id;
-}
-
-RhsParams rhs_params(const ResolvedParams& p) {
-  RhsParams r;
-  // the Eulerian volume choice is a formulation of its own (gbssn/bssn_eulerian.hpp)
-  r.formulation = p.formulation == Formulation::bssn && p.gbssn_volume == Volume::eulerian
-                      ? Formulation::bssn_eulerian
-                      : p.formulation.value();
-  r.matter = p.matter.value();
-  r.z4c.kappa1 = p.kappa1();
-  r.z4c.kappa2 = p.kappa2;
-  r.z4c.kappa1_hole = p.kappa1_hole();
-  r.z4c.hole_radius = Z4cParams{}.hole_radius * p.M;
-  r.z4c.lapse_adm_K = p.z4c_lapse_adm;
-  r.gauge.shift.eta = p.eta();
-  r.gauge.shift.advective = p.advective_shift;
-  if (p.shift == ShiftCondition::zero)
-    r.gauge.shift.xi = 0.0; // (G2): d_t beta = 0, and beta = 0 in the data (validate())
-  r.gauge.slicing.advective = !p.non_advective_lapse;
-  r.ko_sigma = p.ko_sigma;
-  r.horizon_shift.A = p.rahA;
-  r.horizon_shift.h = p.rah0;
-  r.horizon_shift.width = p.rah_width;
-  r.horizon_shift.ramp = p.rah_ramp;
-  r.horizon_shift.r_cut = p.rah_rcut();
-  r.horizon_shift.taper = p.rah_taper().value();
-  r.horizon_shift.profile = p.rah_profile.value();
-  r.horizon_shift.normal = p.rah_normal.value();
-  r.horizon_shift.chi_smooth = p.rah_chi_smooth;
-  resolve_automatic_profile(r.horizon_shift, p.M);
-  r.advection.driver = p.driver_advection.value();
-  r.advection.delta = p.delta_advection.value();
-  r.upwind = p.upwind.value();
-  r.horizon_shift.variant = equations_variant(p.rah_variant.value());
-  return r;
 }
 
 std::function<double(double)> load_prescribed_horizon(const std::string& path, double t_end) {

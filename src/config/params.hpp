@@ -258,7 +258,6 @@ std::vector<std::string> warnings(const ResolvedParams& p);
 EvolutionConfig evolution_config(const ResolvedParams& p);
 GridSpec grid_spec(const Params& p);
 InitialDataParams initial_data_params(const Params& p);
-RhsParams rhs_params(const ResolvedParams& p);
 
 /// h_AH(t) read from the columns `t` and `r_ah` of a gbssn1d output file (horizon.dat or
 /// timeseries.dat), as a cubic B-spline in t (C2, so that RK4 sees a smooth function). Throws

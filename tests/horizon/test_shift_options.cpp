@@ -197,7 +197,7 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   given.rahA = 0.5;
   given.rah0 = 0.6;
   const ResolvedParams p = resolve(given);
-  CHECK(rhs_params(p).horizon_shift.profile == ShiftProfile::gauss);
+  CHECK(evolution_config(p).rhs.horizon_shift.profile == ShiftProfile::gauss);
   // and config.toml records what auto stood for, so that a later change of auto is detected
   CHECK(p.rah_profile == ShiftProfile::gauss);
   CHECK(p.rah_width == 1.0);
@@ -205,8 +205,8 @@ TEST_CASE("--rah-profile auto: rational with w = 3 max(h, M) to stretch, gauss w
   q_given.rahA = 0.5;
   q_given.rah0 = 0.89;
   const ResolvedParams q = resolve(q_given);
-  CHECK(rhs_params(q).horizon_shift.profile == ShiftProfile::rational);
-  CHECK(rhs_params(q).horizon_shift.width == 3.0);
+  CHECK(evolution_config(q).rhs.horizon_shift.profile == ShiftProfile::rational);
+  CHECK(evolution_config(q).rhs.horizon_shift.width == 3.0);
   CHECK(q.rah_profile == ShiftProfile::rational);
   CHECK(config_text(q).find("rah-width = 3\n") != std::string::npos);
   // without the horizon shift nothing is resolved (auto means nothing there)
