@@ -182,9 +182,11 @@ std::string hierarchy_step_warning(const std::vector<ResolvedParams>& members) {
       "extrapolate h_AH over a step of the hierarchy, so each member's gauge differs from the "
       "others' by that extrapolation's error (about 2e-6 in r_AH for the stretch to 0.89 M: "
       "docs/horizon-shift-study.md, Sec. 6.7), and its fields converge to the others' only "
-      "while their errors are larger; N in power-of-two ratios, --no-subcycling or "
-      "--rah-hAH-file avoid it",
-      fmt::join(steps, ", "));
+      "while their errors are larger; members whose hierarchies step alike (N in power-of-two "
+      "ratios, each small enough that the cap dt_max = {:.4g} M on the coarse boxes' step "
+      "binds in all of them; where it binds in none the steps halve with N), --no-subcycling "
+      "or --rah-hAH-file avoid it",
+      fmt::join(steps, ", "), evolution_config(p).stepping.dt_max);
 }
 
 } // namespace
@@ -201,10 +203,13 @@ std::vector<ResolvedParams> converge_members(const Params& base, const ConvergeO
     const auto v = var_from_name(name);
     if (!v)
       throw ParamError("--fields", name, "is not an evolved variable");
-    if (!traits(base.formulation.value()).evolves(*v))
-      throw ParamError("--fields", name,
-                       fmt::format("is not evolved with --formulation {} (z4c evolves it)",
-                                   base.formulation.name()));
+    if (!Fields(base.formulation.value(), base.matter.value()).holds(*v))
+      throw ParamError(
+          "--fields", name,
+          fmt::format("is not evolved with --formulation {} --matter {} ({} evolves it)",
+                      base.formulation.name(), base.matter.name(),
+                      Fields(Formulation::z4c).holds(*v) ? "--formulation z4c"
+                                                         : "--matter scalar"));
   }
   std::vector<ResolvedParams> members;
   for (int n : options.N) {

@@ -188,17 +188,21 @@ TEST_CASE("the scalar field's shell falls into the hole: M_AH grows by more than
 }
 
 TEST_CASE("converge: the scalar pulse at A = 0.01 on flat space converges at N = 200, 300, 400 to "
-          "t = 20 (exit 0), in BSSN and in Z4c") {
+          "t = 20 (exit 0), in BSSN and in Z4c, Phi and Pi with the geometry") {
   for (const std::string f : {"bssn", "z4c"}) {
     const auto out = gbssn1d::testing::scratch("scalar_converge_" + f, true);
     std::filesystem::remove_all(out);
     const auto r = gbssn1d::testing::run(
         "converge --N 200,300,400 --id flat --matter scalar --scalar-amp 0.01 --grid uniform "
-        "--rmax 40 --tmax 20 --formulation "
+        "--rmax 40 --tmax 20 --fields alpha,chi,K,Phi,Pi --formulation "
         + f + " --out " + out.string());
     INFO(f << ": " << r.err);
     CHECK(r.status == 0);
     CHECK(r.err.find("converges: H converges") != std::string::npos);
+    // the field itself converges too (its differences' orders are judged with the rest)
+    const std::string text = gbssn1d::testing::slurp(out / "convergence.dat");
+    CHECK(text.find("\n# order Phi N = 200, 300 and 400: ") != std::string::npos);
+    CHECK(text.find("\n# order Pi N = 200, 300 and 400: ") != std::string::npos);
     std::filesystem::remove_all(out);
   }
 }

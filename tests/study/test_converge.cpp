@@ -256,6 +256,7 @@ TEST_CASE("converge: on seven boxes the stretched horizon (0.89 M) converges (ex
   CHECK(err.find("warning: the members' hierarchies step by different dt (N = 24: 0.3333 M, N = "
                  "32: 0.5 M, N = 48: 0.3333 M)")
         != std::string::npos);
+  CHECK(err.find("each small enough that the cap dt_max = ") != std::string::npos);
   std::string text = slurp(out / "convergence.dat");
   CHECK(text.find("\n# verdict: converges: H converges (") != std::string::npos);
   CHECK(order_line(text, "alpha", "N = 24, 32 and 48").find(": converges") != std::string::npos);
