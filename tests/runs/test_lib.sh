@@ -26,7 +26,7 @@ for script in thesis.sh z4c.sh hold-scaling.sh cfl.sh horizon-defaults.sh outer-
   horizon-convergence.sh horizon-long.sh horizon-variants.sh wormhole-1000M.sh uniform-m16.sh \
   boundary-reflections.sh driver-split.sh fd-order.sh horizon-width.sh horizon-wormhole.sh \
   horizon-coarse.sh error-constant.sh boxes.sh box-interfaces.sh refinement.sh demo.sh \
-  horizon-experiments.sh horizon-robustness.sh; do
+  horizon-experiments.sh horizon-robustness.sh critical.sh accretion.sh; do
   for jobs in 0 -1 abc 2000 "1 2" 07; do
     target=$dir/jobs-$script
     # the argument a script takes before OUT (a stage, a part, a tmax)
