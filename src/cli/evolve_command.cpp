@@ -13,6 +13,7 @@
 #include "core/stop_signal.hpp"
 #include "core/text.hpp"
 #include "evolution/simulation.hpp"
+#include "initial_data/initial_data.hpp"
 #include "io/output.hpp"
 
 #include <fmt/format.h>
@@ -92,6 +93,9 @@ int evolve(const Params& given, bool print_config) {
 
   Simulation sim(evolution_config(p)); // initial data are computed before anything is written
   sim.show_progress = true;
+  if (p.matter == Matter::scalar)
+    say("gbssn1d: the data's ADM mass: {:.12g}\n",
+        adm_mass(sim.config().initial_data, sim.state().fields()));
   warn_shift_courant(sim, p);
   for (const auto& w : empty_norm_windows(sim.composite().grid(), sim.composite_profiles().R_areal,
                                           sim.config().norms))

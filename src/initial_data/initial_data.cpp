@@ -100,6 +100,13 @@ void scalar_pulse(State& u, const Grid& grid, const InitialDataParams& params) {
 
 } // namespace
 
+double adm_mass(const InitialDataParams& params, Fields fields) {
+  const double hole = params.kind == InitialDataKind::flat ? 0.0 : params.M;
+  if (fields.matter != Matter::scalar)
+    return hole;
+  return ScalarPulseData(params.scalar, hole).adm_mass();
+}
+
 State initial_data(const Grid& grid, const InitialDataParams& params, Fields fields) {
   // Z4c: Theta = 0 (its value at infinity, flat()), so that K-hat = K (Sec. 17)
   State u = make_state(grid, fields);

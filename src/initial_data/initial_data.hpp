@@ -18,4 +18,9 @@ namespace gbssn1d {
 /// Hamiltonian constraint gives (initial_data/scalar_pulse.hpp).
 State initial_data(const Grid& grid, const InitialDataParams& params, Fields fields);
 
+/// The ADM mass of those data: M for a black hole's, 0 for flat space's, and with the scalar
+/// field M (0 on flat space) plus the field's, -2 lim r^2 psi' of the conformal factor solved
+/// from the Hamiltonian constraint.
+double adm_mass(const InitialDataParams& params, Fields fields);
+
 } // namespace gbssn1d

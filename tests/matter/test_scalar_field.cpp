@@ -187,6 +187,52 @@ TEST_CASE("the scalar field's shell falls into the hole: M_AH grows by more than
   CHECK(std::abs(held.M_AH_end - left.M_AH_end) < 2e-3 * left.M_AH_end);
 }
 
+TEST_CASE("evolve reports the data's ADM mass with the scalar field, which the Misner-Sharp mass "
+          "beyond the pulse approaches with resolution") {
+  // Outside the pulse the data are Schwarzschild's (Birkhoff), so m_ms there is the ADM mass the
+  // conformal factor's ODE gives; on the grid it differs by the finite differences' error
+  const auto error_at = [](int N, const std::string& data, double* reported) {
+    const auto out = scratch("scalar_adm_" + std::to_string(N) + data.substr(5), true);
+    std::filesystem::remove_all(out);
+    const auto r = gbssn1d::testing::run("evolve " + data
+                                         + " --matter scalar --scalar-amp 0.04 "
+                                           "--scalar-r0 10 --scalar-width 2 --tmax 0 --N "
+                                         + std::to_string(N) + " --out " + out.string());
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string said = "the data's ADM mass: ";
+    const auto at = r.err.find(said);
+    REQUIRE(at != std::string::npos);
+    *reported = std::stod(r.err.substr(at + said.size()));
+    const auto t = gbssn1d::testing::read_table((out / "profiles.dat").string());
+    std::size_t i = 0;
+    while (t.at(i, "r") < 150.0)
+      ++i;
+    const double error = t.at(i, "m_ms") - *reported;
+    std::filesystem::remove_all(out);
+    return error;
+  };
+  double hole = 0.0, flat = 0.0;
+  const double e200 = error_at(200, "--id wormhole", &hole);
+  const double e400 = error_at(400, "--id wormhole", &hole);
+  INFO(fmt::format("wormhole: M_ADM {:.12g}, m_ms - M_ADM at r ~ 150: {:.3g}, {:.3g}", hole, e200,
+                   e400));
+  CHECK(std::abs(e200) < 2e-7);
+  CHECK(std::abs(e400) < std::abs(e200) / 8.0);
+  CHECK(hole > 1.6); // the hole's M = 1 and the shell's
+  CHECK(hole < 1.8);
+  error_at(400, "--id flat", &flat);
+  CHECK(std::abs(hole - 1.0 - flat) < 0.1 * flat); // the shell weighs about as much on flat space
+  MESSAGE(fmt::format("M_ADM {:.12g} (flat: {:.12g}); m_ms - M_ADM at r ~ 150: {:.3g}, {:.3g}",
+                      hole, flat, e200, e400));
+  // a vacuum run says nothing of it
+  const auto out = scratch("scalar_adm_vacuum", true);
+  std::filesystem::remove_all(out);
+  const auto v = gbssn1d::testing::run("evolve --tmax 0 --out " + out.string());
+  CHECK(v.err.find("ADM mass") == std::string::npos);
+  std::filesystem::remove_all(out);
+}
+
 TEST_CASE("converge: the scalar pulse at A = 0.01 on flat space converges at N = 200, 300, 400 to "
           "t = 20 (exit 0), in BSSN and in Z4c, Phi and Pi with the geometry") {
   for (const std::string f : {"bssn", "z4c"}) {
