@@ -204,12 +204,12 @@ std::vector<ResolvedParams> converge_members(const Params& base, const ConvergeO
     if (!v)
       throw ParamError("--fields", name, "is not an evolved variable");
     if (!Fields(base.formulation.value(), base.matter.value()).holds(*v))
-      throw ParamError(
-          "--fields", name,
-          fmt::format("is not evolved with --formulation {} --matter {} ({} evolves it)",
-                      base.formulation.name(), base.matter.name(),
-                      Fields(Formulation::z4c).holds(*v) ? "--formulation z4c"
-                                                         : "--matter scalar"));
+      throw ParamError("--fields", name,
+                       fmt::format("is not evolved with --formulation {} --matter {} ({})",
+                                   base.formulation.name(), base.matter.name(),
+                                   Fields(base.formulation.value(), Matter::scalar).holds(*v)
+                                       ? "--matter scalar evolves it"
+                                       : "another --formulation evolves it"));
   }
   std::vector<ResolvedParams> members;
   for (int n : options.N) {
