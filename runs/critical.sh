@@ -28,12 +28,25 @@
 # and redone only where a command or the binary changed; an interrupted run resumes. About
 # 15 minutes on 2 cores (the two shifts' runs side by side, 7 s each).
 #
-# Usage: bash runs/critical.sh [OUT]     GBSSN1D_JOBS: runs at once (default: the core count)
+# Usage: bash runs/critical.sh [OUT] [N]   GBSSN1D_JOBS: runs at once (default: the core count)
+#   N: cells per box (default 128); 256 halves every spacing (the resolution's check: about 4
+#   times the cost), and its results default to out/critical-N256.
 set -euo pipefail
 here=$PWD
+N=128
+[ $# -lt 2 ] || N=$2
+case $N in
+'' | *[!0-9]* | 0*) echo "runs/critical.sh: N = '$N' is invalid: it must be a whole number of cells per box, e.g. 128 or 256" >&2; exit 2 ;;
+esac
+if [ "$N" -lt 64 ] || [ "$N" -gt 4096 ]; then
+  echo "runs/critical.sh: N = $N is invalid: 64 to 4096 cells per box" >&2
+  exit 2
+fi
+default=out/critical
+[ "$N" = 128 ] || default=out/critical-N$N
 cd "$(dirname "$0")/.."
 source runs/lib.sh
-lib_init runs/critical.sh "$here" out/critical "${1:-}"
+lib_init runs/critical.sh "$here" "$default" "${1:-}"
 [ -x build/gbssn1d ] || { bash .ci/install-deps && bash .ci/build gbssn1d >/dev/null; }
 py=/usr/bin/python3
 # The grid: 13 nested boxes of 128 cells to rmax 32 (Berger-Oliger subcycling: each box steps
@@ -42,7 +55,7 @@ py=/usr/bin/python3
 # grid of the same innermost cell takes minutes (every cell steps at the smallest cell's step).
 # The outer boundary lies 20 beyond where the outgoing half of the pulse is at t = 12. The time:
 # tmax 12 (collapse or dispersal is decided by t ~ 7), Phi_center every 0.005.
-grid=(--id flat --matter scalar --scalar-r0 0 --scalar-width 1 --grid boxes --rmax 32 --N 128
+grid=(--id flat --matter scalar --scalar-r0 0 --scalar-width 1 --grid boxes --rmax 32 --N "$N"
       --levels 13)
 family=("${grid[@]}" --tmax 12 --dt-series 0.005 --dt-profiles 12)
 shifts=(gamma-driver zero)

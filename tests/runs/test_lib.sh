@@ -64,6 +64,15 @@ for script in z4c.sh horizon-coarse.sh boxes.sh box-interfaces.sh refinement.sh 
   [ ! -e "$target" ] || fail "$script bogus made $target"
 done
 echo "an unknown stage: refused by every script that takes one (exit 2), nothing made"
+# critical.sh's resolution (its second argument): refused before anything is made
+for N in bogus 0 012 32 100000 ''; do
+  target=$dir/critical-N
+  status=0
+  (cd "$dir" && bash "$src/runs/critical.sh" "$target" "$N" >"$dir/stage.out" 2>&1) || status=$?
+  [ $status -eq 2 ] && grep -q "N = " "$dir/stage.out" || fail "critical.sh OUT '$N': exit $status ($(cat "$dir/stage.out"))"
+  [ ! -e "$target" ] || fail "critical.sh OUT '$N' made $target"
+done
+echo "critical.sh with a bad N: refused (exit 2), nothing made"
 
 # 2. a study script of two runs on the library
 cat >"$dir/study.sh" <<EOF
