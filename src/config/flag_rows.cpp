@@ -157,8 +157,7 @@ std::vector<ParamSpec> diagnostics_specs() {
   };
 }
 
-/// The horizon-adjusting shift (its profile, stencils, searches and study variants), and the
-/// output folder.
+/// The horizon-adjusting shift: its strength, target, profile and stencils.
 std::vector<ParamSpec> horizon_shift_specs() {
   return {
       {"rahA", &Params::rahA, "Horizon", "strength A of the horizon-adjusting shift (0: off)",
@@ -212,6 +211,12 @@ std::vector<ParamSpec> horizon_shift_specs() {
       {"delta-advection", &Params::delta_advection, "Numerics",
        "stencil of beta d_r Delta^r in d_t Delta^r: upwind-full | upwind-gd | centred",
        Acts::with_delta_stencil},
+  };
+}
+
+/// The horizon searches that steer the shift, its study variants, and the output folder.
+std::vector<ParamSpec> horizon_search_specs() {
+  return {
       {"ah-every", &Params::ah_every, "Horizon",
        "horizon search: substage (every RK stage), extrapolated (after every step, h_AH at the "
        "RK stages from the last four radii; on two or more boxes the same as substage), step, "
@@ -248,8 +253,8 @@ std::vector<ParamSpec> horizon_shift_specs() {
 const std::vector<ParamSpec>& param_specs() {
   static const std::vector<ParamSpec> specs = [] {
     std::vector<ParamSpec> all;
-    for (auto group :
-         {grid_and_data_specs, evolution_specs, diagnostics_specs, horizon_shift_specs}) {
+    for (auto group : {grid_and_data_specs, evolution_specs, diagnostics_specs, horizon_shift_specs,
+                       horizon_search_specs}) {
       const std::vector<ParamSpec> specs = group();
       all.insert(all.end(), specs.begin(), specs.end());
     }
