@@ -224,12 +224,8 @@ def figures(out, runs, table):
                    if gr == grid and math.isfinite(err) and err > 0]
             if pts:
                 ax.loglog(*zip(*pts), style, color=color, ms=3, label=f'{g}, {grid}')
-    ax.set_xlabel('cost: N x RHS evaluations')
-    ax.set_ylabel('|M_AH - M_AH(sinh, finest)| at t = 60')
-    ax.set_title("M_AH's error against cost")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    gd.save_figure(fig, os.path.join(out, 'cost.png'))
+    gd.finish(fig, ax, 'cost: N x RHS evaluations', '|M_AH - M_AH(sinh, finest)| at t = 60',
+              "M_AH's error against cost", os.path.join(out, 'cost.png'))
 
 
 def main(out):
@@ -241,5 +237,6 @@ def main(out):
 
 if __name__ == '__main__':
     if len(sys.argv) != 2:
-        raise SystemExit('usage: accretion.py OUT')
+        sys.stderr.write('usage: accretion.py OUT\n')
+        sys.exit(2)
     gd.run_script(main, sys.argv[1])

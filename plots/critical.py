@@ -201,15 +201,6 @@ def report(r):
           + ', '.join(f'{d:.3f}' for d in echo['triples']))
 
 
-def save(fig, ax, xlabel, ylabel, title, path):
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path)
-
-
 def figures(out, results):
     plt = gd.pyplot()
     fig, ax = plt.subplots()
@@ -226,7 +217,7 @@ def figures(out, results):
             c = np.mean(np.log(m) - gamma * np.log(x))
             ax.loglog(x, np.exp(c) * x ** gamma, '-', color=color,
                       label=f'gamma = {gamma:.3f} +- {err:.3f}')
-    save(fig, ax, 'A - p*', 'M_AH', f'mass scaling (published gamma = {GAMMA})',
+    gd.finish(fig, ax, 'A - p*', 'M_AH', f'mass scaling (published gamma = {GAMMA})',
          os.path.join(out, 'mass-scaling.png'))
     fig, ax = plt.subplots()
     for color, r in zip(gd.qualitative_colors(len(results), 'shifts'), results):
@@ -240,7 +231,7 @@ def figures(out, results):
         for Tk in echo['Tk']:
             ax.axvline(math.log(echo['T_star'] - Tk), color=color, lw=0.6, ls=':')
     ax.invert_xaxis()
-    save(fig, ax, 'ln(T* - T), T the central proper time', 'Phi at r = 0',
+    gd.finish(fig, ax, 'ln(T* - T), T the central proper time', 'Phi at r = 0',
          f'echoes (dotted: the extrema fitted; published Delta = {DELTA})',
          os.path.join(out, 'echoes.png'))
 
@@ -248,7 +239,8 @@ def figures(out, results):
 def main(out, eps_lo, eps_hi, *specs):
     eps_lo, eps_hi = float(eps_lo), float(eps_hi)
     if len(specs) % 4 or not specs:
-        raise SystemExit('usage: critical.py OUT EPS_LO EPS_HI SHIFT LO HI STATE [...]')
+        sys.stderr.write('usage: critical.py OUT EPS_LO EPS_HI SHIFT LO HI STATE [...]\n')
+        sys.exit(2)
     results = []
     for i in range(0, len(specs), 4):
         shift, lo, hi, state = specs[i], float(specs[i + 1]), float(specs[i + 2]), specs[i + 3]
@@ -269,4 +261,7 @@ def main(out, eps_lo, eps_hi, *specs):
 
 
 if __name__ == '__main__':
+    if len(sys.argv) < 8:
+        sys.stderr.write('usage: critical.py OUT EPS_LO EPS_HI SHIFT LO HI STATE [...]\n')
+        sys.exit(2)
     gd.run_script(main, *sys.argv[1:])

@@ -145,12 +145,14 @@ std::string hierarchy_step_warning(const std::vector<ResolvedParams>& members) {
     return {};
   std::vector<std::string> steps, uneven;
   bool differ = false;
-  double first = 0.0;
+  double first = 0.0, dt_max = 0.0; // the cap, the same in every member (it depends not on N)
   for (const ResolvedParams& m : members) {
     const EvolutionConfig c = evolution_config(m);
     const double dt = mesh::hierarchy_dt(make_layout(c), c.stepping);
-    if (steps.empty())
+    if (steps.empty()) {
       first = dt;
+      dt_max = c.stepping.dt_max;
+    }
     differ = differ || std::abs(dt - first) > 1e-12 * first;
     steps.push_back(fmt::format("N = {}: {:.4g} M", m.N, dt));
     if (m.ah_interval) {
@@ -186,7 +188,7 @@ std::string hierarchy_step_warning(const std::vector<ResolvedParams>& members) {
       "ratios, each small enough that the cap dt_max = {:.4g} M on the coarse boxes' step "
       "binds in all of them; where it binds in none the steps halve with N), --no-subcycling "
       "or --rah-hAH-file avoid it",
-      fmt::join(steps, ", "), evolution_config(p).stepping.dt_max);
+      fmt::join(steps, ", "), dt_max);
 }
 
 } // namespace

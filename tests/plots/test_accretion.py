@@ -17,15 +17,9 @@ import numpy as np
 
 plots, work = sys.argv[1], sys.argv[2]
 sys.path.insert(0, plots)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import accretion  # noqa: E402
-
-failures = []
-
-
-def check(ok, what):
-    print(('ok   ' if ok else 'FAIL ') + what)
-    if not ok:
-        failures.append(what)
+from checks import check, done  # noqa: E402
 
 
 def write_run(path, t, r_ah, m_ah, rahA, rah0, N, end='completed at t = 80', log=None):
@@ -124,5 +118,4 @@ check(len(stopped) == 2, f'the stopped boxes run is named, once per gauge ({len(
 check(os.path.exists(os.path.join(work, 'accretion.png'))
       and os.path.exists(os.path.join(work, 'cost.png')), 'both figures drawn')
 
-print(f'{len(failures)} failed' if failures else 'all passed')
-sys.exit(1 if failures else 0)
+done('plots/accretion.py')
