@@ -54,6 +54,11 @@ What is checked (each prints PASS/FAIL):
       d_t ln det gbar = 2 (1 - sigma) Dbar.beta); Lagrangian minus Eulerian = the sigma terms,
       equation by equation; chi form; d_t ln(a b^2) = 2 Dbar.beta; ADM consistency as in V3;
       Kerr-Schild keeps gamma_ij, K_ij but not a, b; parity and regularity as in V7.
+  V10 massless scalar field (Sec. 19): the sources from T_ab, (S1)-(S2) as the Klein-Gordon
+      equation for any lapse and shift, (S4)-(S6) as the ADM equations with matter, parity.
+  V11 energy flux (S7): along a sphere of fixed areal radius the rates of BSSN with matter
+      change the Misner-Sharp mass by -F, for any lapse, shift and matter, once the constraints
+      with their sources hold (and not with j_r's sign flipped); the scalar field's form.
 """
 import os
 import sys
@@ -1274,6 +1279,42 @@ src7 = scalar_sources(Ea, sp.exp(-4*Ep), EPhi, EPi)
 report(parity_of(sr7['Phi']) == 1 and parity_of(sr7['Pi']) == 1, 'parity of d_t Phi and d_t Pi is even')
 report(all(parity_of(src7[k]) == 1 for k in ['rho', 'Sa', 'Sb', 'S']) and parity_of(src7['jr']) == -1,
        'rho, S^r_r, S^theta_theta, S even; j_r odd')
+print(f'      ({time.time()-t:.1f}s)', flush=True)
+
+# ============================================================================
+print('=== V11: energy flux through a sphere of fixed areal radius (S7) ===', flush=True)
+t = time.time()
+# (S7) as the equations document writes it, for any matter (the sources of V10, free functions)
+R11 = areal_radius(fb, fphi)
+e11 = sp.exp(-2*fphi)/sp.sqrt(fa)                  # (chi/a)^(1/2) = 1/sqrt(gamma_rr)
+Gam11 = e11*D(R11)
+U11 = -R11*(fK/3 - fAa/2)                           # -R K^theta_theta
+
+
+def flux_S7(rho, jr, Srr):
+    return 4*sp.pi*R11**2*fal/Gam11*(Gam11*U11*(rho + Srr) + (Gam11**2 + U11**2)*e11*jr)
+
+
+m11 = misner_sharp(fa, fb, fphi, fK, -fAa/2)
+report(zero(1 - 2*m11/R11 - (Gam11**2 - U11**2)), '1 - 2m/R = Gamma^2 - U^2 (T4)')
+# d m/dt along the sphere R = const (the worldline dr/dt = -d_t R / R'), with the rates of BSSN
+# with matter (V10's ddt_m); it is -F once the constraints with their sources hold, which here
+# give rho and j_r: H - 16 pi rho = 0, M_r - 8 pi j_r = 0. S^r_r and S^theta_theta stay free.
+dm_R = ddt_m(m11) - ddt_m(R11)/D(R11)*D(m11)
+H11 = hamiltonian(fa, fb, fphi, fK, fAa, -fAa/2, Lg)
+M11 = momentum(fa, fb, fphi, fK, fAa, -fAa/2)
+on_shell = {frho: H11/(16*sp.pi), fjr: M11/(8*sp.pi)}
+report(zero((dm_R + flux_S7(frho, fjr, fSa)).subs(on_shell)),
+       'd m/dt at fixed R = -F of (S7), any lapse, shift and matter, on the constraints')
+report(not zero((dm_R + flux_S7(frho, -fjr, fSa)).subs(on_shell)),
+       'the same with j_r of the other sign fails (the check can fail)')
+# the scalar field's: F = 4 pi R^2 (alpha/Gamma) (Gamma Pi - U Phi_e)(U Pi - Gamma Phi_e), with
+# Phi_e = (chi/a)^(1/2) Phi' (T_ab's g_ab term drops out along the sphere)
+src11 = scalar_sources(fa, fpsi**-4, fPhi, fPi)
+Phi_e = e11*D(fPhi)
+report(zero(flux_S7(src11['rho'], src11['jr'], src11['Sa'])
+            - 4*sp.pi*R11**2*fal/Gam11*(Gam11*fPi - U11*Phi_e)*(U11*fPi - Gam11*Phi_e)),
+       'scalar field: (S7) = 4 pi R^2 (alpha/Gamma)(Gamma Pi - U Phi_e)(U Pi - Gamma Phi_e)')
 print(f'      ({time.time()-t:.1f}s)', flush=True)
 
 print(f'\nTotal time {time.time()-T0:.1f}s;  failures: {NFAIL}')

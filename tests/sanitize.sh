@@ -77,7 +77,8 @@ status=0
 # and a smooth h_AH (the h_AH file and the converge members run in faster cases), every flag's
 # run where its row says it acts and the tightened horizon tolerance (the runs' RHS, finder and
 # conversions run in the faster cases; the flags' validation under the sanitizers in the bound
-# and hostile-input cases).
+# and hostile-input cases); and the energy flux's time integral at three resolutions (its point
+# formula and the spheres' sampling run in the faster flux cases).
 slow=(
   "converge interrupted after a member completed"
   "a resumed run's progress line counts its speed from the resume"
@@ -110,6 +111,7 @@ slow=(
   "converge: the published configuration with h_AH held 1 M apart does not converge"
   "every flag acts where its table row says it acts"
   "every flag's tolerance is met"
+  "flux_R20 over t is the change of m_R20"
 )
 for name in "${slow[@]}"; do # a renamed case would otherwise run unnoticed: say so
   pattern=$(sed 's/[][\\.^$*+?(){}|]/\\&/g' <<<"$name")

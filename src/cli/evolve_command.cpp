@@ -100,6 +100,9 @@ int evolve(const Params& given, bool print_config) {
   for (const auto& w : empty_norm_windows(sim.composite().grid(), sim.composite_profiles().R_areal,
                                           sim.config().norms))
     say("gbssn1d: warning: {}: {}\n", w.flags, w.what);
+  for (const auto& w : absent_spheres(sim.composite_profiles().R_areal, sim.config().spheres,
+                                      sim.config().initial_data.M))
+    say("gbssn1d: warning: {}: {}\n", w.flags, w.what);
   const std::filesystem::path dir(p.out);
   // the content of --rah-hAH-file as it was read (before the folder is made)
   const std::optional<std::string> hAH_content = prescribed_horizon_content(p);
@@ -128,7 +131,7 @@ int evolve(const Params& given, bool print_config) {
   write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
   if (hAH_content)
     write_file_atomically(dir / std::string(prescribed_horizon_copy), *hAH_content);
-  Output out(dir, config + sim.run_facts(), sim.state().fields());
+  Output out(dir, config + sim.run_facts(), sim.state().fields(), sim.config().spheres);
   sim.checkpoint_config = config + copy_hash_line(hAH_content);
   return run_and_report(sim, out, p);
 }

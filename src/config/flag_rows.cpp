@@ -61,6 +61,11 @@ std::vector<ParamSpec> grid_and_data_specs() {
        at_least(0.0)},
       {"scalar-width", &Params::scalar_width, "Matter", "w of the pulse", Acts::with_scalar,
        above(0.0)},
+      {"flux-R", &Params::flux_R, "Matter",
+       "areal radii X (in M, comma-separated: 5,30) of spheres whose Misner-Sharp mass and "
+       "outgoing energy flux the series records (columns m_R<X>, flux_R<X>; "
+       "docs/gbssn1d-equations.md (S7))",
+       Acts::with_scalar},
   };
 }
 

@@ -91,7 +91,7 @@ std::pair<std::string, std::string> idle_because(Acts where, const ResolvedParam
     return {"with --id " + p.id.name(), "the trumpets' data fix their own lapse"};
   case Acts::with_scalar:
     return {"with --matter " + p.matter.name(),
-            "the pulse is the scalar field's (give --matter scalar)"};
+            "it sets the scalar field's pulse or its diagnostics (give --matter scalar)"};
   case Acts::with_z4c_damping:
     if (z4c_on(p))
       return {"with --kappa1 0 --kappa1-hole 0",

@@ -109,6 +109,8 @@ EvolutionConfig evolution_config(const ResolvedParams& p) {
   c.norms.Rmin = p.norm_Rmin * p.M; // the areal windows are given in units of M
   c.norms.Rmax = p.norm_Rmax * p.M;
   c.norms.Rint = p.norm_Rint * p.M;
+  if (scalar_on(p))
+    c.spheres = flux_radii(p); // in units of M, as the columns are named
   c.horizon_search.every_steps = ah_every_steps(p);
   c.horizon_search.extrapolate = p.ah_every == SearchEvery::extrapolated;
   c.horizon_search.interval = p.ah_interval.value_or(0.0);

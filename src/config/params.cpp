@@ -1,5 +1,6 @@
 #include "config/params.hpp"
 
+#include "config/numbers.hpp"
 #include "core/decimal.hpp"
 
 #include <fmt/format.h>
@@ -7,12 +8,45 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace gbssn1d {
 
 bool shrinks_wormhole(const Params& p) {
   return p.id == InitialDataKind::wormhole && p.rahA > 0.0
          && p.rah0 < standard_horizon_radius * p.M;
+}
+
+std::vector<double> flux_radii(const Params& p) {
+  std::vector<double> radii;
+  if (p.flux_R.empty())
+    return radii;
+  const std::string_view text = p.flux_R;
+  for (std::size_t from = 0;;) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    std::string item(text.substr(from, comma - from));
+    item.erase(0, item.find_first_not_of(' '));
+    item.erase(item.find_last_not_of(' ') + 1);
+    if (item.empty())
+      throw ParamError("--flux-R", p.flux_R,
+                       "has an empty entry: give areal radii in M separated by commas (5,20)");
+    const double R = parse_number<double>("--flux-R", item);
+    if (!(R > 0.0))
+      throw ParamError("--flux-R", p.flux_R,
+                       fmt::format("has {}: each areal radius must be > 0", item));
+    if (std::find(radii.begin(), radii.end(), R) != radii.end())
+      throw ParamError("--flux-R", p.flux_R,
+                       fmt::format("names the sphere {} twice (its columns would repeat)", item));
+    radii.push_back(R);
+    if (radii.size() > max_flux_spheres)
+      throw ParamError("--flux-R", p.flux_R,
+                       fmt::format("names more than {} spheres", max_flux_spheres));
+    if (comma == text.size())
+      return radii;
+    from = comma + 1;
+  }
 }
 
 int levels_rule(double rmax, double M) {

@@ -64,6 +64,9 @@ struct Params {
   double scalar_amp = evolution_defaults().initial_data.scalar.amplitude;
   double scalar_r0 = evolution_defaults().initial_data.scalar.r0;
   double scalar_width = evolution_defaults().initial_data.scalar.width;
+  /// the areal radii (in M), comma-separated, of the spheres whose Misner-Sharp mass and energy
+  /// flux the series records (flux_radii()); empty: none
+  std::string flux_R;
   // gauge
   /// Gamma-driver damping; unset: 2/M, or 1/M for a shrink of wormhole data (resolve())
   std::optional<double> eta;
@@ -190,6 +193,12 @@ inline bool shift_on(const Params& p) {
 inline bool uses_hAH_file(const Params& p) {
   return shift_on(p) && !p.rah_hAH_file.empty();
 }
+
+/// The most spheres --flux-R takes (two columns each in timeseries.dat).
+inline constexpr std::size_t max_flux_spheres = 16;
+/// --flux-R's areal radii, in its order: each a finite number > 0 (in M), none twice, at most
+/// max_flux_spheres; ParamError (--flux-R) otherwise. Empty text: none.
+std::vector<double> flux_radii(const Params& p);
 
 /// A horizon shift that shrinks the horizon of wormhole data (rahA != 0, rah0 below the
 /// standard 0.8304 M): with eta = 2/M the Gamma-driver does not settle on wormhole data and such

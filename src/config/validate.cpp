@@ -226,6 +226,7 @@ void validate_matter(const ResolvedParams& p) {
       throw ParamError("--scalar-width", num(p.scalar_width),
                        fmt::format("must lie below --rmax = {}", num(p.rmax)));
     validate_scalar_data(p);
+    flux_radii(p); // its refusals
   }
   if (p.id == InitialDataKind::flat && shift_on(p))
     throw ParamError("--rahA", num(p.rahA),

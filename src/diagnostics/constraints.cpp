@@ -21,9 +21,12 @@ DerivedProfiles derived_profiles(const State& u, const Grid& grid) {
     const auto theta = field(u, grid, Var::Theta).subspan(grid.first_interior(), n);
     out.Theta.assign(theta.begin(), theta.end());
   }
+  if (u.matter() != Matter::none)
+    out.flux.resize(n);
   diagnostic_rows(u, grid,
                   {out.H.data(), out.M_r.data(), out.G_r.data(), out.R_areal.data(),
-                   out.Theta_plus.data(), out.m_ms.data()});
+                   out.Theta_plus.data(), out.m_ms.data(),
+                   out.flux.empty() ? nullptr : out.flux.data()});
   return out;
 }
 

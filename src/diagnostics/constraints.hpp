@@ -14,6 +14,9 @@ struct DerivedProfiles {
   std::vector<double> H, M_r, G_r, R_areal, Theta_plus;
   std::vector<double> m_ms;  ///< (T4) the Misner-Sharp mass
   std::vector<double> Theta; ///< Z4c's Theta (Sec. 17); empty for a BSSN state
+  /// (S7) the energy flux through the sphere of fixed areal radius through each point; empty
+  /// without matter
+  std::vector<double> flux;
 };
 
 DerivedProfiles derived_profiles(const State& u, const Grid& grid);

@@ -77,6 +77,9 @@ struct EvolutionConfig {
   double dt_profiles = 5.0;      ///< time between blocks of profiles.dat
   double checkpoint_every = 0.0; ///< simulated time between checkpoints (0: only on a signal)
   NormWindows norms;
+  /// The areal radii, in units of M, of the spheres whose Misner-Sharp mass and energy flux the
+  /// scalar field's series records (columns m_R<X>, flux_R<X>; --flux-R)
+  std::vector<double> spheres;
   HorizonSearchSettings horizon_search;
 };
 

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace gbssn1d {
 
@@ -57,6 +59,8 @@ DerivedProfiles composite_profiles(const mesh::MeshLayout& layout, const mesh::C
   c.m_ms = gather(&DerivedProfiles::m_ms);
   if (!levels.front().Theta.empty())
     c.Theta = gather(&DerivedProfiles::Theta);
+  if (!levels.front().flux.empty())
+    c.flux = gather(&DerivedProfiles::flux);
   return c;
 }
 
@@ -86,6 +90,69 @@ double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProf
   return interpolate_at_radius(g, f, r);
 }
 
+namespace {
+
+/// An odd profile's interior values on `g` with every ghost: the origin's by parity
+/// (f(-r) = -f(r)), the outer ones continued from the last point (sample_margin_cells keeps
+/// them out of the stencils).
+std::vector<double> with_odd_ghosts(const Grid& g, std::span<const double> interior) {
+  std::vector<double> f(g.n_total());
+  for (std::size_t i = 0; i < g.n_total(); ++i)
+    f[i] = i < g.first_interior() ? -interior[Grid::mirror(i) - g.first_interior()]
+           : i < g.end_interior() ? interior[i - g.first_interior()]
+                                  : interior.back();
+  return f;
+}
+
+} // namespace
+
+SphereSample sphere_at_areal_radius(const mesh::MeshLayout& layout,
+                                    const std::vector<State>& levels, const DerivedProfiles& d,
+                                    const Grid& composite, double R,
+                                    std::vector<std::optional<DerivedProfiles>>& computed) {
+  if (d.flux.empty())
+    throw std::invalid_argument("sphere_at_areal_radius: the profiles of a state without matter");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::span<const double> R_c = d.R_areal;
+  const std::size_t n = R_c.size();
+  if (n < 2 || !(R <= R_c[n - 1]))
+    return {nan, nan, nan}; // beyond the outer boundary's areal radius
+  // the outermost point at or below R, walking in on the outer sheet
+  const std::size_t sheet = outer_sheet_begin(R_c);
+  std::size_t k = n - 1;
+  while (k > sheet && R_c[k] > R)
+    --k;
+  if (R_c[k] > R)
+    return {nan, nan, nan}; // below the throat's or the innermost point's
+  const double r_hi = composite.r()[composite.first_interior() + std::min(k + 1, n - 1)];
+  // on the finest level that covers the bracket: its own values, interpolated at the 6th order
+  const std::size_t l = layout.finest_level_covering(r_hi, sample_margin_cells);
+  const Grid& g = layout.grid(l);
+  computed.resize(layout.levels());
+  if (layout.levels() > 1 && !computed[l])
+    computed[l] = derived_profiles(levels[l], g);
+  const DerivedProfiles& dl = layout.levels() > 1 ? *computed[l] : d;
+  const std::vector<double> R_l = with_odd_ghosts(g, dl.R_areal);
+  std::size_t j =
+      static_cast<std::size_t>(std::upper_bound(g.r().begin(), g.r().end(), r_hi) - g.r().begin());
+  j = std::min(j + 1, g.end_interior() - 1);
+  const std::size_t top = j;
+  while (j > g.first_interior() && R_l[j] > R)
+    --j;
+  if (j == top || R_l[j] > R)
+    return {nan, nan, nan}; // the level's values do not bracket R where the composite's do
+  const std::size_t k0 = lagrange6_start(j, g.n_total());
+  const Lagrange6Newton R_of_x(g.x(), R_l, k0);
+  double x_lo = g.x()[j], x_hi = g.x()[j + 1]; // R_of_x(x_lo) <= R < R_of_x(x_hi)
+  for (int it = 0; it < 100 && x_hi - x_lo > 1e-15 * std::max(1.0, std::abs(x_hi)); ++it) {
+    const double x = 0.5 * (x_lo + x_hi);
+    (R_of_x(x) <= R ? x_lo : x_hi) = x;
+  }
+  const double x = 0.5 * (x_lo + x_hi);
+  const std::vector<double> m_l = with_odd_ghosts(g, dl.m_ms), F_l = with_odd_ghosts(g, dl.flux);
+  return {g.map().r(x), Lagrange6Newton(g.x(), m_l, k0)(x), Lagrange6Newton(g.x(), F_l, k0)(x)};
+}
+
 std::vector<EmptyNormWindow> empty_norm_windows(const Grid& g, std::span<const double> R_areal,
                                                 const NormWindows& w) {
   std::vector<EmptyNormWindow> empty;
@@ -105,6 +172,22 @@ std::vector<EmptyNormWindow> empty_norm_windows(const Grid& g, std::span<const d
                      w.Rmin, w.Rmax, R_areal.empty() ? 0.0 : *lo, R_areal.empty() ? 0.0 : *hi)});
   }
   return empty;
+}
+
+std::vector<EmptyNormWindow> absent_spheres(std::span<const double> R_areal,
+                                            std::span<const double> spheres, double M) {
+  std::vector<EmptyNormWindow> absent;
+  if (R_areal.empty())
+    return absent;
+  const double lo = R_areal[outer_sheet_begin(R_areal)], hi = R_areal.back();
+  for (const double X : spheres)
+    if (!(X * M >= lo && X * M <= hi))
+      absent.push_back(
+          {"--flux-R", fmt::format("no sphere of areal radius {} M lies on the initial data's grid "
+                                   "(its outer sheet spans R = {:.4g} ... {:.4g}), so that m_R{} "
+                                   "and flux_R{} are NaN until one does",
+                                   X, lo, hi, X, X)});
+  return absent;
 }
 
 HorizonSearch find_all_horizons(const mesh::MeshLayout& layout, const std::vector<State>& levels,
@@ -172,6 +255,13 @@ SeriesRow SeriesDiagnostics::row(const std::vector<State>& levels, double t,
   const bool scalar = centre.fields().holds(Var::Phi);
   row.Phi_center = scalar ? central_value(field(centre, centre_grid, Var::Phi), centre_grid) : nan;
   row.Pi_center = scalar ? central_value(field(centre, centre_grid, Var::Pi), centre_grid) : nan;
+  std::vector<std::optional<DerivedProfiles>> computed;
+  for (const double R : config_.spheres) {
+    const SphereSample s =
+        sphere_at_areal_radius(layout_, levels, d, g, R * config_.initial_data.M, computed);
+    row.sphere_m.push_back(s.m);
+    row.sphere_flux.push_back(s.flux);
+  }
   // d_t alpha on every level with the h_AH the evolution would use now
   std::vector<std::span<const double>> dt_alpha_levels;
   for (std::size_t l = 0; l < layout_.levels(); ++l) {

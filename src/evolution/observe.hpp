@@ -49,6 +49,12 @@ struct EmptyNormWindow {
 std::vector<EmptyNormWindow> empty_norm_windows(const Grid& g, std::span<const double> R_areal,
                                                 const NormWindows& w);
 
+/// The spheres of --flux-R (areal radii X M, `spheres` in units of M) that do not lie on the
+/// outer sheet of the areal radius R_areal (sphere_at_areal_radius's rule), so that their
+/// columns are NaN, for the run's start (as empty_norm_windows).
+std::vector<EmptyNormWindow> absent_spheres(std::span<const double> R_areal,
+                                            std::span<const double> spheres, double M);
+
 /// H, M_r, G_r, R, Theta_+ on every level's interior.
 std::vector<DerivedProfiles> level_profiles(const mesh::MeshLayout& layout,
                                             const std::vector<State>& levels);
@@ -61,6 +67,23 @@ double value_at_radius(const mesh::MeshLayout& layout, const std::vector<State>&
 /// H at radius r from level profiles.
 double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProfiles>& levels,
                    double r);
+/// A sphere of fixed areal radius in the time series (the scalar field's columns m_R<X> and
+/// flux_R<X>): its coordinate radius, the Misner-Sharp mass inside it (T4) and the energy that
+/// leaves through it per unit coordinate time (S7).
+struct SphereSample {
+  double r, m, flux;
+};
+/// The outermost sphere of areal radius R on the outer sheet of the composite profiles `d` (of a
+/// state with matter): bracketed there, then found as the root of R's 6-point interpolant on the
+/// finest level that covers it, where m and the flux are interpolated too. NaN, all three, where
+/// no such sphere lies on the grid: R beyond the outermost point's areal radius, or below the
+/// throat's (wormhole, trumpet) or the innermost point's (a regular centre). `computed` holds the
+/// levels' profiles computed so far (one entry per level, filled as needed, so that the spheres
+/// of one row compute each level's once); on a single grid `d` is the level's.
+SphereSample sphere_at_areal_radius(const mesh::MeshLayout& layout,
+                                    const std::vector<State>& levels, const DerivedProfiles& d,
+                                    const Grid& composite, double R,
+                                    std::vector<std::optional<DerivedProfiles>>& computed);
 /// Every marginal surface at time t, each from the finest level covering it; a
 /// HorizonFinderError gets t added.
 HorizonSearch find_all_horizons(const mesh::MeshLayout& layout, const std::vector<State>& levels,

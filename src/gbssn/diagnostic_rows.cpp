@@ -41,6 +41,8 @@ void diagnostic_rows_at(const State& u, const Grid& grid, const DiagnosticRows& 
       out.M_r[k] = c.M_r;
       out.G_r[k] = c.G_r;
       out.m_ms[k] = misner_sharp_mass(pd);
+      if constexpr (matter != Matter::none)
+        out.flux[k] = energy_flux(pd, MatterPolicy<matter>::stress_energy(pd, 1.0 / pd.f[Var::a]));
     }
     out.R_areal[k] = areal_radius(pd);
     out.Theta_plus[k] = expansion_plus(pd);
@@ -66,6 +68,9 @@ void diagnostic_rows(const State& u, const Grid& grid, const DiagnosticRows& out
       || (out.H || out.M_r || out.G_r || out.m_ms) != (out.H && out.M_r && out.G_r && out.m_ms))
     throw std::invalid_argument("diagnostic_rows: R_areal and Theta_plus, and all three "
                                 "constraints with the Misner-Sharp mass or none of them");
+  if ((out.flux != nullptr) != (out.H != nullptr && u.matter() != Matter::none))
+    throw std::invalid_argument("diagnostic_rows: the energy flux with the constraints of a "
+                                "state with matter, and only then");
   with_order(grid.fd_order(), [&]<int p>() {
     with_formulation(u.formulation(), [&]<Formulation f>() {
       // matter only at the order it is offered with (validate()), so that the other orders

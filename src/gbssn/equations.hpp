@@ -13,6 +13,7 @@
 #include "gbssn/point_data.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace gbssn1d {
 
@@ -259,6 +260,24 @@ inline double misner_sharp_mass(const PointData& p) {
   const double K_thth = p.f[K] / 3.0 - 0.5 * p.f[A_a];
   const double RR = R * R;
   return 0.5 * R * (1.0 - RR * (p.f[chi] * m.inv_a * dR_R * dR_R - K_thth * K_thth));
+}
+
+/// (S7) the energy that leaves the sphere of constant areal radius through the point, per unit
+/// coordinate time: F = -dm/dt at fixed R_A = 4 pi R_A^2 (alpha/Gamma) [Gamma U (rho + S^r_r) +
+/// (Gamma^2 + U^2) j_e], with Gamma = (chi/a)^(1/2) R_A' and U = -R_A K^th_th the areal radius's
+/// rates along the unit radial vector and the normal (1 - 2m/R_A = Gamma^2 - U^2, (T4)), and
+/// j_e = (chi/a)^(1/2) j_r. Where Gamma = 0 (a throat) no sphere of fixed R_A moves through the
+/// point, and F is not finite.
+inline double energy_flux(const PointData& p, const StressEnergy& s) {
+  using enum Var;
+  const MetricPieces m = metric_pieces(p);
+  const double R = areal_radius(p);
+  const double e = std::sqrt(p.f[chi] * m.inv_a); // (chi/a)^(1/2) = 1/sqrt(gamma_rr)
+  const double Gamma = e * R * (p.inv_r + 0.5 * (m.db_b - m.dchi_chi));
+  const double U = -R * (p.f[K] / 3.0 - 0.5 * p.f[A_a]);
+  const double j_e = e * s.j_r;
+  return 4.0 * std::numbers::pi * R * R * p.f[alpha] / Gamma
+         * (Gamma * U * (s.rho + s.S_rr) + (Gamma * Gamma + U * U) * j_e);
 }
 
 } // namespace gbssn1d

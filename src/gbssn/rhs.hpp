@@ -48,6 +48,9 @@ struct DiagnosticRows {
   double* R_areal;        ///< (T2) the areal radius
   double* Theta_plus;     ///< (T1) the outgoing expansion
   double* m_ms = nullptr; ///< (T4) the Misner-Sharp mass; computed with the constraints
+  /// (S7) the energy flux through the sphere of fixed areal radius; with the constraints, of a
+  /// state with matter only (null otherwise)
+  double* flux = nullptr;
 };
 /// The constraints, areal radius and expansion at the interior points [k_begin, k_end), from
 /// adm_point_data's values at the grid's order: one vectorised loop (diagnostic_rows.cpp)

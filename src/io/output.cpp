@@ -6,8 +6,10 @@
 
 #include <fstream>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 namespace gbssn1d {
 
@@ -22,7 +24,7 @@ double SeriesRow::extra(std::string_view column) const {
   throw std::invalid_argument("no series column " + std::string(column));
 }
 
-std::vector<std::string> series_columns(Fields fields) {
+std::vector<std::string> series_columns(Fields fields, std::span<const double> spheres) {
   std::vector<std::string> cols{
       "t",        "alpha_center", "H_L2",     "H_L2_ext",        "M_L2",
       "M_L2_ext", "G_L2",         "G_L2_ext", "dtalpha_max_ext", "r_ah",
@@ -31,6 +33,10 @@ std::vector<std::string> series_columns(Fields fields) {
     cols.emplace_back(name);
   for (const std::string_view name : traits(fields.matter).extra_series)
     cols.emplace_back(name);
+  for (const double R : spheres) {
+    cols.push_back(fmt::format("m_R{}", R));
+    cols.push_back(fmt::format("flux_R{}", R));
+  }
   return cols;
 }
 
@@ -58,9 +64,15 @@ const char* const series_legend =
     "place in every gauge), weighted by areal width |dR|; H_L2_int from the puncture out to "
     "R = norm-Rint M, weighted by cell width; a norm (and dtalpha_max_ext) is NaN while its "
     "window holds no point; r_ah, M_ah: apparent horizon (NaN if none), M_ah_err = M_ah - M\n";
-std::string legend(Fields fields) {
+const char* const sphere_legend =
+    "m_R<X>, flux_R<X>: on the outermost sphere of areal radius R = X M, the Misner-Sharp mass "
+    "inside it and the energy leaving it per unit coordinate time, -dm/dt at fixed R (its "
+    "integral over t from t0 to t1 is m_R<X>(t0) - m_R<X>(t1)); NaN while no sphere of that R "
+    "lies on the grid's outer sheet\n";
+std::string legend(Fields fields, std::span<const double> spheres) {
   return std::string(series_legend) + std::string(traits(fields.formulation).series_legend)
-         + std::string(traits(fields.matter).series_legend);
+         + std::string(traits(fields.matter).series_legend)
+         + (spheres.empty() ? std::string() : std::string(sphere_legend));
 }
 const char* const horizon_legend =
     "horizon.dat: r_ah, R_ah, M_ah = R_ah/2 of the apparent horizon (outermost zero of Theta_+ "
@@ -70,16 +82,19 @@ const char* const horizon_legend =
 
 } // namespace
 
-Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields)
-    : dir_(dir), fields_(fields),
-      series_(dir / "timeseries.dat", parameter_header + legend(fields), series_columns(fields)),
+Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
+               std::vector<double> spheres)
+    : dir_(dir), fields_(fields), spheres_(std::move(spheres)),
+      series_(dir / "timeseries.dat", parameter_header + legend(fields, spheres_),
+              series_columns(fields, spheres_)),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields)),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
-               const OutputMarks& m)
-    : dir_(dir), fields_(fields), series_(dir / "timeseries.dat", parameter_header + legend(fields),
-                                          series_columns(fields), m.series_header, m.series),
+               const OutputMarks& m, std::vector<double> spheres)
+    : dir_(dir), fields_(fields), spheres_(std::move(spheres)),
+      series_(dir / "timeseries.dat", parameter_header + legend(fields, spheres_),
+              series_columns(fields, spheres_), m.series_header, m.series),
       profiles_(dir / "profiles.dat", parameter_header, profile_columns(fields), m.profiles_header,
                 m.profiles),
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns(),
@@ -151,6 +166,14 @@ void Output::write_series(const SeriesRow& row) {
     for (const std::string_view column : own) {
       line.push_back(' ');
       append_scientific(line, row.extra(column));
+    }
+  if (row.sphere_m.size() != spheres_.size() || row.sphere_flux.size() != spheres_.size())
+    throw std::logic_error(fmt::format("a series row with {} spheres for a file of {}",
+                                       row.sphere_m.size(), spheres_.size()));
+  for (std::size_t k = 0; k < spheres_.size(); ++k)
+    for (const double v : {row.sphere_m[k], row.sphere_flux[k]}) {
+      line.push_back(' ');
+      append_scientific(line, v);
     }
   line.push_back('\n');
   series_.write(line.data(), line.size());

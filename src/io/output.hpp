@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -35,6 +36,9 @@ struct SeriesRow {
   double G_L2_R, Theta_L2_ext, Theta_L2_R;
   /// the scalar field's own (Sec. 19): Phi and Pi at the centre
   double Phi_center, Pi_center;
+  /// per sphere of the run's --flux-R, in its order: the Misner-Sharp mass inside it and the
+  /// energy flux through it (SphereSample)
+  std::vector<double> sphere_m, sphere_flux;
 
   /// The value of one of a formulation's or matter model's own columns
   /// (FormulationTraits::extra_series, MatterTraits::extra_series), by name; throws
@@ -44,8 +48,9 @@ struct SeriesRow {
 
 /// Column names, in order: a Z4c run's series has G_L2_R, Theta_L2_ext and Theta_L2_R besides,
 /// its profiles Theta (and K is the ADM K = K-hat + 2 Theta in both); the scalar field's series
-/// has Phi_center and Pi_center after those, its profiles Phi and Pi.
-std::vector<std::string> series_columns(Fields fields);
+/// has Phi_center and Pi_center after those, its profiles Phi and Pi; then, per areal radius X
+/// (in units of M) of `spheres`, m_R<X> and flux_R<X>.
+std::vector<std::string> series_columns(Fields fields, std::span<const double> spheres = {});
 std::vector<std::string> profile_columns(Fields fields);
 std::vector<std::string> horizon_columns();
 
@@ -62,10 +67,12 @@ class Output {
 public:
   /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
   /// one "key = value" per line; `formulation` the run's (its columns).
-  Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields);
+  /// `spheres`: the areal radii (in units of M) of the series' sphere columns.
+  Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
+         std::vector<double> spheres = {});
   /// A resumed run: the files of `dir` cut back to `marks`, with the new header.
   Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
-         const OutputMarks& marks);
+         const OutputMarks& marks, std::vector<double> spheres = {});
 
   /// Throws OutputError unless every file of `dir` is there, at least as long as its mark, and
   /// (marks.hashed) its rows up to the mark are the bytes the run wrote: what the resuming
@@ -91,6 +98,7 @@ public:
 private:
   std::filesystem::path dir_;
   Fields fields_;
+  std::vector<double> spheres_;
   DataFile series_;
   DataFile profiles_;
   DataFile horizons_;

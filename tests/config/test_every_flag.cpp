@@ -171,6 +171,7 @@ TEST_CASE("every flag acts where its table row says it acts: a number the run wr
       {"scalar-amp", pulse, "0.02"},
       {"scalar-r0", pulse, "8"},
       {"scalar-width", pulse, "1.5"},
+      {"flux-R", pulse, "5"},
       // gauge and numerics
       {"eta", trumpet, "1"},
       {"advective-shift", trumpet, ""},
