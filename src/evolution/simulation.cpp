@@ -2,6 +2,7 @@
 
 #include "core/console.hpp"
 #include "core/stop_signal.hpp"
+#include "initial_data/initial_data.hpp"
 #include "mesh/level_steps.hpp"
 
 #include <fmt/format.h>
@@ -79,6 +80,9 @@ std::string Simulation::run_facts() const {
       facts +=
           fmt::format("level {} = r <= {:.17g}, dr = {:.17g}, dt = {:.17g}\n", l, layout_.extent(l),
                       layout_.spacing(l), stepper_.level_dt(l, schedule_.dt));
+  // with matter, the data's ADM mass (vacuum data's is M, a flag)
+  if (state().matter() != Matter::none)
+    facts += fmt::format("M-ADM = {:.17g}\n", adm_mass(config_.initial_data, state().fields()));
   return facts;
 }
 

@@ -106,7 +106,8 @@ public:
   Checkpoint checkpoint(Output& out, const std::optional<double>& h_AH_before_rhs) const;
 
   /// Facts of this run for the output headers, as "key = value" lines: the time step dt, the
-  /// number of steps to tmax and the smallest cell width dr-min.
+  /// number of steps to tmax and the smallest cell width dr-min (on boxes each level's extent,
+  /// spacing and step); with matter the data's ADM mass M-ADM.
   std::string run_facts() const;
 
   /// Whether each parent box's point loop skips the cells under its child that no result reads

@@ -204,6 +204,12 @@ TEST_CASE("evolve reports the data's ADM mass with the scalar field, which the M
     const auto at = r.err.find(said);
     REQUIRE(at != std::string::npos);
     *reported = std::stod(r.err.substr(at + said.size()));
+    // the same in the files' headers, to the last digit
+    const std::string header = gbssn1d::testing::slurp(out / "timeseries.dat");
+    const std::string key = "\n# M-ADM = ";
+    const auto line = header.find(key);
+    REQUIRE(line != std::string::npos);
+    CHECK(std::stod(header.substr(line + key.size())) == doctest::Approx(*reported).epsilon(1e-11));
     const auto t = gbssn1d::testing::read_table((out / "profiles.dat").string());
     std::size_t i = 0;
     while (t.at(i, "r") < 150.0)
@@ -235,6 +241,7 @@ TEST_CASE("evolve reports the data's ADM mass with the scalar field, which the M
   std::filesystem::remove_all(out);
   const auto v = gbssn1d::testing::run("evolve --tmax 0 --out " + out.string());
   CHECK(v.err.find("ADM mass") == std::string::npos);
+  CHECK(gbssn1d::testing::slurp(out / "timeseries.dat").find("M-ADM") == std::string::npos);
   std::filesystem::remove_all(out);
 }
 
