@@ -19,7 +19,14 @@ gauge's sinh-N<largest>. For each gauge and grid, the cheapest run whose error a
 every finer run of that grid are within 1e-3, 1e-4 and 1e-5 (so a coarse run that lands near
 the answer by chance does not count).
 
-Prints the tables; writes OUT/gauges.dat and OUT/cost.dat (named columns) and draws
+OUT/budget/GAUGE/N<N>/: runs to the end with --flux-R 5,30 (m_R5, flux_R5, m_R30, flux_R30, a
+row every 0.05): of the shell's energy M_ADM - M_AH(0) (M-ADM from the header), what crossed
+R = 5 inwards (-integral of flux_R5 over t: Simpson's rule, the last three intervals by the 3/8
+rule when their number is odd) against M_AH's growth, what left through R = 30, what lies between
+the horizon and R = 30 at the end (m_R30 - M_AH), and the identity's error at each sphere,
+integral - (m(0) - m(end)), with its order between successive N.
+
+Prints the tables; writes OUT/gauges.dat, OUT/cost.dat and OUT/budget.dat (named columns) and draws
 OUT/accretion.png (M_AH and r_AH against t) and OUT/cost.png (M_AH's error against cost).
 """
 import math
@@ -201,6 +208,75 @@ def costs(out):
     return table
 
 
+def integral(t, y, where):
+    """The integral of y over equally spaced times t: Simpson's rule, with Simpson's 3/8 rule over
+    the last three intervals when their number is odd."""
+    n = len(t) - 1
+    if n < 3:
+        raise gd.DataError('fewer than four rows to integrate over', where)
+    h = (t[-1] - t[0]) / n
+    if np.max(np.abs(np.diff(t) - h)) > 1e-6 * h:
+        raise gd.DataError('its rows are not equally spaced in t, which the integral needs', where)
+    m = n if n % 2 == 0 else n - 3
+    total = h / 3 * (y[0] + y[m] + 4 * np.sum(y[1:m:2]) + 2 * np.sum(y[2:m - 1:2])) if m else 0.0
+    if m < n:
+        total += 3 * h / 8 * (y[m] + 3 * y[m + 1] + 3 * y[m + 2] + y[m + 3])
+    return float(total)
+
+
+def budget_row(path):
+    """The budget's numbers of a run with --flux-R 5,30 (NaN where a flux is NaN)."""
+    ts = os.path.join(path, 'timeseries.dat')
+    if not os.path.exists(ts):
+        raise gd.DataError('no timeseries.dat (the run did not start)', path)
+    text = gd.read_text(ts)
+    columns, data = gd.parse_table(text, ts)
+    params = gd.header_params(text)
+    if 'M-ADM' not in params:
+        raise gd.DataError('no M-ADM in its header (a run without matter?)', ts)
+    col = {name: gd.column(columns, data, name, ts)
+           for name in ('t', 'M_ah', 'm_R5', 'flux_R5', 'm_R30', 'flux_R30')}
+    t, M = col['t'], col['M_ah']
+    flux5, flux30 = integral(t, col['flux_R5'], ts), integral(t, col['flux_R30'], ts)
+    ends = [line for line in text.splitlines() if line.startswith('# end:')]
+    return {'N': int(params['N']), 'shell': float(params['M-ADM']) - M[0], 'fell': -flux5,
+            'grew': M[-1] - M[0], 'left': flux30, 'between': col['m_R30'][-1] - M[-1],
+            'id5': flux5 - (col['m_R5'][0] - col['m_R5'][-1]),
+            'id30': flux30 - (col['m_R30'][0] - col['m_R30'][-1]),
+            'end': ends[-1][len('# end: '):] if ends else 'no end line (the run was cut short)'}
+
+
+def budget(out):
+    top = os.path.join(out, 'budget')
+    print('\n4. The energy budget (sinh grid, --flux-R 5,30): of the shell\'s energy M_ADM - '
+          'M_AH(0), what crossed R = 5 inwards (against M_AH\'s growth), what left through R = 30 '
+          'and what lies between the horizon and R = 30 at the end; the identity\'s error '
+          'integral of flux - (m(0) - m(end)) at each sphere, with its order')
+    print(f'{"gauge":6} {"N":>5} {"shell":>10} {"fell in":>10} {"M_AH grew":>10} {"left":>10} '
+          f'{"between":>9} {"error R=5":>10} {"order":>5} {"error R=30":>10} {"order":>5}')
+    with open(os.path.join(out, 'budget.dat'), 'w') as f:
+        f.write('# gauge_index N shell fell grew left between id5 id30\n')
+        gauges_ = sorted((g for g in os.listdir(top) if not g.startswith('.')), key=order)
+        for i, g in enumerate(gauges_):
+            folder = os.path.join(top, g)
+            rows = sorted((budget_row(os.path.join(folder, d)) for d in os.listdir(folder)
+                           if re.fullmatch(r'N\d+', d)), key=lambda w: w['N'])
+            for k, w in enumerate(rows):
+                orders = ['', '']
+                if k > 0:
+                    for j, key in enumerate(('id5', 'id30')):
+                        ratio = abs(rows[k - 1][key]) / abs(w[key]) if w[key] else math.nan
+                        orders[j] = f'{math.log(ratio) / math.log(w["N"] / rows[k - 1]["N"]):.2f}'
+                print(f'{g:6} {w["N"]:5d} {w["shell"]:10.7f} {w["fell"]:10.7f} {w["grew"]:10.7f} '
+                      f'{w["left"]:10.7f} {w["between"]:9.2e} {w["id5"]:10.2e} {orders[0]:>5} '
+                      f'{w["id30"]:10.2e} {orders[1]:>5}')
+                if not w['end'].startswith('completed'):
+                    print(f'  {g} N = {w["N"]}: {w["end"]}')
+                f.write(f'{i} {w["N"]} ' + ' '.join(f'{w[key]:.12g}' for key in
+                                                    ('shell', 'fell', 'grew', 'left', 'between',
+                                                     'id5', 'id30')) + '\n')
+
+
 def figures(out, runs, table):
     plt = gd.pyplot()
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(6.4, 7))
@@ -232,6 +308,7 @@ def main(out):
     runs = gauges(out)
     verdicts(out)
     table = costs(out)
+    budget(out)
     figures(out, runs, table)
 
 

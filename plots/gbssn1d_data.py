@@ -371,7 +371,7 @@ def header_params(text):
 
 # parameters that follow from others or do not change the solution: never in a run's label
 NOT_LABELS = {'out', 'force', 'dt', 'steps', 'dr-min', 'checkpoint-every', 'dt-series',
-              'dt-profiles', 'tmax'}
+              'dt-profiles', 'tmax', 'M-ADM', 'flux-R'}
 # the parameters a label names first, when they tell the runs apart
 FIRST_LABELS = ['id', 'lapse0', 'grid', 'levels', 'N', 'rmax', 'dr-inner', 'rahA', 'rah0']
 

@@ -22,7 +22,11 @@
 #      sinh N = 1600 (at most 1e-7 from every other gauge's there), the cost N x RHS evaluations
 #      (points x evaluations: each box holds N cells); for each gauge and grid the cheapest run
 #      within 1e-3, 1e-4 and 1e-5.
-# Writes OUT/accretion.txt (the tables), OUT/gauges.dat, OUT/cost.dat and the figures
+#   4. budget/: the energy through the spheres of areal radius 5 and 30 M (--flux-R 5,30, a row
+#      every 0.05) for free and h1.0 at N = 400, 800, 1600 to t = 80: what crossed R = 5 inwards
+#      against M_AH's growth, what left through R = 30, and the error of the identity
+#      integral of flux = m(0) - m(end) at each sphere, with its order.
+# Writes OUT/accretion.txt (the tables), OUT/gauges.dat, OUT/cost.dat, OUT/budget.dat and the figures
 # OUT/accretion.png and OUT/cost.png (plots/accretion.py). Kept in out/accretion/ and redone only
 # where a command or the binary changed; an interrupted run resumes. About 3 minutes on 2 cores.
 #
@@ -85,8 +89,17 @@ for g in "${compared[@]}"; do
       "${boxes[@]}" --N "$N" --tmax 60 --dt-series 1 --dt-profiles 60 --out @OUT
   done
 done
+
+# 4. the energy budget
+for g in free h1.0; do
+  for N in 400 800 1600; do
+    # shellcheck disable=SC2046
+    lib_run "budget/$g/N$N" build/gbssn1d evolve "${data[@]}" $(gauge_flags "$g") --N "$N" \
+      --tmax 80 --dt-series 0.05 --dt-profiles 80 --flux-R 5,30 --out @OUT
+  done
+done
 lib_wait
 lib_check
 
-# 4. the tables and figures
+# 5. the tables and figures
 $py plots/accretion.py "$out" | tee "$out/accretion.txt"

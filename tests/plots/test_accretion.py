@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """plots/accretion.py on runs whose answers are known: M_AH(t) growing by a known amount between
 known times, r_AH straying from h by a known amount while it grows; M_AH against cost with a
-known error per run, a coarse run that lands near the answer by chance, and a run that stopped.
+known error per run, a coarse run that lands near the answer by chance, and a run that stopped;
+the energy through two spheres whose fluxes integrate to known amounts, with known errors.
 
     /usr/bin/python3 tests/plots/test_accretion.py PLOTS_DIR WORK_DIR
 """
@@ -73,6 +74,25 @@ for gauge in ('free', 'h1.0'):
                   else 'completed at t = 60',
                   'gbssn1d: error: ...\n' if N == 48 else reached.format(N, 100 * N))
 
+# 4. budget: M_ADM = 1.7, M_AH = 1 + 0.4 E(t - 15) with E(x) = (1 + erf(x/2))/2; flux_R5 = -0.4
+# E' (what falls in), m_R5 = M_AH + e5 E (an identity's error e5); flux_R30 = 0.3 E'(t - 25), m_R30
+# = 1.7 - 0.3 E(t - 25) + e30 E(t - 25); at N = 400 and 800 the errors fall 16-fold (order 4).
+# 1601 rows (an even number of intervals) at N = 400, 1602 at N = 800 (odd: the 3/8 rule's end)
+E = lambda x: 0.5 * (1 + np.vectorize(math.erf)(x / 2))  # noqa: E731
+dE = lambda x: np.exp(-(x / 2) ** 2) / (2 * math.sqrt(math.pi))  # noqa: E731
+for N, e5, e30, rows_ in ((400, 1.6e-5, -3.2e-5, 1601), (800, 1e-6, -2e-6, 1602)):
+    tb = np.linspace(0.0, 80.0 * (rows_ - 1) / 1600, rows_)
+    M_ah = 1 + 0.4 * E(tb - 15)
+    cols = (tb, M_ah, M_ah + e5 * E(tb - 15), -0.4 * dE(tb - 15),
+            1.7 - 0.3 * E(tb - 25) + e30 * E(tb - 25), 0.3 * dE(tb - 25))
+    folder = os.path.join(work, 'budget', 'free', f'N{N}')
+    os.makedirs(folder)
+    with open(os.path.join(folder, 'timeseries.dat'), 'w') as f:
+        f.write(f'# t M_ah m_R5 flux_R5 m_R30 flux_R30\n# N = {N}\n# M-ADM = 1.7\n')
+        for row in zip(*cols):
+            f.write(' '.join(f'{v:.17g}' for v in row) + '\n')
+        f.write('# end: completed at t = 80\n')
+
 printed = io.StringIO()
 with contextlib.redirect_stdout(printed):
     accretion.main(work)
@@ -115,6 +135,30 @@ got = cheapest('h1.0     boxes')
 check(got == [('96', '9.22e+05', '')] * 3, f'a stopped coarse run is not counted: {got}')
 stopped = [l for l in text.splitlines() if 'stopped: the evolution became non-finite' in l]
 check(len(stopped) == 2, f'the stopped boxes run is named, once per gauge ({len(stopped)})')
+budget = np.loadtxt(os.path.join(work, 'budget.dat'), ndmin=2)
+# gauge_index N shell fell grew left between id5 id30
+b400, b800 = budget[0], budget[1]
+check(abs(b400[2] - 0.7) < 1e-12 and abs(b400[3] - 0.4) < 1e-8 and abs(b400[5] - 0.3) < 1e-8,
+      f'the shell 0.7, what fell in 0.4 and what left 0.3: {b400[2]:.9f}, {b400[3]:.9f}, '
+      f'{b400[5]:.9f}')
+check(abs(b400[7] - 1.6e-5) < 1e-9 and abs(b800[7] - 1e-6) < 1e-9, f'the error at R = 5: '
+      f'{b400[7]:.3e}, {b800[7]:.3e} (1.6e-5, 1e-6; Simpson with the 3/8 end at N = 800)')
+check(abs(b400[8] + 3.2e-5) < 1e-9 and abs(b400[6] + 3.2e-5) < 1e-9,
+      f'the error at R = 30 and what lies between at the end: {b400[8]:.3e}, {b400[6]:.3e}')
+line = next(l for l in text.splitlines() if l.startswith('free     800'))
+check(line.split()[8] == '4.00' and line.split()[10] == '4.00',
+      f'the identity\'s orders between N = 400 and 800: {line}')
+# the rule itself: exact for cubics with an even and an odd number of intervals (Simpson, then
+# Simpson with the 3/8 rule's end), and rows not equally spaced are refused
+for n in (4, 5, 7):
+    tc = np.linspace(0.0, 2.0, n + 1)
+    got = accretion.integral(tc, tc ** 3 - tc, 'cubic')
+    check(abs(got - 2.0) < 1e-13, f'the integral of t^3 - t over [0, 2] with {n} intervals: {got}')
+try:
+    accretion.integral(np.array([0.0, 1.0, 2.5, 3.0, 4.0]), np.ones(5), 'uneven')
+    check(False, 'rows not equally spaced are refused')
+except accretion.gd.DataError as e:
+    check('not equally spaced' in str(e), f'rows not equally spaced are refused: {e}')
 check(os.path.exists(os.path.join(work, 'accretion.png'))
       and os.path.exists(os.path.join(work, 'cost.png')), 'both figures drawn')
 
