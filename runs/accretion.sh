@@ -28,7 +28,7 @@
 #      integral of flux = m(0) - m(end) at each sphere, with its order.
 # Writes OUT/accretion.txt (the tables), OUT/gauges.dat, OUT/cost.dat, OUT/budget.dat and the figures
 # OUT/accretion.png and OUT/cost.png (plots/accretion.py). Kept in out/accretion/ and redone only
-# where a command or the binary changed; an interrupted run resumes. About 3 minutes on 2 cores.
+# where a command or the binary changed; an interrupted run resumes. About 1.5 minutes on 2 cores.
 #
 # Usage: bash runs/accretion.sh [OUT]     GBSSN1D_JOBS: runs at once (default: the core count)
 set -euo pipefail
