@@ -248,6 +248,9 @@ def budget_row(path):
 
 def budget(out):
     top = os.path.join(out, 'budget')
+    if not os.path.isdir(top):  # a folder from before the budget was part of the study
+        print(f'\n4. The energy budget: no folder {top} (rerun runs/accretion.sh to make it)')
+        return
     print('\n4. The energy budget (sinh grid, --flux-R 5,30): of the shell\'s energy M_ADM - '
           'M_AH(0), what crossed R = 5 inwards (against M_AH\'s growth), what left through R = 30 '
           'and what lies between the horizon and R = 30 at the end; the identity\'s error '
@@ -265,8 +268,10 @@ def budget(out):
                 orders = ['', '']
                 if k > 0:
                     for j, key in enumerate(('id5', 'id30')):
-                        ratio = abs(rows[k - 1][key]) / abs(w[key]) if w[key] else math.nan
-                        orders[j] = f'{math.log(ratio) / math.log(w["N"] / rows[k - 1]["N"]):.2f}'
+                        coarse, fine = abs(rows[k - 1][key]), abs(w[key])
+                        if coarse > 0 and fine > 0:  # (an exact zero has no order)
+                            fitted = math.log(coarse / fine) / math.log(w["N"] / rows[k - 1]["N"])
+                            orders[j] = f"{fitted:.2f}"
                 print(f'{g:6} {w["N"]:5d} {w["shell"]:10.7f} {w["fell"]:10.7f} {w["grew"]:10.7f} '
                       f'{w["left"]:10.7f} {w["between"]:9.2e} {w["id5"]:10.2e} {orders[0]:>5} '
                       f'{w["id30"]:10.2e} {orders[1]:>5}')

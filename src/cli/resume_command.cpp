@@ -238,7 +238,7 @@ int resume(const std::string& dir_name, std::optional<double> tmax) {
   write_file_atomically(dir / "config.toml", header_text("") + config + rule_values_line(p));
   say("gbssn1d: resuming {} at t = {} (step {}) to t = {}\n", dir_name, time_text(c.t), c.step,
       time_text(p.tmax));
-  Output out(dir, config + sim.run_facts(), sim.state().fields(), c.marks, sim.config().spheres);
+  Output out(dir, config + sim.run_facts(), sim.state().fields(), sim.config().spheres, c.marks);
   return run_and_report(sim, out, p);
 }
 

@@ -231,9 +231,9 @@ void sphere_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   std::vector<std::string> reached;
   double first = p.tmax;
   for (const double X : flux_radii(p))
-    if (X * p.M < p.rmax && p.tmax > (p.rmax - X * p.M) / speed) {
-      reached.push_back(num(X));
-      first = std::min(first, (p.rmax - X * p.M) / speed);
+    if (const double t = std::max(0.0, (p.rmax - X * p.M) / speed); p.tmax > t) {
+      reached.push_back(num(X)); // (a sphere at R >= rmax, still on a wormhole's grid: from t = 0)
+      first = std::min(first, t);
     }
   if (!reached.empty())
     w.push_back(fmt::format(

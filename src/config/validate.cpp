@@ -226,8 +226,8 @@ void validate_matter(const ResolvedParams& p) {
       throw ParamError("--scalar-width", num(p.scalar_width),
                        fmt::format("must lie below --rmax = {}", num(p.rmax)));
     validate_scalar_data(p);
-    flux_radii(p); // its refusals
   }
+  flux_radii(p); // its refusals, wherever it is given (as every flag's bounds)
   if (p.id == InitialDataKind::flat && shift_on(p))
     throw ParamError("--rahA", num(p.rahA),
                      "moves a horizon, and --id flat has none (leave --rahA out, or give --id "

@@ -93,8 +93,8 @@ double H_at_radius(const mesh::MeshLayout& layout, const std::vector<DerivedProf
 namespace {
 
 /// An odd profile's interior values on `g` with every ghost: the origin's by parity
-/// (f(-r) = -f(r)), the outer ones continued from the last point (sample_margin_cells keeps
-/// them out of the stencils).
+/// (f(-r) = -f(r)), the outer ones continued from the last point (never read: the stencils of
+/// sphere_at_areal_radius end at the last interior point).
 std::vector<double> with_odd_ghosts(const Grid& g, std::span<const double> interior) {
   std::vector<double> f(g.n_total());
   for (std::size_t i = 0; i < g.n_total(); ++i)
@@ -141,7 +141,9 @@ SphereSample sphere_at_areal_radius(const mesh::MeshLayout& layout,
     --j;
   if (j == top || R_l[j] > R)
     return {nan, nan, nan}; // the level's values do not bracket R where the composite's do
-  const std::size_t k0 = lagrange6_start(j, g.n_total());
+  // the stencil around [j, j + 1], kept off the outer ghosts (a fine box's are beyond
+  // sample_margin_cells; the outermost level's, near rmax, are made one-sided)
+  const std::size_t k0 = std::min(lagrange6_start(j, g.n_total()), g.end_interior() - 6);
   const Lagrange6Newton R_of_x(g.x(), R_l, k0);
   double x_lo = g.x()[j], x_hi = g.x()[j + 1]; // R_of_x(x_lo) <= R < R_of_x(x_hi)
   for (int it = 0; it < 100 && x_hi - x_lo > 1e-15 * std::max(1.0, std::abs(x_hi)); ++it) {
@@ -184,9 +186,9 @@ std::vector<EmptyNormWindow> absent_spheres(std::span<const double> R_areal,
     if (!(X * M >= lo && X * M <= hi))
       absent.push_back(
           {"--flux-R", fmt::format("no sphere of areal radius {} M lies on the initial data's grid "
-                                   "(its outer sheet spans R = {:.4g} ... {:.4g}), so that m_R{} "
+                                   "(its outer sheet spans R = {:.4g} ... {:.4g} M), so that m_R{} "
                                    "and flux_R{} are NaN until one does",
-                                   X, lo, hi, X, X)});
+                                   X, lo / M, hi / M, X, X)});
   return absent;
 }
 

@@ -91,7 +91,7 @@ Output::Output(const std::filesystem::path& dir, const std::string& parameter_he
       horizons_(dir / "horizon.dat", parameter_header + horizon_legend, horizon_columns()) {}
 
 Output::Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
-               const OutputMarks& m, std::vector<double> spheres)
+               std::vector<double> spheres, const OutputMarks& m)
     : dir_(dir), fields_(fields), spheres_(std::move(spheres)),
       series_(dir / "timeseries.dat", parameter_header + legend(fields, spheres_),
               series_columns(fields, spheres_), m.series_header, m.series),

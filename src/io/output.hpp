@@ -67,12 +67,13 @@ class Output {
 public:
   /// Opens (truncates) the files in `dir`; `parameter_header` is the effective configuration,
   /// one "key = value" per line; `formulation` the run's (its columns).
-  /// `spheres`: the areal radii (in units of M) of the series' sphere columns.
+  /// `spheres`: the areal radii (in units of M) of the series' sphere columns, the run's
+  /// EvolutionConfig::spheres (empty: none), which every row must carry.
   Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
-         std::vector<double> spheres = {});
+         std::vector<double> spheres);
   /// A resumed run: the files of `dir` cut back to `marks`, with the new header.
   Output(const std::filesystem::path& dir, const std::string& parameter_header, Fields fields,
-         const OutputMarks& marks, std::vector<double> spheres = {});
+         std::vector<double> spheres, const OutputMarks& marks);
 
   /// Throws OutputError unless every file of `dir` is there, at least as long as its mark, and
   /// (marks.hashed) its rows up to the mark are the bytes the run wrote: what the resuming

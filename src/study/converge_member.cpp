@@ -170,9 +170,11 @@ void evolve_member(const ConvergeStudy& study, const ResolvedParams& p,
   if (from) {
     const std::lock_guard lock(log_mutex);
     say("gbssn1d converge: member N = {} resumes at t = {}\n", p.N, from->t);
-    out_storage.emplace(p.out, config + sim.run_facts(), sim.state().fields(), from->marks);
+    out_storage.emplace(p.out, config + sim.run_facts(), sim.state().fields(), sim.config().spheres,
+                        from->marks);
   } else {
-    out_storage.emplace(p.out, config + sim.run_facts(), sim.state().fields());
+    out_storage.emplace(p.out, config + sim.run_facts(), sim.state().fields(),
+                        sim.config().spheres);
   }
   Output& out = *out_storage;
   try {

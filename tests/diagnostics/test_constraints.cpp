@@ -91,7 +91,7 @@ TEST_CASE("horizon.dat: the named columns, the horizon of the data, n_roots") {
   p.dt_series = 0.5;
   Simulation sim = simulation(p);
   {
-    Output out(dir, "test = true\n", Formulation::bssn);
+    Output out(dir, "test = true\n", Formulation::bssn, {});
     sim.run(&out);
   }
   const auto h = gbssn1d::testing::read_table((dir / "horizon.dat").string());

@@ -155,7 +155,7 @@ TEST_CASE("a box run resumed from a checkpoint is bit-identical on every level")
         if (std::abs(ck.t - 4.0) < 1e-9)
           at4 = ck;
       };
-      Output out(dir, first.run_facts(), Formulation::bssn);
+      Output out(dir, first.run_facts(), Formulation::bssn, {});
       first.run(&out);
     }
     fs::remove_all(dir);
@@ -232,7 +232,7 @@ TEST_CASE("a checkpoint with the 3 ghosts of earlier versions resumes as if neve
         if (std::abs(ck.t - 2.0) < 1e-9)
           at2 = ck;
       };
-      Output out(dir, first.run_facts(), Formulation::bssn);
+      Output out(dir, first.run_facts(), Formulation::bssn, {});
       first.run(&out);
     }
     fs::remove_all(dir);

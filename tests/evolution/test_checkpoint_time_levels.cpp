@@ -42,7 +42,7 @@ TEST_CASE("resume refuses a checkpoint whose quadratic time level is not before 
       if (std::abs(ck.t - 0.5) < 1e-9)
         mid = ck;
     };
-    Output out(dir, first.run_facts(), Formulation::bssn);
+    Output out(dir, first.run_facts(), Formulation::bssn, {});
     first.run(&out);
   }
   fs::remove_all(dir);

@@ -193,7 +193,7 @@ TEST_CASE("a run that becomes non-finite stops with where and when, keeping comp
   const std::size_t i_spike = sim.grid().first_interior() + 50;
   field(sim.state(), sim.grid(), Var::K)[i_spike] = 1e30;
   {
-    Output out(dir, "test = true\n", Formulation::bssn);
+    Output out(dir, "test = true\n", Formulation::bssn, {});
     try {
       sim.run(&out);
       FAIL("the run should have stopped");
@@ -317,7 +317,7 @@ TEST_CASE("output between the steps of a single grid converges at 4th order in d
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     {
-      Output out(dir, sim.run_facts(), Formulation::bssn);
+      Output out(dir, sim.run_facts(), Formulation::bssn, {});
       sim.run(&out);
     }
     std::filesystem::remove_all(dir);
@@ -360,7 +360,7 @@ TEST_CASE("the output cadence changes neither the time step nor the evolution") 
     fs::create_directories(dir);
     Simulation sim = simulation(q);
     {
-      Output out(dir, sim.run_facts(), Formulation::bssn);
+      Output out(dir, sim.run_facts(), Formulation::bssn, {});
       sim.run(&out);
     }
     const auto series = gbssn1d::testing::read_table((dir / "timeseries.dat").string());

@@ -47,7 +47,7 @@ EVOLVE = {
     "--scalar-amp": Flag(FLOAT, ("0.01", "0.001", "-0.01"), ("1e308", "-1e308", "10")),
     "--scalar-r0": Flag(FLOAT, ("10", "5", "0"), ("-1", "1e308", "1e-300")),
     "--scalar-width": Flag(FLOAT, ("2", "1", "3"), ("0", "-1", "1e308", "1e-300")),
-    "--flux-R": Flag(TEXT, ("5", "5,20", "2.5, 30", ""), ("0", "-1", "5,5", "5,,3", "nan", "1e308",
+    "--flux-R": Flag(TEXT, ("5", "5,20", "2.5, 30"), ("", "0", "-1", "5,5", "5,,3", "nan", "1e308",
                                                     "1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17")),
     "--formulation": Flag(TEXT, choices=("bssn", "z4c")),
     "--gbssn-volume": Flag(TEXT, choices=("lagrangian", "eulerian")),

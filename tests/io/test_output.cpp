@@ -41,7 +41,7 @@ TEST_CASE("output columns: each named column holds that quantity (H, M_r, fields
   p.dt_profiles = 1.0;
   Simulation sim = simulation(p);
   {
-    Output out(dir, sim.run_facts(), Formulation::bssn);
+    Output out(dir, sim.run_facts(), Formulation::bssn, {});
     sim.run(&out);
   }
   const Grid& g = sim.grid();
@@ -86,7 +86,7 @@ TEST_CASE("output times are the decimals they stand for (23 x 0.1 prints as 2.3)
   p.dt_profiles = 0.7;
   Simulation sim = simulation(p);
   {
-    Output out(dir, sim.run_facts(), Formulation::bssn);
+    Output out(dir, sim.run_facts(), Formulation::bssn, {});
     sim.run(&out);
   }
   // the first word of every row (and of every profile block's "# t = " line)
@@ -186,7 +186,7 @@ TEST_CASE("profiles.dat: beta is beta_GD + beta_H, beta_GD the evolved shift, wi
   p.rah0 = 1.2;
   Simulation sim = simulation(p);
   {
-    Output out(dir, sim.run_facts(), Formulation::bssn);
+    Output out(dir, sim.run_facts(), Formulation::bssn, {});
     sim.run(&out);
   }
   const Grid& g = sim.grid();

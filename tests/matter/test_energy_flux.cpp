@@ -165,3 +165,22 @@ TEST_CASE("--flux-R: a column pair per sphere in the order given, NaN where no s
   CHECK(none.columns.back() == "Pi_center");
   std::filesystem::remove_all(out);
 }
+
+TEST_CASE("converge with --flux-R: every member completes and its series carries the sphere's "
+          "columns") {
+  const auto out = scratch("energy_flux_converge", true);
+  std::filesystem::remove_all(out);
+  const auto r = gbssn1d::testing::run(
+      "converge --N 100,150,200 --id flat --matter scalar --grid uniform --rmax 40 --tmax 2 "
+      "--dt-series 0.1 --flux-R 20 --out "
+      + out.string());
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(r.err.find("completed at t = 2") != std::string::npos);
+  for (const char* member : {"N100", "N150", "N200"}) {
+    const auto t = gbssn1d::testing::read_table((out / member / "timeseries.dat").string());
+    CHECK(t.columns.back() == "flux_R20");
+    CHECK(t.at(0, "m_R20") > 0.04); // the pulse's mass, 0.0406
+  }
+  std::filesystem::remove_all(out);
+}

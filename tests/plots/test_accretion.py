@@ -141,6 +141,7 @@ b400, b800 = budget[0], budget[1]
 check(abs(b400[2] - 0.7) < 1e-12 and abs(b400[3] - 0.4) < 1e-8 and abs(b400[5] - 0.3) < 1e-8,
       f'the shell 0.7, what fell in 0.4 and what left 0.3: {b400[2]:.9f}, {b400[3]:.9f}, '
       f'{b400[5]:.9f}')
+check(abs(b400[4] - 0.4) < 1e-12, f'M_AH grew by 0.4: {b400[4]:.12f}')
 check(abs(b400[7] - 1.6e-5) < 1e-9 and abs(b800[7] - 1e-6) < 1e-9, f'the error at R = 5: '
       f'{b400[7]:.3e}, {b800[7]:.3e} (1.6e-5, 1e-6; Simpson with the 3/8 end at N = 800)')
 check(abs(b400[8] + 3.2e-5) < 1e-9 and abs(b400[6] + 3.2e-5) < 1e-9,
@@ -161,5 +162,15 @@ except accretion.gd.DataError as e:
     check('not equally spaced' in str(e), f'rows not equally spaced are refused: {e}')
 check(os.path.exists(os.path.join(work, 'accretion.png'))
       and os.path.exists(os.path.join(work, 'cost.png')), 'both figures drawn')
+
+# a study folder from before the budget: its table says so, the others and the figures stand
+shutil.rmtree(os.path.join(work, 'budget'))
+os.remove(os.path.join(work, 'accretion.png'))
+printed = io.StringIO()
+with contextlib.redirect_stdout(printed):
+    accretion.main(work)
+check('4. The energy budget: no folder' in printed.getvalue()
+      and os.path.exists(os.path.join(work, 'accretion.png')),
+      'without budget/ the table says so and the figures are drawn')
 
 done('plots/accretion.py')
