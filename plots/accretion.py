@@ -45,19 +45,23 @@ FIGURE_LEAVES_OUT = ('h1.0-A1', 'h1.0-A2')
 REACHED = re.compile(r'reached t = \S+ in \S+ s \((\d+) steps, (\d+) RHS evaluations\)')
 
 
-def run(path):
-    """{'t', 'r_ah', 'M_ah', 'completed', 'end', 'rahA', 'rah0', 'N'} of a run's timeseries.dat."""
+def series(path, names):
+    """A run's timeseries.dat: its columns `names` by name, its header's parameters, its last
+    end line (or what its absence means) and the file's path."""
     ts = os.path.join(path, 'timeseries.dat')
     if not os.path.exists(ts):
         raise gd.DataError('no timeseries.dat (the run did not start)', path)
     text = gd.read_text(ts)
     columns, data = gd.parse_table(text, ts)
-    params = gd.header_params(text)
     ends = [line for line in text.splitlines() if line.startswith('# end:')]
-    return {'t': gd.column(columns, data, 't', ts), 'r_ah': gd.column(columns, data, 'r_ah', ts),
-            'M_ah': gd.column(columns, data, 'M_ah', ts),
-            'completed': bool(ends) and ends[-1].startswith('# end: completed'),
-            'end': ends[-1][len('# end: '):] if ends else 'no end line (the run was cut short)',
+    return ({name: gd.column(columns, data, name, ts) for name in names}, gd.header_params(text),
+            ends[-1][len('# end: '):] if ends else 'no end line (the run was cut short)', ts)
+
+
+def run(path):
+    """{'t', 'r_ah', 'M_ah', 'completed', 'end', 'rahA', 'rah0', 'N'} of a run's timeseries.dat."""
+    col, params, end, _ = series(path, ('t', 'r_ah', 'M_ah'))
+    return {**col, 'completed': end.startswith('completed'), 'end': end,
             'rahA': float(params.get('rahA', 0)), 'rah0': float(params.get('rah0', 'nan')),
             'N': int(params['N'])}
 
@@ -226,24 +230,16 @@ def integral(t, y, where):
 
 def budget_row(path):
     """The budget's numbers of a run with --flux-R 5,30 (NaN where a flux is NaN)."""
-    ts = os.path.join(path, 'timeseries.dat')
-    if not os.path.exists(ts):
-        raise gd.DataError('no timeseries.dat (the run did not start)', path)
-    text = gd.read_text(ts)
-    columns, data = gd.parse_table(text, ts)
-    params = gd.header_params(text)
+    col, params, end, ts = series(path, ('t', 'M_ah', 'm_R5', 'flux_R5', 'm_R30', 'flux_R30'))
     if 'M-ADM' not in params:
         raise gd.DataError('no M-ADM in its header (a run without matter?)', ts)
-    col = {name: gd.column(columns, data, name, ts)
-           for name in ('t', 'M_ah', 'm_R5', 'flux_R5', 'm_R30', 'flux_R30')}
     t, M = col['t'], col['M_ah']
     flux5, flux30 = integral(t, col['flux_R5'], ts), integral(t, col['flux_R30'], ts)
-    ends = [line for line in text.splitlines() if line.startswith('# end:')]
     return {'N': int(params['N']), 'shell': float(params['M-ADM']) - M[0], 'fell': -flux5,
             'grew': M[-1] - M[0], 'left': flux30, 'between': col['m_R30'][-1] - M[-1],
             'id5': flux5 - (col['m_R5'][0] - col['m_R5'][-1]),
             'id30': flux30 - (col['m_R30'][0] - col['m_R30'][-1]),
-            'end': ends[-1][len('# end: '):] if ends else 'no end line (the run was cut short)'}
+            'end': end}
 
 
 def budget(out):

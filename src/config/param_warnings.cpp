@@ -220,6 +220,11 @@ void horizon_shift_warnings(const ResolvedParams& p, std::vector<std::string>& w
         num(p.ah_tmin), num(p.tmax), num(p.rahA)));
 }
 
+/// The outer boundary's influence comes in at the fastest characteristic speed, the 1+log gauge
+/// speed sqrt(2) (light: 1): after (rmax - r) / speed it reaches radius r, and every number
+/// measured there after it holds boundary reflections.
+const double boundary_speed = std::sqrt(2.0);
+
 /// The spheres of --flux-R that the outer boundary reaches before --tmax: their mass and flux
 /// then hold the constraint violation its condition lets in (docs/scalar-field.md, "The energy
 /// through a sphere"). Their coordinate radius is at most their areal radius on these data
@@ -227,11 +232,10 @@ void horizon_shift_warnings(const ResolvedParams& p, std::vector<std::string>& w
 void sphere_warnings(const ResolvedParams& p, std::vector<std::string>& w) {
   if (!scalar_on(p))
     return;
-  const double speed = std::sqrt(2.0);
   std::vector<std::string> reached;
   double first = p.tmax;
   for (const double X : flux_radii(p))
-    if (const double t = std::max(0.0, (p.rmax - X * p.M) / speed); p.tmax > t) {
+    if (const double t = std::max(0.0, (p.rmax - X * p.M) / boundary_speed); p.tmax > t) {
       reached.push_back(num(X)); // (a sphere at R >= rmax, still on a wormhole's grid: from t = 0)
       first = std::min(first, t);
     }
@@ -258,12 +262,10 @@ std::vector<std::string> warnings(const ResolvedParams& p) {
         "then drifts and such runs went non-finite after 100-200 M; eta = 1/M, their default, "
         "held them to 1000 M (docs/horizon-shift-study.md, Sec. 4.2 and Sec. 9)",
         num(p.rah0), num(p.eta())));
-  // The outer boundary's influence comes in at the fastest characteristic speed, the 1+log
-  // gauge speed sqrt(2) (light: 1): after (rmax - r) / sqrt(2) it reaches radius r, and every
-  // number measured there after it holds boundary reflections.
-  const double speed = std::sqrt(2.0);
+  // the norm windows and the horizon (boundary_speed)
   const double window = std::max(p.norm_rmax(), p.norm_Rmax * p.M);
-  const double t_window = (p.rmax - window) / speed, t_horizon = (p.rmax - 2.0 * p.M) / speed;
+  const double t_window = (p.rmax - window) / boundary_speed,
+               t_horizon = (p.rmax - 2.0 * p.M) / boundary_speed;
   if (p.tmax > t_window && p.rmax > window)
     w.push_back(fmt::format(
         "--tmax {} lets the outer boundary (--rmax {}) reach the norm windows (r <= {} M) from "
@@ -271,7 +273,7 @@ std::vector<std::string> warnings(const ResolvedParams& p) {
         "M_AH and r_AH after that include its reflections; for a clean late-time figure rerun "
         "with --rmax > {:.0f}",
         num(p.tmax), num(p.rmax), num(window), t_window, std::max(t_horizon, 0.0),
-        std::ceil(window + speed * p.tmax)));
+        std::ceil(window + boundary_speed * p.tmax)));
   sphere_warnings(p, w);
   box_warnings(p, w);
   upwind_warnings(p, w);

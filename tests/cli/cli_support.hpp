@@ -76,6 +76,14 @@ inline int run_signalled(const std::string& args, const SignalWhen& when) {
   return std::system(cmd.str().c_str());
 }
 
+/// The number a run printed after `phrase` on its stderr ("the data's ADM mass: "); fails the
+/// test case when it printed none.
+inline double number_after(const std::string& err, const std::string& phrase) {
+  const auto at = err.find(phrase);
+  REQUIRE_MESSAGE(at != std::string::npos, "no \"" << phrase << "\" in: " << err);
+  return std::stod(err.substr(at + phrase.size()));
+}
+
 inline int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s)

@@ -51,17 +51,14 @@ Crossing crossing(int N) {
       + std::to_string(N) + " --out " + out.string());
   INFO(r.err);
   REQUIRE(r.status == 0);
-  const std::string said = "the data's ADM mass: ";
-  const auto at = r.err.find(said);
-  REQUIRE(at != std::string::npos);
+  const double M_adm = gbssn1d::testing::number_after(r.err, "the data's ADM mass: ");
   const auto t = gbssn1d::testing::read_table((out / "timeseries.dat").string());
   std::vector<double> F;
   for (std::size_t k = 0; k < t.rows.size(); ++k)
     F.push_back(t.at(k, "flux_R20"));
   REQUIRE(t.rows.size() == 761);
   REQUIRE(t.at(t.rows.size() - 1, "t") == doctest::Approx(38.0));
-  Crossing c{std::stod(r.err.substr(at + said.size())), simpson(F, 0.05), t.at(0, "m_R20"),
-             t.at(t.rows.size() - 1, "m_R20")};
+  Crossing c{M_adm, simpson(F, 0.05), t.at(0, "m_R20"), t.at(t.rows.size() - 1, "m_R20")};
   std::filesystem::remove_all(out);
   return c;
 }

@@ -200,10 +200,7 @@ TEST_CASE("evolve reports the data's ADM mass with the scalar field, which the M
                                          + std::to_string(N) + " --out " + out.string());
     INFO(r.err);
     REQUIRE(r.status == 0);
-    const std::string said = "the data's ADM mass: ";
-    const auto at = r.err.find(said);
-    REQUIRE(at != std::string::npos);
-    *reported = std::stod(r.err.substr(at + said.size()));
+    *reported = gbssn1d::testing::number_after(r.err, "the data's ADM mass: ");
     // the same in the files' headers, to the last digit
     const std::string header = gbssn1d::testing::slurp(out / "timeseries.dat");
     const std::string key = "\n# M-ADM = ";
